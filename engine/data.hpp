@@ -1,0 +1,81 @@
+// Per-run data: state, stage outputs and scratch, sized once from a Model so
+// that a simulation step allocates nothing. Every vector below is in world
+// coordinates unless it says otherwise; [n] is the model's dof.
+#pragma once
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <vector>
+
+#include "model.hpp"
+
+namespace elbowsim {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+using Matrix3Xd = Eigen::Matrix<double, 3, Eigen::Dynamic>;
+// Read-only view of a vector or of a segment of one, without copying.
+using ConstVec = Eigen::Ref<const Eigen::VectorXd>;
+
+// Energy terms of the balance E_in - losses = change of stored energy.
+struct EnergyTerms {
+  double electrical_in = 0;    // [J] integral of v.i (or tau.qd without motors)
+  double joule = 0;            // [J] integral of i^T R i
+  double viscous = 0;          // [J] integral of qd^T (D + Dm) qd
+  double kinetic_links = 0;    // [J] 1/2 sum m v_c^2 + w^T I w
+  double kinetic_rotors = 0;   // [J] 1/2 qd^T Jm qd
+  double potential = 0;        // [J] -sum m g.c
+  double magnetic = 0;         // [J] 1/2 i^T L i (full motor model only)
+  double mechanical() const { return kinetic_links + kinetic_rotors + potential; }
+  double stored() const { return mechanical() + magnetic; }
+};
+
+struct Data {
+  explicit Data(const Model& model);
+
+  // --- state -------------------------------------------------------------
+  double t = 0;             // [s]
+  Eigen::VectorXd q;        // [n] joint angles [rad]
+  Eigen::VectorXd qd;       // [n] joint rates [rad/s]
+  Eigen::VectorXd current;  // [n] motor currents [A] (state only for motor: full)
+
+  // --- stage outputs of the last derivative evaluation --------------------
+  Eigen::VectorXd qdd;           // [n] joint accelerations [rad/s^2]
+  Eigen::VectorXd voltage;       // [n] applied (saturated) motor voltage [V]
+  Eigen::VectorXd current_rate;  // [n] di/dt [A/s] (motor: full)
+  Eigen::VectorXd actuation;     // [n] Km i, or the input torque without motors [N m]
+
+  // --- kinematics (forward_kinematics) ------------------------------------
+  std::vector<Eigen::Matrix3d> rotation;  // [n] link frame -> world
+  std::vector<Eigen::Vector3d> origin;    // [n] joint i position = link frame origin [m]
+  std::vector<Eigen::Vector3d> axis;      // [n] joint axis, unit
+  std::vector<Eigen::Vector3d> com;       // [n] link centre of mass [m]
+  std::vector<Eigen::Matrix3d> inertia;   // [n] link inertia about its com [kg m^2]
+
+  // --- dynamics scratch ----------------------------------------------------
+  Eigen::MatrixXd mass_matrix;     // [n x n] M (+ Jm when rotor inertia is on)
+  Eigen::VectorXd bias;            // [n] h + g + (D + Dm) qd
+  Eigen::VectorXd tau;             // [n] scratch torque vector
+  Eigen::VectorXd zero;            // [n] zeros, for calls that need "no qd/qdd"
+  Eigen::VectorXd unit;            // [n] scratch unit vector (Walker-Orin columns)
+  Eigen::LLT<Eigen::MatrixXd> llt;  // Cholesky of mass_matrix
+
+  // Newton-Euler recursion, per link [n]
+  std::vector<Eigen::Vector3d> omega, omega_dot, origin_acc, force, moment;
+  // Spatial (Plucker, world origin) quantities of CRBA/ABA, per link [n]
+  std::vector<Matrix6d> spatial_inertia, articulated_inertia;
+  std::vector<Vector6d> motion_subspace, velocity, bias_acc, bias_force, acc, U;
+  Eigen::VectorXd D, u;  // [n] ABA joint-space scratch
+
+  // --- integrator state ----------------------------------------------------
+  // x = [q; qd; i (motor: full); E_in; E_joule; E_viscous]
+  Eigen::VectorXd x, x_stage, k1, k2, k3, k4, x_a, x_b, x_c;
+  // Exponential-integrator coefficients per component of x (see integrator.cpp)
+  Eigen::ArrayXd lambda, exp_h, exp_half, phi1_half, phi1_h, f1, f2, f3;
+
+  EnergyTerms energy;           // at time t
+  EnergyTerms energy_initial;   // at t = 0
+  long steps = 0;
+};
+
+}  // namespace elbowsim

@@ -1,0 +1,117 @@
+#include "model.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace elbowsim {
+
+const char* to_string(MotorModel m) {
+  switch (m) {
+    case MotorModel::none: return "none";
+    case MotorModel::quasi_static: return "quasi_static";
+    case MotorModel::full: return "full";
+  }
+  return "?";
+}
+
+const char* to_string(IntegratorKind k) {
+  switch (k) {
+    case IntegratorKind::euler: return "euler";
+    case IntegratorKind::semi_implicit_euler: return "semi_implicit_euler";
+    case IntegratorKind::rk4: return "rk4";
+  }
+  return "?";
+}
+
+const char* to_string(DynamicsMethod d) {
+  switch (d) {
+    case DynamicsMethod::walker_orin: return "walker_orin";
+    case DynamicsMethod::crba: return "crba";
+    case DynamicsMethod::aba: return "aba";
+  }
+  return "?";
+}
+
+std::vector<std::string> Model::active_effects() const {
+  std::vector<std::string> names;
+  if (effects.gravity) names.emplace_back("gravity");
+  if (effects.damping) names.emplace_back("damping");
+  if (has_motor()) names.emplace_back(std::string("motor:") + to_string(effects.motor));
+  if (has_armature()) names.emplace_back("rotor_inertia");
+  return names;
+}
+
+namespace {
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument("invalid model: " + what);
+}
+
+std::string at(const char* member, int i) {
+  return std::string(member) + "[" + std::to_string(i) + "]";
+}
+
+void check_link(const Link& link, int i) {
+  require(link.mass > 0 && std::isfinite(link.mass), at("links", i) + ".mass must be > 0");
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(link.inertia);
+  require(link.inertia.isApprox(link.inertia.transpose()) && eig.eigenvalues().minCoeff() > 0,
+          at("links", i) + ".inertia must be symmetric positive definite");
+}
+
+void check_motor(const Motor& m, int i, MotorModel model) {
+  require(m.resistance > 0, at("motors", i) + ".resistance must be > 0");
+  require(m.inductance >= 0, at("motors", i) + ".inductance must be >= 0");
+  require(model != MotorModel::full || m.inductance > 0,
+          at("motors", i) + ".inductance must be > 0 for the full motor model");
+  require(m.gear_ratio > 0, at("motors", i) + ".gear_ratio must be > 0");
+  require(m.voltage_limit > 0, at("motors", i) + ".voltage_limit must be > 0");
+  require(m.rotor_inertia >= 0 && m.gear_friction >= 0,
+          at("motors", i) + ": rotor_inertia and gear_friction must be >= 0");
+}
+
+void check_sizes(const Model& model) {
+  const auto n = static_cast<std::size_t>(model.dof);
+  require(model.dof > 0, "dof must be > 0");
+  require(model.joints.size() == n && model.links.size() == n, "joints/links must have dof entries");
+  require(!model.has_motor() || model.motors.size() == n, "motors must have dof entries");
+  require(model.damping.size() == 0 || model.damping.size() == model.dof,
+          "damping must be empty or have dof entries");
+  require(model.inputs.joints.empty() || model.inputs.joints.size() == n,
+          "inputs must be empty or have dof entries");
+  require(model.hand_link >= 0 && model.hand_link < model.dof, "hand_link out of range");
+  require(model.options.step > 0 && model.options.duration > 0, "step and duration must be > 0");
+}
+
+}  // namespace
+
+void finalize(Model& model) {
+  check_sizes(model);
+  const int n = model.dof;
+  for (int i = 0; i < n; ++i) {
+    Joint& joint = model.joints[i];
+    require(joint.axis.norm() > 0, at("joints", i) + ".axis must be non-zero");
+    joint.axis.normalize();
+    check_link(model.links[i], i);
+    if (model.has_motor()) check_motor(model.motors[i], i, model.effects.motor);
+  }
+  if (model.damping.size() == 0) model.damping = Eigen::VectorXd::Zero(n);
+
+  // Reflected motor constants (DESIGN.md §1): Km = K k, Jm = Im k^2, Dm = dm k^2.
+  model.km = model.armature = model.resistance = model.inductance = model.voltage_limit =
+      Eigen::VectorXd::Zero(n);
+  model.viscous = model.effects.damping ? model.damping : Eigen::VectorXd::Zero(n);
+  if (!model.has_motor()) return;
+  for (int i = 0; i < n; ++i) {
+    const Motor& m = model.motors[i];
+    model.km[i] = m.km();
+    model.armature[i] = model.effects.rotor_inertia ? m.jm() : 0.0;
+    if (model.effects.damping) model.viscous[i] += m.dm();
+    model.resistance[i] = m.resistance;
+    model.inductance[i] = m.inductance;
+    model.voltage_limit[i] = m.voltage_limit;
+  }
+}
+
+}  // namespace elbowsim
