@@ -1,0 +1,53 @@
+#include "app/output/summary_json.hpp"
+
+#include "engine/energy.hpp"
+
+namespace elbowsim {
+
+namespace {
+
+nlohmann::ordered_json energy_json(const EnergyTerms& e) {
+  return {{"electrical_in", e.electrical_in}, {"joule", e.joule},
+          {"viscous", e.viscous},             {"kinetic_links", e.kinetic_links},
+          {"kinetic_rotors", e.kinetic_rotors}, {"potential", e.potential},
+          {"magnetic", e.magnetic}};
+}
+
+nlohmann::ordered_json model_json(const Model& m) {
+  double total_mass = 0;
+  for (const Link& link : m.links) total_mass += link.mass;
+  return {{"dof", m.dof}, {"total_mass", total_mass}, {"hand_link", m.hand_link}};
+}
+
+nlohmann::ordered_json settings_json(const Options& o) {
+  return {{"integrator", to_string(o.integrator)}, {"dynamics", to_string(o.dynamics)},
+          {"step", o.step}, {"duration", o.duration}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& result) {
+  const Model& m = scenario.model;
+  const double e_in = result.energy_final.electrical_in;
+  nlohmann::ordered_json j;
+  j["scenario"] = m.name;
+  j["description"] = scenario.description;
+  j["file"] = scenario.file;
+  j["effects"] = m.active_effects();
+  j["model"] = model_json(m);
+  j["settings"] = settings_json(m.options);
+  j["completed"] = result.completed;
+  j["failure"] = result.failure;
+  j["steps"] = result.steps;
+  j["final_time"] = result.final_time;
+  j["wall_seconds"] = result.wall_seconds;
+  j["energy_initial"] = energy_json(result.energy_initial);
+  j["energy_final"] = energy_json(result.energy_final);
+  j["balance_residual"] = result.balance_residual;
+  j["max_abs_balance_residual"] = result.max_abs_balance_residual;
+  j["balance_residual_relative"] = e_in != 0 ? std::abs(result.balance_residual / e_in) : 0.0;
+  j["warnings"] = result.warnings;
+  return j;
+}
+
+}  // namespace elbowsim

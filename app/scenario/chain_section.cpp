@@ -1,0 +1,153 @@
+// robot.planar and robot.joints: the joints and links of the arm.
+//
+// Planar shorthand (DESIGN.md §4): the arm lies in the x-z plane, every joint
+// axis is -y (a positive angle turns +x toward +z), joint i sits at the tip of
+// link i-1, and each link's frame has x along the link:
+//
+//   z                              joint i origin = (length_{i-1}, 0, 0)
+//   |           link 1             link com       = (com, 0, 0)
+//   |     j1 o---------o tip       link tip       = (length, 0, 0)
+//   |       /                      inertia about the com = diag(m r^2/2, I, I)
+//   |      / link 0                (I: the planar inertia, r: the radius)
+//   |  j0 o---------- x
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "app/scenario/checks.hpp"
+#include "app/scenario/sections.hpp"
+
+namespace elbowsim::loader {
+
+namespace {
+
+const Eigen::Vector3d kPlanarAxis(0, -1, 0);
+constexpr double kDefaultRadius = 0.02;  // [m]
+
+std::vector<Value> non_empty_list(const Value& list) {
+  std::vector<Value> items = list.items();
+  if (items.empty()) list.fail("needs at least one entry");
+  return items;
+}
+
+// A rigid body's inertia about its com: positive definite, and its principal
+// moments a <= b <= c satisfy a + b >= c (relative tolerance 1e-12).
+void check_inertia(const Eigen::Matrix3d& inertia, const Value& at) {
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(inertia);
+  const Eigen::Vector3d m = eig.eigenvalues();  // ascending
+  if (!(m[0] > 0))
+    at.fail("must be positive definite (principal moments " + format_number(m[0]) + ", " +
+            format_number(m[1]) + ", " + format_number(m[2]) + ")");
+  if (m[0] + m[1] < m[2] - 1e-12 * inertia.trace())
+    at.fail("violates the triangle inequality: principal moments " + format_number(m[0]) + " + " +
+            format_number(m[1]) + " < " + format_number(m[2]) + " (no rigid body has them)");
+}
+
+// --- planar ----------------------------------------------------------------
+
+struct PlanarLink {
+  double length = 0;
+  Link link;
+};
+
+// The rod's moments diag(m r^2/2, I, I) are a rigid body's only if I >= m r^2/4
+// (triangle inequality). Blames the inertia if given, else the radius, else
+// the link.
+void check_planar_inertia(const Value& v, const Link& link, double planar) {
+  const double m = link.mass, r = link.radius;
+  if (planar >= m * r * r / 4 * (1 - 1e-12)) return;
+  const std::string min_inertia = "I >= m r^2/4 = " + format_number(m * r * r / 4) + " kg m^2";
+  if (v.get("inertia").present())
+    v.get("inertia").fail("is too small for the link's radius " + format_number(r) + " m: needs " +
+                          min_inertia + " (got " + format_number(planar) + ")");
+  const std::string max_radius = "r <= 2 sqrt(I/m) = " + format_number(2 * std::sqrt(planar / m)) +
+                                 " m for I = " + format_number(planar) + " kg m^2";
+  if (v.get("radius").present())
+    v.get("radius").fail("is too large for the link: needs " + max_radius);
+  v.fail("the link is too short for the default radius " + format_number(r) +
+         " m: give a radius with " + max_radius + ", or an inertia with " + min_inertia);
+}
+
+PlanarLink read_planar_link(const Value& v) {
+  v.allow_keys({"length", "mass", "com", "inertia", "radius"});
+  PlanarLink out;
+  Link& link = out.link;
+  out.length = positive(v.require("length"));
+  link.mass = positive(v.require("mass"));
+  const double length = out.length, mass = link.mass;
+  link.com = Eigen::Vector3d(value_or(v.get("com"), length / 2, number), 0, 0);
+  const double planar = value_or(v.get("inertia"), mass * length * length / 12, positive);
+  link.radius = value_or(v.get("radius"), kDefaultRadius, positive);
+  check_planar_inertia(v, link, planar);
+  link.inertia = Eigen::Vector3d(mass * link.radius * link.radius / 2, planar, planar).asDiagonal();
+  link.tip = Eigen::Vector3d(length, 0, 0);
+  return out;
+}
+
+// --- general ---------------------------------------------------------------
+
+// {ixx, iyy, izz, ixy = 0, ixz = 0, iyz = 0} [kg m^2], about the com.
+Eigen::Matrix3d read_inertia(const Value& v) {
+  v.allow_keys({"ixx", "iyy", "izz", "ixy", "ixz", "iyz"});
+  const double ixx = number(v.require("ixx"));
+  const double iyy = number(v.require("iyy"));
+  const double izz = number(v.require("izz"));
+  const double ixy = value_or(v.get("ixy"), 0.0, number);
+  const double ixz = value_or(v.get("ixz"), 0.0, number);
+  const double iyz = value_or(v.get("iyz"), 0.0, number);
+  Eigen::Matrix3d inertia;
+  inertia << ixx, ixy, ixz,  //
+      ixy, iyy, iyz,         //
+      ixz, iyz, izz;
+  check_inertia(inertia, v);
+  return inertia;
+}
+
+Link read_link(const Value& v) {
+  v.allow_keys({"mass", "com", "inertia", "radius", "tip"});
+  Link link;
+  link.mass = positive(v.require("mass"));
+  link.com = value_or(v.get("com"), Eigen::Vector3d::Zero().eval(), vec3);
+  link.inertia = read_inertia(v.require("inertia"));
+  link.radius = value_or(v.get("radius"), kDefaultRadius, positive);
+  link.tip = value_or(v.get("tip"), Eigen::Vector3d::Zero().eval(), vec3);
+  return link;
+}
+
+// Non-zero direction, normalized; default +z.
+Eigen::Vector3d read_axis(const Value& v) {
+  if (!v.present()) return Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d axis = v.vec3();
+  if (!(axis.norm() > 1e-12)) v.fail("must be a non-zero direction");
+  return axis.normalized();
+}
+
+}  // namespace
+
+void read_planar_chain(const Value& planar, Model& model) {
+  planar.allow_keys({"links"});
+  double previous_length = 0;
+  for (const Value& v : non_empty_list(planar.require("links"))) {
+    PlanarLink p = read_planar_link(v);
+    Joint joint;
+    joint.origin_position = Eigen::Vector3d(previous_length, 0, 0);
+    joint.axis = kPlanarAxis;
+    model.joints.push_back(joint);
+    model.links.push_back(p.link);
+    previous_length = p.length;
+  }
+}
+
+void read_general_chain(const Value& joints, Model& model) {
+  for (const Value& v : non_empty_list(joints)) {
+    v.allow_keys({"origin", "axis", "link"});
+    const Eigen::Isometry3d origin = value_or(v.get("origin"), Eigen::Isometry3d::Identity(), pose);
+    Joint joint;
+    joint.origin_rotation = origin.linear();
+    joint.origin_position = origin.translation();
+    joint.axis = read_axis(v.get("axis"));
+    model.joints.push_back(joint);
+    model.links.push_back(read_link(v.require("link")));
+  }
+}
+
+}  // namespace elbowsim::loader

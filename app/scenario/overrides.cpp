@@ -1,0 +1,126 @@
+#include "app/scenario/overrides.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <vector>
+
+#include "app/scenario/scenario.hpp"
+
+namespace elbowsim::loader {
+
+namespace {
+
+// One step of a key path: a map key, or a list index ("links[2]" is two steps).
+struct Step {
+  std::string key;
+  long index = -1;  // >= 0 for a list index
+};
+
+struct Override {
+  std::string label;  // "command line --set <text>"
+  std::vector<Step> steps;
+  std::string path;   // normalized "a.b[0].c"
+  std::string value;  // YAML text
+};
+
+[[noreturn]] void fail(const std::string& label, const std::string& key,
+                       const std::string& message) {
+  throw ScenarioError(label, 0, 0, key, message);
+}
+
+bool is_key_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+}
+
+// "links[2][0]" -> key "links", indices 2, 0.
+void parse_segment(const std::string& segment, const std::string& label, std::vector<Step>& out) {
+  std::size_t i = 0;
+  while (i < segment.size() && is_key_char(segment[i])) ++i;
+  if (i == 0) fail(label, "", "expected key.path=value (bad key \"" + segment + "\")");
+  out.push_back({segment.substr(0, i)});
+  while (i < segment.size()) {
+    std::size_t close = segment.find(']', i);
+    long index = -1;
+    auto [end, ec] = std::from_chars(segment.data() + i + 1, segment.data() + close, index);
+    if (segment[i] != '[' || close == std::string::npos || ec != std::errc{} ||
+        end != segment.data() + close || index < 0)
+      fail(label, "", "expected key.path=value (bad index in \"" + segment + "\")");
+    out.push_back({"", index});
+    i = close + 1;
+  }
+}
+
+std::string join_path(const std::vector<Step>& steps, std::size_t count) {
+  std::string path;
+  for (std::size_t i = 0; i < count; ++i) {
+    // Appended piece by piece: `"[" + std::to_string(...)` trips GCC 12's -Wrestrict.
+    if (steps[i].index >= 0) {
+      path.append("[").append(std::to_string(steps[i].index)).append("]");
+    } else {
+      path.append(path.empty() ? "" : ".").append(steps[i].key);
+    }
+  }
+  return path;
+}
+
+Override parse(const std::string& text) {
+  Override o{"command line --set " + text, {}, "", ""};
+  std::size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) fail(o.label, "", "expected key.path=value");
+  std::string path = text.substr(0, eq);
+  for (std::size_t start = 0; start <= path.size();) {
+    std::size_t dot = std::min(path.find('.', start), path.size());
+    parse_segment(path.substr(start, dot - start), o.label, o.steps);
+    start = dot + 1;
+  }
+  o.path = join_path(o.steps, o.steps.size());
+  o.value = text.substr(eq + 1);
+  return o;
+}
+
+// The child named by step k of `o`: a list item that must exist, or a map
+// entry (undefined until assigned when the key is new).
+YAML::Node descend(YAML::Node node, const Override& o, std::size_t k) {
+  const Step& s = o.steps[k];
+  std::string here = join_path(o.steps, k);
+  std::string there = join_path(o.steps, k + 1);
+  if (s.index >= 0) {
+    if (!node.IsSequence())
+      fail(o.label, there, (here.empty() ? "the document" : here) + " is not a list");
+    if (static_cast<std::size_t>(s.index) >= node.size())
+      fail(o.label, there,
+           "index out of range (the list has " + std::to_string(node.size()) + " items)");
+    return node[static_cast<std::size_t>(s.index)];
+  }
+  if (!node.IsMap() && !node.IsNull()) fail(o.label, there, here + " is not a map");
+  return node[s.key];
+}
+
+YAML::Node parse_value(const Override& o) {
+  try {
+    return YAML::Load(o.value);
+  } catch (const YAML::Exception& e) {
+    fail(o.label, o.path, "invalid YAML value: " + e.msg);
+  }
+}
+
+}  // namespace
+
+void apply_override(YAML::Node& root, const std::string& text, Source& source) {
+  Override o = parse(text);
+  YAML::Node value = parse_value(o);
+  YAML::Node node = root;
+  // Walk to the parent of the last step, creating missing maps on the way.
+  for (std::size_t k = 0; k + 1 < o.steps.size(); ++k) {
+    YAML::Node next = descend(node, o, k);
+    if (!next.IsDefined()) {
+      next = YAML::Node(YAML::NodeType::Map);  // defines the new entry in `node`
+    }
+    node.reset(next);  // rebind only: YAML::Node::operator= would write to the tree
+  }
+  YAML::Node target = descend(node, o, o.steps.size() - 1);
+  target = value;
+  source.add_override(o.path, text);
+}
+
+}  // namespace elbowsim::loader

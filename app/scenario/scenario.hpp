@@ -1,0 +1,51 @@
+// Scenario files: YAML text -> a validated, finalized elbowsim::Model (with its
+// initial state) plus the run settings that are not physics (outputs).
+// The schema is documented key by key in scenarios/README.md.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine/model.hpp"
+
+namespace elbowsim {
+
+// What a run writes, and where.
+struct OutputSettings {
+  std::string folder = "runs/<scenario name>";  // default: "runs/" + model.name
+  bool trajectory = true;                       // write trajectory.csv
+  bool summary = true;                          // write summary.json
+  int every = 1;                                // record every N-th step (>= 1)
+};
+
+struct Scenario {
+  std::string file;  // path it was loaded from
+  std::string description;
+  Model model;  // finalized (elbowsim::finalize called); model.initial from `initial:`
+  OutputSettings output;
+};
+
+// An error in a scenario. what() reads "file:line:column: key.path: message";
+// line and column are 1-based, 0 when unknown (then "file: key.path: message").
+// For a value that came from an override, file is "command line --set <text>".
+class ScenarioError : public std::runtime_error {
+ public:
+  ScenarioError(std::string file, int line, int column, std::string key,
+                const std::string& message);
+  std::string file;  // scenario file name, or "command line --set ..."
+  std::string key;   // key path, e.g. "robot.planar.links[2].mass"; empty if none
+  int line;          // 1-based, 0 if unknown
+  int column;        // 1-based, 0 if unknown
+};
+
+// Loads the YAML file at `path`, applies `overrides` in order (each
+// "key.path=yaml value", e.g. "simulation.step=1e-4", "effects.motor=none",
+// "robot.planar.links[0].mass=2"), validates and finalizes. Throws ScenarioError.
+Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// Same from text; `file_name` is used only in messages and Scenario::file.
+Scenario load_scenario_text(const std::string& text, const std::string& file_name,
+                            const std::vector<std::string>& overrides = {});
+
+}  // namespace elbowsim

@@ -1,0 +1,93 @@
+// effects, simulation, initial and output: the run settings around the robot.
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "app/scenario/checks.hpp"
+#include "app/scenario/sections.hpp"
+
+namespace elbowsim::loader {
+
+namespace {
+
+// initial.<key> [rad or rad/s] or initial.<key>_deg [deg or deg/s], not both.
+Eigen::VectorXd read_angles(const Value& initial, const std::string& key, int dof) {
+  Value radians = initial.get(key);
+  Value degrees = initial.get(key + "_deg");
+  if (radians.exists() && degrees.exists())
+    degrees.fail("give either " + key + " or " + key + "_deg, not both");
+  if (degrees.present()) return per_joint(degrees, dof) * (std::numbers::pi / 180.0);
+  return value_or(radians, Eigen::VectorXd::Zero(dof).eval(),
+                  [dof](const Value& v) { return per_joint(v, dof); });
+}
+
+}  // namespace
+
+Effects read_effects(const Value& effects) {
+  Effects out;
+  if (!effects.present()) return out;
+  effects.allow_keys({"gravity", "damping", "motor", "rotor_inertia"});
+  out.gravity = value_or(effects.get("gravity"), out.gravity, boolean);
+  out.damping = value_or(effects.get("damping"), out.damping, boolean);
+  out.rotor_inertia = value_or(effects.get("rotor_inertia"), out.rotor_inertia, boolean);
+  Value motor = effects.get("motor");
+  if (motor.present())
+    out.motor = choose(motor, {MotorModel::none, MotorModel::quasi_static, MotorModel::full});
+  return out;
+}
+
+Options read_simulation(const Value& simulation) {
+  simulation.allow_keys({"duration", "step", "integrator", "dynamics"});
+  Options out;
+  out.duration = positive(simulation.require("duration"));
+  Value step = simulation.get("step");
+  out.step = value_or(step, 1e-3, positive);
+  if (out.step > out.duration) {
+    const std::string numbers =
+        "(step " + format_number(out.step) + " s, duration " + format_number(out.duration) + " s)";
+    if (step.present()) step.fail("must be <= simulation.duration " + numbers);
+    simulation.get("duration").fail("must be >= simulation.step " + numbers);
+  }
+  Value integrator = simulation.get("integrator");
+  if (integrator.present())
+    out.integrator = choose(integrator, {IntegratorKind::euler, IntegratorKind::semi_implicit_euler,
+                                         IntegratorKind::rk4});
+  Value dynamics = simulation.get("dynamics");
+  if (dynamics.present())
+    out.dynamics =
+        choose(dynamics, {DynamicsMethod::walker_orin, DynamicsMethod::crba, DynamicsMethod::aba});
+  return out;
+}
+
+Model::InitialState read_initial(const Value& initial, int dof) {
+  Model::InitialState out;
+  out.q = out.qd = out.current = Eigen::VectorXd::Zero(dof);
+  if (!initial.present()) return out;
+  initial.allow_keys({"q", "q_deg", "qd", "qd_deg", "current"});
+  out.q = read_angles(initial, "q", dof);
+  out.qd = read_angles(initial, "qd", dof);
+  out.current = value_or(initial.get("current"), out.current,
+                         [dof](const Value& v) { return per_joint(v, dof); });
+  return out;
+}
+
+OutputSettings read_output(const Value& output, const std::string& name) {
+  OutputSettings out;
+  out.folder = "runs/" + name;
+  if (!output.present()) return out;
+  output.allow_keys({"folder", "trajectory", "summary", "every"});
+  Value folder = output.get("folder");
+  out.folder = value_or(folder, out.folder, text);
+  if (out.folder.empty()) folder.fail("must not be empty");
+  out.trajectory = value_or(output.get("trajectory"), out.trajectory, boolean);
+  out.summary = value_or(output.get("summary"), out.summary, boolean);
+  Value every = output.get("every");
+  long n = value_or(every, 1L, [](const Value& v) { return v.integer(); });
+  if (n < 1) every.fail("must be >= 1 (got " + std::to_string(n) + ")");
+  if (n > std::numeric_limits<int>::max())
+    every.fail("is too large (got " + std::to_string(n) + ")");
+  out.every = static_cast<int>(n);
+  return out;
+}
+
+}  // namespace elbowsim::loader

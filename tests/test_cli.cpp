@@ -1,0 +1,122 @@
+// The elbowsim command line, run as a process: exit codes, messages, outputs.
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Outcome {
+  int exit_code;
+  std::string output;  // stdout and stderr
+};
+
+Outcome run(const std::string& arguments) {
+  const std::string command = std::string(ELBOWSIM_BINARY) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::string output;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("elbowsim_cli_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+const std::string kPendulum = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/two_link_pendulum.yaml";
+
+}  // namespace
+
+TEST_CASE("cli: --help and --version exit 0; unknown command exits 2") {
+  CHECK(run("--version").output.find("elbowsim ") != std::string::npos);
+  CHECK(run("--help").exit_code == 0);
+  const Outcome bad = run("frobnicate x");
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("usage:") != std::string::npos);
+}
+
+TEST_CASE("cli: run writes trajectory.csv and summary.json, byte-identical on a second run") {
+  const fs::path dir = scratch("determinism");
+  const Outcome first = run("run " + kPendulum + " --out " + (dir / "a").string());
+  const Outcome second = run("run " + kPendulum + " --out " + (dir / "b").string());
+  REQUIRE(first.exit_code == 0);
+  REQUIRE(second.exit_code == 0);
+  const std::string csv = slurp(dir / "a" / "trajectory.csv");
+  CHECK(csv.rfind("time [s],q0 [rad],q1 [rad]", 0) == 0);
+  CHECK(csv == slurp(dir / "b" / "trajectory.csv"));
+  const auto summary = nlohmann::json::parse(slurp(dir / "a" / "summary.json"));
+  CHECK(summary["completed"] == true);
+  CHECK(summary["scenario"] == "two_link_pendulum");
+  CHECK(summary["effects"] == nlohmann::json::array({"gravity"}));
+  CHECK(summary["steps"].get<long>() > 0);
+  for (const auto& entry : fs::directory_iterator(dir / "a"))
+    CHECK(entry.path().extension() != ".tmp");
+}
+
+TEST_CASE("cli: --set overrides a key; a bad --set names itself and writes nothing") {
+  const fs::path dir = scratch("set");
+  const Outcome ok = run("run " + kPendulum + " --out " + (dir / "ok").string() +
+                         " --set simulation.duration=0.1 --set effects.gravity=false");
+  REQUIRE(ok.exit_code == 0);
+  const auto summary = nlohmann::json::parse(slurp(dir / "ok" / "summary.json"));
+  CHECK(summary["settings"]["duration"] == 0.1);
+  CHECK(summary["effects"].empty());
+  const Outcome bad = run("run " + kPendulum + " --out " + (dir / "bad").string() +
+                          " --set simulation.step=abc");
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("simulation.step") != std::string::npos);
+  CHECK(bad.output.find("--set") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "bad"));
+}
+
+TEST_CASE("cli: a physically invalid scenario exits 2 naming file, line and key; writes nothing") {
+  const fs::path dir = scratch("invalid");
+  std::string text = slurp(kPendulum);
+  const std::string needle = "mass: 1.3";
+  REQUIRE(text.find(needle) != std::string::npos);
+  text.replace(text.find(needle), needle.size(), "mass: -1.3");
+  const fs::path file = dir / "bad.yaml";
+  std::ofstream(file) << text;
+  const Outcome bad = run("run " + file.string() + " --out " + (dir / "out").string());
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("bad.yaml:") != std::string::npos);
+  CHECK(bad.output.find("robot.planar.links[0].mass") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "out"));
+  CHECK(run("validate " + file.string()).exit_code == 2);
+  CHECK(run("validate " + kPendulum).exit_code == 0);
+  CHECK(run("run " + (dir / "missing.yaml").string()).exit_code == 2);
+}
+
+TEST_CASE("cli: a diverging run exits 3 with a clear message and keeps what it recorded") {
+  const fs::path dir = scratch("diverge");
+  const Outcome r = run("run " + kPendulum + " --out " + dir.string() +
+                        " --set simulation.integrator=euler --set simulation.step=0.05"
+                        " --set simulation.duration=200" +
+                        " --set 'inputs={torque: [{type: constant, value: 1e4}, {type: constant, value: 1e4}]}'");
+  CHECK(r.exit_code == 3);
+  CHECK(r.output.find("diverged at t = ") != std::string::npos);
+  CHECK(fs::exists(dir / "trajectory.csv"));
+  const auto summary = nlohmann::json::parse(slurp(dir / "summary.json"));
+  CHECK(summary["completed"] == false);
+  CHECK(summary["failure"].get<std::string>().find("diverged") != std::string::npos);
+}
