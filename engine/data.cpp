@@ -1,13 +1,8 @@
 #include "data.hpp"
 
-namespace elbowsim {
+#include "state_vector.hpp"
 
-namespace {
-// Size of the integrator state x = [q; qd; i (full motor); E_in; E_joule; E_viscous].
-int state_size(const Model& model) {
-  return 2 * model.dof + (model.has_current_state() ? model.dof : 0) + 3;
-}
-}  // namespace
+namespace elbowsim {
 
 Data::Data(const Model& model) {
   const int n = model.dof;
@@ -24,9 +19,17 @@ Data::Data(const Model& model) {
   articulated_inertia = spatial_inertia;
   motion_subspace.assign(un, Vector6d::Zero());
   velocity = bias_acc = bias_force = acc = U = motion_subspace;
-  const int m = state_size(model);
-  x = x_stage = k1 = k2 = k3 = k4 = x_a = x_b = x_c = Eigen::VectorXd::Zero(m);
-  lambda = exp_h = exp_half = phi1_half = phi1_h = f1 = f2 = f3 = Eigen::ArrayXd::Zero(m);
+  const auto elbows = model.elbows.size();
+  contact.resting.assign(elbows, false);
+  contact.normal.assign(elbows, Eigen::Vector3d::UnitZ());
+  contact.surface.assign(elbows, Eigen::Vector3d::Zero());
+  contact.J3 = Matrix3Xd::Zero(3, n);
+  contact.a_free = Eigen::VectorXd::Zero(n);
+  const int m = StateLayout(model).size;
+  x = x_start = k1 = k2 = k3 = k4 = x_a = x_b = x_c = Eigen::VectorXd::Zero(m);
+  lambda = Eigen::ArrayXd::Zero(m);
+  for (StepCoefficients* c : {&step, &partial})
+    c->exp_h = c->exp_half = c->phi1_half = c->phi1_h = c->f1 = c->f2 = c->f3 = lambda;
 }
 
 }  // namespace elbowsim

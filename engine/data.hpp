@@ -26,8 +26,34 @@ struct EnergyTerms {
   double kinetic_rotors = 0;   // [J] 1/2 qd^T Jm qd
   double potential = 0;        // [J] -sum m g.c
   double magnetic = 0;         // [J] 1/2 i^T L i (full motor model only)
+  // With contact:
+  double friction = 0;         // [J] integral of mu fn |v_slide| (energy lost to sliding)
+  double normal_work = 0;      // [J] integral of fn^T Jc qd, work of the table's push (0 if C holds)
+  double impact_loss = 0;      // [J] kinetic energy lost in impacts
+  double projection = 0;       // [J] stored-energy change made by drift projection
   double mechanical() const { return kinetic_links + kinetic_rotors + potential; }
   double stored() const { return mechanical() + magnetic; }
+};
+
+// Contact state and scratch (effects.contact). Rows are the elbows in
+// `active`, in that order; p = active.size() changes only between steps.
+struct ContactData {
+  std::vector<bool> resting;              // [elbows] row of M* on
+  std::vector<int> active;                // [p] elbow index of each row
+  std::vector<Eigen::Vector3d> normal;    // [elbows] table normal under the elbow (world, unit)
+  std::vector<Eigen::Vector3d> surface;   // [elbows] a point of the table surface there [m]
+  Eigen::MatrixXd Jc;      // [p x n] rows j_ck = n_k^T J_k (eq. 8)
+  Eigen::MatrixXd Jf;      // [p x n] Jc - mu Jt: where the normal force acts, with friction (eq. 9)
+  Eigen::VectorXd gamma;   // [p] -n^T Jdot qd (eq. 15, 31), plus Baumgarte terms
+  Eigen::VectorXd C, Cd;   // [p] constraint value [m] and rate [m/s]
+  Eigen::VectorXd fn;      // [p] normal forces [N], > 0 when the table pushes
+  Eigen::VectorXd slide;   // [p] sliding speed of each contact point [m/s]
+  Eigen::MatrixXd Y, Z, A;       // scratch: L^-1 Jc^T, L^-1 Jf^T, Jc M^-1 Jf^T
+  Eigen::VectorXd a_free, rhs;   // scratch [n], [p]
+  Matrix3Xd J3;                  // scratch point Jacobian [3 x n]
+  bool dependent = false;        // last solve met dependent rows
+  double impact_loss = 0;        // [J] kinetic energy lost in impacts so far
+  double projection_energy = 0;  // [J] stored-energy change made by projection so far
 };
 
 struct Data {
@@ -68,10 +94,17 @@ struct Data {
   Eigen::VectorXd D, u;  // [n] ABA joint-space scratch
 
   // --- integrator state ----------------------------------------------------
-  // x = [q; qd; i (motor: full); E_in; E_joule; E_viscous]
-  Eigen::VectorXd x, x_stage, k1, k2, k3, k4, x_a, x_b, x_c;
-  // Exponential-integrator coefficients per component of x (see integrator.cpp)
-  Eigen::ArrayXd lambda, exp_h, exp_half, phi1_half, phi1_h, f1, f2, f3;
+  // x = [q; qd; i (motor: full); energy integrals] (state_vector.hpp)
+  Eigen::VectorXd x, x_start, k1, k2, k3, k4, x_a, x_b, x_c;
+  Eigen::ArrayXd lambda;  // stiff linear rates per component of x (derivative.hpp)
+  // Exponential-integrator coefficients for one step length h (integrator.cpp):
+  // `step` for the scene's step, `partial` for shortened steps (events, the end).
+  struct StepCoefficients {
+    double h = 0;
+    Eigen::ArrayXd exp_h, exp_half, phi1_half, phi1_h, f1, f2, f3;
+  } step, partial;
+
+  ContactData contact;
 
   EnergyTerms energy;           // at time t
   EnergyTerms energy_initial;   // at t = 0

@@ -1,6 +1,10 @@
 #include "derivative.hpp"
 
+#include "constrained_dynamics.hpp"
+#include "constraint_rows.hpp"
+#include "crba.hpp"
 #include "forward_dynamics.hpp"
+#include "walker_orin.hpp"
 #include "kinematics.hpp"
 #include "motor.hpp"
 #include "state_vector.hpp"
@@ -26,6 +30,33 @@ void energy_rates(const Model& model, const Data& data, ConstVec qd, Eigen::Ref<
     out[1] = 0.0;
   }
   out[2] = model.effects.damping ? qd.dot(model.viscous.cwiseProduct(qd)) : 0.0;
+  if (!model.effects.contact) return;
+  // Table power on the arm: fn^T Jf qd = fn^T Jc qd (normal work, zero while
+  // C holds) - fn^T (Jc - Jf) qd (sliding friction loss, >= 0).
+  const ContactData& c = data.contact;
+  if (c.active.empty()) {
+    out[3] = out[4] = 0.0;
+    return;
+  }
+  const double normal = c.fn.dot(c.Cd);
+  out[3] = normal - c.fn.dot(c.Jf * qd);
+  out[4] = normal;
+}
+
+// (M + Jm) qdd = tau - B_J + Jf^T fn with Jc qdd = gamma for the resting
+// elbows (eq. 30-33); plain forward dynamics when none rests.
+void arm_accelerations(const Model& model, Data& data, ConstVec qd) {
+  if (!model.effects.contact || data.contact.active.empty()) {
+    forward_dynamics(model, data, qd, data.actuation, data.qdd);
+    return;
+  }
+  if (model.options.dynamics == DynamicsMethod::walker_orin)
+    mass_matrix_walker_orin(model, data);
+  else
+    mass_matrix_crba(model, data);  // aba has no M to hand: contacts factor CRBA's
+  bias_torques(model, data, qd);
+  constraint_rows(model, data, qd);
+  solve_constrained(model, data, data.actuation);
 }
 
 }  // namespace
@@ -40,7 +71,7 @@ void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
     motor_stage(model, data, t, qd, x.segment(s.current, s.n));
   else
     motor_stage(model, data, t, qd, data.current);
-  forward_dynamics(model, data, qd, data.actuation, data.qdd);
+  arm_accelerations(model, data, qd);
 
   N.segment(s.q(), s.n) = qd;
   N.segment(s.qd(), s.n) = data.qdd;
@@ -48,7 +79,7 @@ void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
   if (s.current >= 0)
     N.segment(s.current, s.n) =
         (data.voltage - model.km.cwiseProduct(qd)).cwiseQuotient(model.inductance);
-  energy_rates(model, data, qd, N.segment(s.energy, 3));
+  energy_rates(model, data, qd, N.segment(s.energy, s.energy_terms));
 }
 
 }  // namespace elbowsim

@@ -33,7 +33,9 @@ void stored_energy(const Model& model, const Data& data, ConstVec qd, ConstVec c
 }
 
 double balance_residual(const EnergyTerms& now, const EnergyTerms& initial) {
-  return now.electrical_in - now.joule - now.viscous - (now.stored() - initial.stored());
+  const double supplied = now.electrical_in + now.normal_work + now.projection;
+  const double lost = now.joule + now.viscous + now.friction + now.impact_loss;
+  return supplied - lost - (now.stored() - initial.stored());
 }
 
 }  // namespace elbowsim

@@ -12,8 +12,9 @@ namespace elbowsim {
 void stored_energy(const Model& model, const Data& data, ConstVec qd, ConstVec current,
                    EnergyTerms& out);
 
-// E_in - E_joule - E_viscous - (E_stored - E_stored(0)): zero for exact
-// integration, so it measures the integration error.
+// (E_in + E_normal + E_projection) - (E_joule + E_viscous + E_friction +
+// E_impact) - (E_stored - E_stored(0)): zero for exact integration, so it
+// measures the integration error.
 double balance_residual(const EnergyTerms& now, const EnergyTerms& initial);
 
 }  // namespace elbowsim

@@ -18,8 +18,10 @@ namespace elbowsim {
 // Precomputes the per-component ETD coefficients for the model's step.
 void prepare_integrator(const Model& model, Data& data);
 
-// Advances data.x from data.t by one step h. Allocates nothing.
+// Advances data.x from data.t by one step of the model's length (or by
+// h < step, for event location and the last step). Allocates nothing.
 void integrate_step(const Model& model, Data& data);
+void integrate_step(const Model& model, Data& data, double h);
 
 // phi_k(z) = sum_{j>=0} z^j / (j + k)!, the ETD weight functions (k = 1, 2, 3).
 double phi(int k, double z);

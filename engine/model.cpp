@@ -34,12 +34,36 @@ const char* to_string(DynamicsMethod d) {
   return "?";
 }
 
+const char* to_string(Stabilization s) {
+  switch (s) {
+    case Stabilization::none: return "none";
+    case Stabilization::baumgarte: return "baumgarte";
+    case Stabilization::projection: return "projection";
+  }
+  return "?";
+}
+
+const char* to_string(EventTiming e) {
+  switch (e) {
+    case EventTiming::step: return "step";
+    case EventTiming::locate: return "locate";
+  }
+  return "?";
+}
+
 std::vector<std::string> Model::active_effects() const {
   std::vector<std::string> names;
   if (effects.gravity) names.emplace_back("gravity");
   if (effects.damping) names.emplace_back("damping");
   if (has_motor()) names.emplace_back(std::string("motor:") + to_string(effects.motor));
   if (has_armature()) names.emplace_back("rotor_inertia");
+  if (effects.contact) {
+    names.emplace_back("contact");
+    if (effects.friction) names.emplace_back("friction");
+    if (effects.impacts) names.emplace_back("impacts");
+    if (effects.stabilization != Stabilization::none)
+      names.emplace_back(std::string("stabilization:") + to_string(effects.stabilization));
+  }
   return names;
 }
 

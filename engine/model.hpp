@@ -15,10 +15,14 @@ namespace elbowsim {
 enum class MotorModel { none, quasi_static, full };
 enum class IntegratorKind { euler, semi_implicit_euler, rk4 };
 enum class DynamicsMethod { walker_orin, crba, aba };
+enum class Stabilization { none, baumgarte, projection };
+enum class EventTiming { step, locate };
 
 const char* to_string(MotorModel m);
 const char* to_string(IntegratorKind k);
 const char* to_string(DynamicsMethod d);
+const char* to_string(Stabilization s);
+const char* to_string(EventTiming e);
 
 // Which physical effects the scene simulates (DESIGN.md §3). An effect that is
 // off costs nothing: its terms are skipped, not multiplied by zero.
@@ -27,6 +31,40 @@ struct Effects {
   bool damping = true;        // (D + Dm) qd
   MotorModel motor = MotorModel::full;
   bool rotor_inertia = true;  // Jm added to M (only with a motor)
+  bool contact = false;       // elbows on the table: Bullet detection, rows of M*
+  bool friction = false;      // sliding Coulomb friction at resting elbows (eq. 9)
+  bool impacts = true;        // touchdown applies an impulse (restitution e)
+  Stabilization stabilization = Stabilization::baumgarte;  // drift control of C(q) = 0
+};
+
+// An elbow point: a sphere on a link that can rest on the table.
+struct Elbow {
+  std::string name;                                // for events and messages
+  int link = 0;                                    // carrying link, 0-based
+  Eigen::Vector3d point = Eigen::Vector3d::Zero(); // [m] sphere centre, link frame
+  double radius = 0.03;                            // [m] > 0
+};
+
+// One solid box of the table (several make steps or gaps).
+struct TableBox {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();         // [m] world
+  Eigen::Vector3d size = Eigen::Vector3d(1.0, 1.0, 0.05);   // [m] full edge lengths, > 0
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();   // box frame -> world
+};
+
+// Contact parameters and numerical tolerances (used when effects.contact).
+struct ContactOptions {
+  double restitution = 0.0;   // e in [0, 1], normal impacts
+  double friction = 0.0;      // mu >= 0, sliding Coulomb (effects.friction)
+  EventTiming events = EventTiming::step;
+  double locate_tolerance = 1e-9;      // [s] event-time tolerance (events: locate)
+  double touch_distance = 1e-6;        // [m] signed distance that counts as touching
+  double separation_velocity = 1e-6;   // [m/s] normal speed above which a contact separates
+  double baumgarte_time = 0.01;        // [s] Baumgarte time constant T: alpha = 2/T, beta = 1/T^2
+  double slip_velocity = 1e-4;         // [m/s] friction regularisation speed
+  double rank_tolerance = 1e-9;        // relative pivot threshold for dependent rows
+  double link_warning_depth = 0.005;   // [m] a link capsule deeper than this in the table warns
+  double initial_penetration = 1e-4;   // [m] an elbow deeper at t = 0 is a scenario error
 };
 
 // Revolute joint i: the frame of link i is the frame of link i-1 (or the base)
@@ -88,6 +126,11 @@ struct Model {
   struct InitialState {
     Eigen::VectorXd q, qd, current;
   } initial;
+
+  // Elbows and table (used when effects.contact).
+  std::vector<Elbow> elbows;
+  std::vector<TableBox> table;
+  ContactOptions contact;
 
   Effects effects;
   Options options;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contact_tracker.hpp"
 #include "data.hpp"
 
 namespace elbowsim {
@@ -38,6 +39,9 @@ struct RunResult {
   EnergyTerms energy_initial, energy_final;
   double balance_residual = 0;      // [J] at the end
   double max_abs_balance_residual = 0;  // [J] over recorded samples
+  // Contact (effects.contact): events, drift and the collision worlds built.
+  ContactLog contact;
+  long collision_worlds_built = 0;  // by this run
 };
 
 }  // namespace elbowsim

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "derivative.hpp"
@@ -34,17 +35,40 @@ std::vector<Column> trajectory_columns(const Model& model) {
   }
   add_columns(cols, "tau", "N m", n);
   for (const char* axis : {"hand_x", "hand_y", "hand_z"}) cols.push_back({axis, "m"});
+  if (model.effects.contact) {
+    for (const Elbow& e : model.elbows) {
+      cols.push_back({"fn_" + e.name, "N"});
+      cols.push_back({"d_" + e.name, "m"});
+      cols.push_back({"rest_" + e.name, "1"});
+    }
+  }
   for (const char* e : {"E_in", "E_joule", "E_viscous", "KE_links", "KE_rotors", "PE",
-                        "E_magnetic", "balance_residual"})
+                        "E_magnetic"})
     cols.push_back({e, "J"});
+  if (model.effects.contact)
+    for (const char* e : {"E_friction", "E_normal", "E_impact", "E_projection"})
+      cols.push_back({e, "J"});
+  cols.push_back({"balance_residual", "J"});
   return cols;
+}
+
+// Per elbow: normal force (0 unless its row is on), signed distance, resting flag.
+void append_contacts(const Model& model, const Data& data, ContactTracker& tracker,
+                     std::vector<double>& row) {
+  const auto& contacts = tracker.detect(model, const_cast<Data&>(data));
+  for (int k = 0; k < int(model.elbows.size()); ++k) {
+    double fn = 0;
+    for (std::size_t r = 0; r < data.contact.active.size(); ++r)
+      if (data.contact.active[r] == k) fn = data.contact.fn[r];
+    row.insert(row.end(), {fn, contacts[k].distance, data.contact.resting[k] ? 1.0 : 0.0});
+  }
 }
 
 void append(std::vector<double>& row, const Eigen::VectorXd& v) {
   row.insert(row.end(), v.data(), v.data() + v.size());
 }
 
-void record_sample(const Model& model, const Data& data, Recording& rec) {
+void record_sample(const Model& model, Data& data, ContactTracker* tracker, Recording& rec) {
   std::vector<double>& row = rec.values;
   row.push_back(data.t);
   append(row, data.q);
@@ -57,9 +81,12 @@ void record_sample(const Model& model, const Data& data, Recording& rec) {
   append(row, data.actuation);
   const Eigen::Vector3d hand = point_position(data, model.hand_link, model.hand_point);
   row.insert(row.end(), {hand.x(), hand.y(), hand.z()});
+  if (tracker) append_contacts(model, data, *tracker, row);
   const EnergyTerms& e = data.energy;
   row.insert(row.end(), {e.electrical_in, e.joule, e.viscous, e.kinetic_links, e.kinetic_rotors,
-                         e.potential, e.magnetic, balance_residual(e, data.energy_initial)});
+                         e.potential, e.magnetic});
+  if (tracker) row.insert(row.end(), {e.friction, e.normal_work, e.impact_loss, e.projection});
+  row.push_back(balance_residual(e, data.energy_initial));
 }
 
 std::string divergence_message(const Model& model, const Data& data) {
@@ -97,43 +124,77 @@ void evaluate_outputs(const Model& model, Data& data) {
   data.energy.electrical_in = data.x[s.energy];
   data.energy.joule = data.x[s.energy + 1];
   data.energy.viscous = data.x[s.energy + 2];
+  if (!model.effects.contact) return;
+  data.energy.friction = data.x[s.energy + 3];
+  data.energy.normal_work = data.x[s.energy + 4];
+  data.energy.impact_loss = data.contact.impact_loss;
+  data.energy.projection = data.contact.projection_energy;
 }
+
+namespace {
+
+// One step of the scene's length (shorter at the end), with the contact
+// logic around it when the scene has contacts. False stops the run.
+bool advance(const Model& model, Data& data, double t_end, std::optional<ContactTracker>& contacts,
+             RunResult& result) {
+  if (contacts && !contacts->begin_step(model, data, result.contact)) return false;
+  const double t0 = data.t;
+  data.x_start = data.x;
+  integrate_step(model, data, std::min(model.options.step, t_end - t0));
+  if (contacts && !contacts->end_step(model, data, t0, result.contact)) return false;
+  if (state_is_sane(data)) return true;
+  result.contact.failure = divergence_message(model, data);
+  return false;
+}
+
+}  // namespace
 
 RunResult simulate(const Model& model, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  const long worlds_before = model.effects.contact ? CollisionWorld::worlds_built() : 0;
   RunResult result;
   result.trajectory.columns = trajectory_columns(model);
   Data data(model);
+  std::optional<ContactTracker> contacts;
+  if (model.effects.contact) contacts.emplace(model);  // no collision world otherwise
   prepare_integrator(model, data);
   reset_state(model, data);
+  if (contacts) contacts->begin_step(model, data, result.contact);
   evaluate_outputs(model, data);
   data.energy_initial = data.energy;
-  record_sample(model, data, result.trajectory);
+  record_sample(model, data, contacts ? &*contacts : nullptr, result.trajectory);
 
-  const long total = std::lround(model.options.duration / model.options.step);
+  const double t_end = model.options.duration;
   const long every = std::max(1, options.record_every);
-  const long progress_every = std::max(1L, total / 100);
+  const long expected = std::lround(t_end / model.options.step);
+  const long progress_every = std::max(1L, expected / 100);
   result.completed = true;
-  for (long k = 1; k <= total; ++k) {
-    integrate_step(model, data);
-    if (!state_is_sane(data)) {
+  // Stop within a thousandth of a step of the end: t accumulates rounding.
+  while (t_end - data.t > 1e-3 * model.options.step) {
+    if (!advance(model, data, t_end, contacts, result)) {
       result.completed = false;
-      result.failure = divergence_message(model, data);
+      result.failure = result.contact.failure;
       break;
     }
-    if (k % every == 0 || k == total) {
+    const bool last = t_end - data.t <= 1e-3 * model.options.step;
+    if (data.steps % every == 0 || last) {
       evaluate_outputs(model, data);
-      record_sample(model, data, result.trajectory);
-      result.max_abs_balance_residual = std::max(
-          result.max_abs_balance_residual, std::abs(balance_residual(data.energy, data.energy_initial)));
+      record_sample(model, data, contacts ? &*contacts : nullptr, result.trajectory);
+      result.max_abs_balance_residual =
+          std::max(result.max_abs_balance_residual,
+                   std::abs(balance_residual(data.energy, data.energy_initial)));
     }
-    if (options.progress && k % progress_every == 0) options.progress(double(k) / double(total));
+    if (options.progress && data.steps % progress_every == 0)
+      options.progress(data.t / t_end);
   }
   result.steps = data.steps;
   result.final_time = data.t;
   result.energy_initial = data.energy_initial;
   result.energy_final = data.energy;
   result.balance_residual = balance_residual(data.energy, data.energy_initial);
+  result.warnings = result.contact.warnings;
+  result.collision_worlds_built =
+      model.effects.contact ? CollisionWorld::worlds_built() - worlds_before : 0;
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -7,6 +7,7 @@
 
 #include "app/commands/commands.hpp"
 #include "app/output/atomic_file.hpp"
+#include "app/output/events_csv.hpp"
 #include "app/output/summary_json.hpp"
 #include "app/output/trajectory_csv.hpp"
 #include "app/scenario/scenario.hpp"
@@ -35,6 +36,10 @@ void write_outputs(const Scenario& scenario, const RunResult& result,
   if (scenario.output.trajectory)
     write_atomically(folder / "trajectory.csv",
                      [&](std::ostream& out) { write_trajectory_csv(out, result.trajectory); });
+  if (scenario.model.effects.contact)
+    write_atomically(folder / "events.csv", [&](std::ostream& out) {
+      write_events_csv(out, scenario.model, result.contact);
+    });
   if (scenario.output.summary)
     write_atomically(folder / "summary.json", [&](std::ostream& out) {
       out << run_summary(scenario, result).dump(2) << '\n';
@@ -61,6 +66,7 @@ int run_command(const RunArguments& args) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_io;
   }
+  for (const std::string& warning : result.warnings) std::cerr << "warning: " << warning << '\n';
   if (!result.completed) {
     std::cerr << "error: " << result.failure << "\n  kept " << result.trajectory.rows()
               << " recorded samples in " << folder.string() << '\n';

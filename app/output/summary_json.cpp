@@ -10,13 +10,33 @@ nlohmann::ordered_json energy_json(const EnergyTerms& e) {
   return {{"electrical_in", e.electrical_in}, {"joule", e.joule},
           {"viscous", e.viscous},             {"kinetic_links", e.kinetic_links},
           {"kinetic_rotors", e.kinetic_rotors}, {"potential", e.potential},
-          {"magnetic", e.magnetic}};
+          {"magnetic", e.magnetic}, {"friction", e.friction},
+          {"normal_work", e.normal_work}, {"impact_loss", e.impact_loss},
+          {"projection", e.projection}};
 }
 
 nlohmann::ordered_json model_json(const Model& m) {
   double total_mass = 0;
   for (const Link& link : m.links) total_mass += link.mass;
   return {{"dof", m.dof}, {"total_mass", total_mass}, {"hand_link", m.hand_link}};
+}
+
+nlohmann::ordered_json contact_json(const Model& m, const RunResult& r) {
+  long landings = 0, releases = 0;
+  for (const ContactEvent& e : r.contact.events)
+    (e.kind == ContactEvent::Kind::landing ? landings : releases)++;
+  nlohmann::ordered_json j = {{"enabled", m.effects.contact},
+                              {"collision_worlds_built", r.collision_worlds_built}};
+  if (!m.effects.contact) return j;
+  j["elbows"] = m.elbows.size();
+  j["events"] = to_string(m.contact.events);
+  j["stabilization"] = to_string(m.effects.stabilization);
+  j["landings"] = landings;
+  j["releases"] = releases;
+  j["max_abs_C"] = r.contact.max_abs_C;
+  j["max_abs_Jc_qd"] = r.contact.max_abs_Cd;
+  j["dependent_steps"] = r.contact.dependent_steps;
+  return j;
 }
 
 nlohmann::ordered_json settings_json(const Options& o) {
@@ -46,6 +66,7 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   j["balance_residual"] = result.balance_residual;
   j["max_abs_balance_residual"] = result.max_abs_balance_residual;
   j["balance_residual_relative"] = e_in != 0 ? std::abs(result.balance_residual / e_in) : 0.0;
+  j["contact"] = contact_json(m, result);
   j["warnings"] = result.warnings;
   return j;
 }

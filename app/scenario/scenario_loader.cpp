@@ -78,24 +78,30 @@ void finalize_model(Model& model, const std::string& file) {
 }
 
 // The sections, in dependency order: effects and robot (dof) before motors,
-// initial state and inputs.
+// elbows, initial state and inputs.
 Scenario read(const Value& root, const std::string& file) {
-  root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "initial",
-                   "simulation", "inputs", "output"});
+  root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "elbows",
+                   "table", "contact", "initial", "simulation", "inputs", "output"});
   Scenario s;
   s.file = file;
   Model& model = s.model;
   model.name = read_name(root.require("name"));
   s.description = value_or(root.get("description"), std::string(), text);
   model.effects = read_effects(root.get("effects"));
-  read_robot(root.require("robot"), model);
+  const Value robot = root.require("robot");
+  read_robot(robot, model);
   model.gravity = value_or(root.get("gravity"), model.gravity, vec3);
   model.motors = read_motors(root.get("motors"), model);
+  model.elbows = read_elbows(root.get("elbows"), model, robot.get("planar").exists());
+  model.table = read_table(root.get("table"));
+  model.contact = read_contact(root.get("contact"));
+  check_contact_scene(root, model);
   model.options = read_simulation(root.require("simulation"));
   model.initial = read_initial(root.get("initial"), model.dof);
   model.inputs = read_inputs(root.get("inputs"), model);
   s.output = read_output(root.get("output"), model.name);
   finalize_model(model, file);
+  check_initial_penetration(root, model);
   return s;
 }
 

@@ -1,7 +1,8 @@
 // One reader per top-level section of a scenario file. Each validates what it
 // reads and fails at the offending node (see yaml_reader.hpp). The order the
 // loader calls them in matters: robot first (it sets dof), effects before
-// motors and inputs (which depend on the motor model).
+// motors and inputs (which depend on the motor model), elbows after the robot
+// (they name its links).
 #pragma once
 
 #include <string>
@@ -29,5 +30,17 @@ Options read_simulation(const Value& simulation);                          // re
 Model::InitialState read_initial(const Value& initial, int dof);           // optional
 OpenLoopInputs read_inputs(const Value& inputs, const Model& model);       // optional
 OutputSettings read_output(const Value& output, const std::string& name);  // optional
+
+// elbows (optional list): spheres on the links. Needs model.dof and
+// model.links; `planar` says the robot was given as robot.planar, the only
+// form that allows `at` (distance along the link).
+std::vector<Elbow> read_elbows(const Value& elbows, const Model& model, bool planar);
+std::vector<TableBox> read_table(const Value& table);  // optional; boxes: one or more
+ContactOptions read_contact(const Value& contact);     // optional; defaults: ContactOptions
+// effects.contact: true needs a non-empty elbows list and a table. Call after
+// model.effects and model.elbows are read.
+void check_contact_scene(const Value& root, const Model& model);
+// After finalize(): no elbow starts deeper in the table than allowed.
+void check_initial_penetration(const Value& root, const Model& model);
 
 }  // namespace elbowsim::loader

@@ -26,13 +26,24 @@ Eigen::VectorXd read_angles(const Value& initial, const std::string& key, int do
 Effects read_effects(const Value& effects) {
   Effects out;
   if (!effects.present()) return out;
-  effects.allow_keys({"gravity", "damping", "motor", "rotor_inertia"});
+  effects.allow_keys({"gravity", "damping", "motor", "rotor_inertia", "contact", "friction",
+                      "impacts", "stabilization"});
   out.gravity = value_or(effects.get("gravity"), out.gravity, boolean);
   out.damping = value_or(effects.get("damping"), out.damping, boolean);
   out.rotor_inertia = value_or(effects.get("rotor_inertia"), out.rotor_inertia, boolean);
   Value motor = effects.get("motor");
   if (motor.present())
     out.motor = choose(motor, {MotorModel::none, MotorModel::quasi_static, MotorModel::full});
+  out.contact = value_or(effects.get("contact"), out.contact, boolean);
+  Value friction = effects.get("friction");
+  out.friction = value_or(friction, out.friction, boolean);
+  if (out.friction && !out.contact)
+    friction.fail("needs effects.contact: true (friction acts at elbows resting on the table)");
+  out.impacts = value_or(effects.get("impacts"), out.impacts, boolean);
+  Value stabilization = effects.get("stabilization");
+  if (stabilization.present())
+    out.stabilization = choose(
+        stabilization, {Stabilization::none, Stabilization::baumgarte, Stabilization::projection});
   return out;
 }
 

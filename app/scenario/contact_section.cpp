@@ -1,0 +1,184 @@
+// elbows, table and contact: the spheres on the arm that can rest on the
+// table, the table's boxes, and the contact parameters. All three are read and
+// validated whenever given, even with effects.contact off (then unused), so
+// that switching contact on later cannot meet an invalid elbow or box.
+#include <map>
+#include <string>
+
+#include <sstream>
+
+#include "engine/collision.hpp"
+#include "engine/kinematics.hpp"
+#include "app/scenario/checks.hpp"
+#include "app/scenario/sections.hpp"
+
+namespace elbowsim::loader {
+
+namespace {
+
+constexpr double kDefaultElbowRadius = 0.03;  // [m]
+
+std::string link_range(int n) {
+  return "the robot has " + std::to_string(n) + " links: " + std::to_string(-n) + " .. " +
+         std::to_string(n - 1);
+}
+
+// link: 0-based index, negative counts from the end (-1 = last). Returns it 0-based.
+int read_link_index(const Value& v, int n) {
+  long link = v.integer();
+  if (link < -n || link >= n)
+    v.fail("link index out of range (got " + std::to_string(link) + "; " + link_range(n) + ")");
+  return static_cast<int>(link < 0 ? link + n : link);
+}
+
+// The sphere centre in the link frame: `at` (planar shorthand: distance along
+// the link, 0 .. length) or `point` ([x, y, z]), exactly one.
+Eigen::Vector3d read_elbow_point(const Value& v, const Model& model, int link, bool planar) {
+  Value at = v.get("at");
+  Value point = v.get("point");
+  if (at.present() && point.present()) v.fail("give exactly one of at or point (got both)");
+  if (point.present()) return point.vec3();
+  if (!at.present())
+    v.fail(planar ? "give exactly one of at (distance along the link [m]) or point ([x, y, z] "
+                    "in the link frame [m])"
+                  : "missing the sphere centre: give point ([x, y, z] in the link frame [m])");
+  if (!planar)
+    at.fail(
+        "is only for the planar shorthand (this robot is given as robot.joints); give "
+        "point: [x, y, z] in the link frame [m]");
+  const double distance = non_negative(at);
+  const double length = model.links[static_cast<std::size_t>(link)].tip.x();
+  if (distance > length)
+    at.fail("must be <= the length of link " + std::to_string(link) + " (" + format_number(length) +
+            " m; got " + format_number(distance) + ")");
+  return Eigen::Vector3d(distance, 0, 0);
+}
+
+Elbow read_elbow(const Value& v, const Model& model, bool planar) {
+  v.allow_keys({"name", "link", "at", "point", "radius"});
+  Elbow elbow;
+  elbow.link = read_link_index(v.require("link"), model.dof);
+  elbow.point = read_elbow_point(v, model, elbow.link, planar);
+  elbow.radius = value_or(v.get("radius"), kDefaultElbowRadius, positive);
+  return elbow;
+}
+
+// One box of the table: center and size required, rpy optional.
+TableBox read_box(const Value& v) {
+  v.allow_keys({"center", "size", "rpy"});
+  TableBox box;
+  box.center = v.require("center").vec3();
+  Value size = v.require("size");
+  box.size = size.vec3();
+  for (const Value& edge : size.items()) positive(edge);
+  box.rotation = rpy_rotation(value_or(v.get("rpy"), Eigen::Vector3d::Zero().eval(), vec3));
+  return box;
+}
+
+// A number in [lo, hi] (closed) or (lo, hi) (open).
+double in_range(const Value& v, double lo, double hi, bool closed) {
+  const double x = v.number();
+  const bool inside = closed ? (x >= lo && x <= hi) : (x > lo && x < hi);
+  if (!inside)
+    v.fail("must be in " + std::string(closed ? "[" : "(") + format_number(lo) + ", " +
+           format_number(hi) + (closed ? "]" : ")") + " (got " + format_number(x) + ")");
+  return x;
+}
+
+}  // namespace
+
+std::vector<Elbow> read_elbows(const Value& elbows, const Model& model, bool planar) {
+  std::vector<Elbow> out;
+  if (!elbows.present()) return out;
+  std::map<std::string, std::size_t> names;  // name -> index of the elbow that has it
+  const std::vector<Value> items = elbows.items();
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    Elbow elbow = read_elbow(items[k], model, planar);
+    Value name = items[k].get("name");
+    elbow.name = value_or(name, "elbow" + std::to_string(k), text);
+    if (elbow.name.empty()) name.fail("must not be empty");
+    auto [first, inserted] = names.emplace(elbow.name, k);
+    if (!inserted) {
+      const std::string other = elbows.path() + "[" + std::to_string(first->second) + "]";
+      if (name.present())
+        name.fail("duplicate elbow name \"" + elbow.name + "\" (also " + other + ")");
+      items[k].fail("the default name \"" + elbow.name + "\" is taken by " + other +
+                    "; give this elbow a name");
+    }
+    out.push_back(elbow);
+  }
+  return out;
+}
+
+std::vector<TableBox> read_table(const Value& table) {
+  std::vector<TableBox> out;
+  if (!table.present()) return out;
+  table.allow_keys({"boxes"});
+  Value boxes = table.require("boxes");
+  const std::vector<Value> items = boxes.items();
+  if (items.empty()) boxes.fail("needs at least one box");
+  for (const Value& v : items) out.push_back(read_box(v));
+  return out;
+}
+
+ContactOptions read_contact(const Value& contact) {
+  ContactOptions out;
+  if (!contact.present()) return out;
+  contact.allow_keys({"restitution", "friction", "events", "locate_tolerance", "touch_distance",
+                      "separation_velocity", "baumgarte_time", "slip_velocity", "rank_tolerance",
+                      "link_warning_depth", "initial_penetration"});
+  auto unit_interval = [](const Value& v) { return in_range(v, 0.0, 1.0, true); };
+  auto open_unit_interval = [](const Value& v) { return in_range(v, 0.0, 1.0, false); };
+  out.restitution = value_or(contact.get("restitution"), out.restitution, unit_interval);
+  out.friction = value_or(contact.get("friction"), out.friction, non_negative);
+  Value events = contact.get("events");
+  if (events.present()) out.events = choose(events, {EventTiming::step, EventTiming::locate});
+  out.locate_tolerance = value_or(contact.get("locate_tolerance"), out.locate_tolerance, positive);
+  out.touch_distance = value_or(contact.get("touch_distance"), out.touch_distance, positive);
+  out.separation_velocity =
+      value_or(contact.get("separation_velocity"), out.separation_velocity, positive);
+  out.baumgarte_time = value_or(contact.get("baumgarte_time"), out.baumgarte_time, positive);
+  out.slip_velocity = value_or(contact.get("slip_velocity"), out.slip_velocity, positive);
+  out.rank_tolerance =
+      value_or(contact.get("rank_tolerance"), out.rank_tolerance, open_unit_interval);
+  out.link_warning_depth =
+      value_or(contact.get("link_warning_depth"), out.link_warning_depth, positive);
+  out.initial_penetration =
+      value_or(contact.get("initial_penetration"), out.initial_penetration, positive);
+  return out;
+}
+
+void check_contact_scene(const Value& root, const Model& model) {
+  if (!model.effects.contact) return;
+  const Value contact = root.get("effects").get("contact");  // present: contact is on
+  const Value elbows = root.get("elbows");
+  if (!elbows.present())
+    contact.fail("needs elbows: the elbows list is missing (give at least one elbow)");
+  if (model.elbows.empty()) elbows.fail("needs at least one elbow with effects.contact: true");
+  if (!root.get("table").present())
+    contact.fail("needs a table: the table section is missing (give table: {boxes: [...]})");
+}
+
+// An elbow that starts deeper in the table than contact.initial_penetration
+// is a scene error: the contact model would have to resolve it by a jump.
+void check_initial_penetration(const Value& root, const Model& model) {
+  if (!model.effects.contact) return;
+  Data data(model);
+  const Eigen::VectorXd q =
+      model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
+  forward_kinematics(model, data, q);
+  CollisionWorld world(model);
+  std::vector<ElbowContact> contacts;
+  world.elbow_contacts(model, data, contacts);
+  const std::vector<Value> elbows = root.get("elbows").items();
+  for (const ElbowContact& c : contacts) {
+    if (c.distance >= -model.contact.initial_penetration) continue;
+    std::ostringstream msg;
+    msg << "is " << -c.distance << " m inside table box " << c.box
+        << " at the initial pose (more than contact.initial_penetration = "
+        << model.contact.initial_penetration << " m); move the elbow, the table or initial.q";
+    elbows[c.elbow].fail(msg.str());
+  }
+}
+
+}  // namespace elbowsim::loader

@@ -1,0 +1,123 @@
+#include "support/contact_scenes.hpp"
+
+#include <cmath>
+
+#include "engine/kinematics.hpp"
+#include "engine/rnea.hpp"
+
+namespace elbowsim::testing {
+
+namespace {
+
+InputProfile ramp(double value, double slope) {
+  InputProfile p;
+  p.kind = InputProfile::Kind::table;
+  p.times = {0.0, 100.0};
+  p.values = {value, value + 100.0 * slope};
+  return p;
+}
+
+TableBox table_under(double top_z, double x) {
+  TableBox box;
+  box.size = Eigen::Vector3d(2.0, 1.0, 0.1);
+  box.center = Eigen::Vector3d(x, 0, top_z - 0.05);
+  return box;
+}
+
+}  // namespace
+
+double ElbowArm::G1() const {
+  return g * ((m1 * lc1 + m2 * l1) * std::cos(q1) + m2 * lc2 * std::cos(q1 + q2));
+}
+double ElbowArm::G2() const { return g * m2 * lc2 * std::cos(q1 + q2); }
+double ElbowArm::statics_force(double tau1) const { return (G1() - tau1) / (l1 * std::cos(q1)); }
+
+Model ElbowArm::model(double tau1_0, double slope) const {
+  Model m = planar_arm({{l1, m1, lc1, 0.02}, {l2, m2, lc2, 0.01}});
+  m.elbows = {Elbow{"elbow", 0, Eigen::Vector3d(l1, 0, 0), r}};
+  m.table = {table_under(l1 * std::sin(q1) - r, l1)};
+  m.effects.contact = true;
+  m.initial.q = Eigen::Vector2d(q1, q2);
+  m.inputs.quantity = OpenLoopInputs::Quantity::torque;
+  m.inputs.joints = {ramp(tau1_0, slope), ramp(G2(), 0.0)};
+  m.options = {1.0, 1e-3, IntegratorKind::rk4, DynamicsMethod::crba};
+  finalize(m);
+  return m;
+}
+
+Model sliding_arm(Stabilization stabilization, double duration, double step) {
+  Model m = planar_arm({{0.3, 1.0, 0.15, 0.01}, {0.3, 0.8, 0.15, 0.008}, {0.25, 0.5, 0.12, 0.004}});
+  const double q1 = 0.5, q2 = -1.2;
+  const double elbow_z = 0.3 * std::sin(q1) + 0.3 * std::sin(q1 + q2);
+  m.elbows = {Elbow{"elbow", 1, Eigen::Vector3d(0.3, 0, 0), 0.03}};
+  // The table's edge is in front of the shoulder, so only the elbow reaches it.
+  m.table = {table_under(elbow_z - 0.03, 0.85)};
+  m.table[0].size.x() = 1.0;
+  m.effects.contact = true;
+  m.effects.stabilization = stabilization;
+  // Quasi-static servos (back-EMF damping Km^2/R = 1.1 N m s/rad) holding 70 %
+  // of the shoulder's and elbow's gravity torque and all of the wrist's, so
+  // the elbow leans on the table, plus slow sines that make it slide.
+  m.effects.motor = MotorModel::quasi_static;
+  m.motors.assign(3, small_servo());
+  m.initial.q = Eigen::Vector3d(q1, q2, 1.0);
+  finalize(m);
+  Data data(m);
+  forward_kinematics(m, data, m.initial.q);
+  Eigen::VectorXd gravity(3);
+  inverse_dynamics(m, data, data.zero, data.zero, {false, true, false}, gravity);
+  const Eigen::Vector3d share(0.7, 0.7, 1.0), amplitude(0.5, 0.4, 0.2), frequency(0.3, 0.45, 0.6);
+  m.inputs.quantity = OpenLoopInputs::Quantity::voltage;
+  m.inputs.joints.assign(3, InputProfile{});
+  for (int j = 0; j < 3; ++j) {
+    InputProfile& v = m.inputs.joints[j];
+    v.kind = InputProfile::Kind::sine;
+    v.offset = share[j] * gravity[j] * m.motors[j].resistance / m.motors[j].km();
+    v.amplitude = amplitude[j];
+    v.frequency = frequency[j];
+  }
+  m.options = {duration, step, IntegratorKind::rk4, DynamicsMethod::crba};
+  finalize(m);
+  return m;
+}
+
+Model SpinningRod::model(double duration) const {
+  Model m;
+  m.name = "spinning_rod";
+  m.dof = 2;
+  Joint yaw, pitch;
+  yaw.axis = Eigen::Vector3d::UnitZ();
+  pitch.axis = -Eigen::Vector3d::UnitY();
+  Link hub, rod;
+  hub.mass = 0.1;
+  hub.inertia = Eigen::Vector3d(1e-4, 1e-4, 1e-4).asDiagonal();
+  rod.mass = mass;
+  rod.com = Eigen::Vector3d(length / 2, 0, 0);
+  const double I = mass * length * length / 12;
+  rod.inertia = Eigen::Vector3d(1e-5, I, I).asDiagonal();
+  rod.tip = Eigen::Vector3d(length, 0, 0);
+  m.joints = {yaw, pitch};
+  m.links = {hub, rod};
+  m.hand_link = 1;
+  m.hand_point = rod.tip;
+  m.elbows = {Elbow{"tip", 1, rod.tip, r}};
+  m.table = {table_under(-r, 0.0)};
+  m.table[0].size = Eigen::Vector3d(3, 3, 0.1);
+  m.effects.motor = MotorModel::none;
+  m.effects.damping = false;
+  m.effects.contact = true;
+  m.effects.friction = true;
+  m.contact.friction = mu;
+  m.initial.q = Eigen::Vector2d(0, 0);
+  m.initial.qd = Eigen::Vector2d(omega0, 0);
+  m.options = {duration, 1e-4, IntegratorKind::rk4, DynamicsMethod::crba};
+  finalize(m);
+  return m;
+}
+
+double SpinningRod::normal_force() const { return mass * g * 0.5; }
+double SpinningRod::yaw_inertia() const {
+  return 1e-4 + mass * length * length / 12 + mass * (length / 2) * (length / 2);
+}
+
+}  // namespace elbowsim::testing

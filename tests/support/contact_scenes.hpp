@@ -1,0 +1,41 @@
+// Scenes with elbows on a table, shared by the contact tests and benchmarks.
+#pragma once
+
+#include "support/models.hpp"
+
+namespace elbowsim::testing {
+
+// 2-link planar arm leaning on an elbow sphere at the end of link 0 (on joint
+// 1), table top exactly under it at q0; torque inputs (motor none).
+//
+//   z                 link 1
+//   |              o--------- hand
+//   |  link 0    / (elbow sphere, radius r, on the table)
+//   o----------o
+//   ===========================  table top
+struct ElbowArm {
+  double l1 = 0.4, l2 = 0.35, lc1 = 0.2, lc2 = 0.175, m1 = 1.3, m2 = 0.9, r = 0.03, g = 9.81;
+  double q1 = -0.3, q2 = 0.6;
+  // Gravity torques at rest (hand-derived, angles from +x toward +z).
+  double G1() const;
+  double G2() const;
+  // The table force that balances shoulder torque tau1 (link 1 held by G2).
+  double statics_force(double tau1) const;
+  // Torque inputs tau1(t) = tau1_0 + slope t, tau2 = G2.
+  Model model(double tau1_0, double slope) const;
+};
+
+// 3-link planar arm whose elbow (end of link 1) rests on the table and can
+// slide along it; joint torques follow slow sines.
+Model sliding_arm(Stabilization stabilization, double duration, double step);
+
+// Rod on a yaw (z) and a pitch (-y) joint, horizontal, its tip sphere resting
+// on a table below; spinning at omega0 about z. Friction mu.
+struct SpinningRod {
+  double length = 0.5, mass = 1.0, r = 0.02, omega0 = 2.0, mu = 0.3, g = 9.81;
+  Model model(double duration) const;
+  double normal_force() const;       // m g lc / l (lc = l/2)
+  double yaw_inertia() const;        // about the z axis through the base
+};
+
+}  // namespace elbowsim::testing
