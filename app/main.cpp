@@ -15,7 +15,8 @@ constexpr const char* kUsage = R"(usage:
   elbowsim validate SCENARIO [--set key=value ...]          load, check, print the model
   elbowsim --help | --version
 
-Outputs of run (in output.folder, or DIR): trajectory.csv, summary.json.
+Outputs of run (in output.folder, or DIR): scenario.yaml (as run), trajectory.csv,
+summary.json, events.csv (with contacts).
 Exit codes: 0 ok, 1 I/O error, 2 bad input, 3 run stopped early (outputs kept).
 Scenario keys: scenarios/README.md)";
 
@@ -30,21 +31,24 @@ cxxopts::Options make_options() {
   return options;
 }
 
+std::vector<std::string> strings(const cxxopts::ParseResult& parsed, const char* key) {
+  return parsed.count(key) ? parsed[key].as<std::vector<std::string>>()
+                           : std::vector<std::string>{};
+}
+
 int dispatch(const cxxopts::ParseResult& parsed) {
   using namespace elbowsim;
   if (parsed.count("help")) return std::cout << kUsage << '\n', exit_ok;
   if (parsed.count("version")) return std::cout << "elbowsim " << kVersion << '\n', exit_ok;
-  const auto words = parsed.count("positional")
-                         ? parsed["positional"].as<std::vector<std::string>>()
-                         : std::vector<std::string>{};
-  const auto sets = parsed.count("set") ? parsed["set"].as<std::vector<std::string>>()
-                                        : std::vector<std::string>{};
-  if (words.size() == 2 && words[0] == "run") {
+  const auto words = strings(parsed, "positional");
+  const auto sets = strings(parsed, "set");
+  const std::string command = words.empty() ? "" : words[0];
+  if (command == "run" && words.size() == 2) {
     RunArguments args{words[1], std::nullopt, sets};
     if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
     return run_command(args);
   }
-  if (words.size() == 2 && words[0] == "validate") return validate_command(words[1], sets);
+  if (command == "validate" && words.size() == 2) return validate_command(words[1], sets);
   std::cerr << kUsage << '\n';
   return exit_bad_input;
 }

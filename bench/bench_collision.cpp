@@ -25,9 +25,10 @@ namespace {
 //   =================== box 0, top z = 0 ==================|[box 1: step]   (x = 1.0 ... 1.2)
 //   [box 2: side table, out of reach at (-0.8, 0.9)]
 Model arm(int elbows, int boxes) {
-  Model m = testing::planar_arm(
-      {{0.30, 1.2, 0.15, 0.01}, {0.25, 1.0, 0.12, 0.008}, {0.20, 0.7, 0.1, 0.004},
-       {0.15, 0.4, 0.07, 0.002}});
+  Model m = testing::planar_arm({{0.30, 1.2, 0.15, 0.01},
+                                 {0.25, 1.0, 0.12, 0.008},
+                                 {0.20, 0.7, 0.1, 0.004},
+                                 {0.15, 0.4, 0.07, 0.002}});
   m.base.translation() = Eigen::Vector3d(0, 0, 0.036);
   const int on_link[3][4] = {{1}, {1, 2}, {0, 1, 2, 3}};  // for 1, 2, 4 elbows
   for (int k = 0; k < elbows; ++k) {

@@ -40,8 +40,8 @@ class CollisionWorld {
 
   // One record per elbow: out[k] is elbow k against its nearest box. out is resized to
   // model.elbows.size() (once: the caller keeps it); no heap allocation after the first call.
-  // Distances are exact geometric distances (to ~1e-12 m) while the sphere centre is
-  // outside the box; deeper than the radius they come from EPA (see collision_bullet.cpp).
+  // While the sphere centre is outside the box (distance > -radius) the distance is exact to
+  // rounding (GJK); deeper, it comes from Bullet's iterative EPA (measured within 1e-11 m).
   void elbow_contacts(const Model& model, const Data& data, std::vector<ElbowContact>& out);
 
   // Link capsules deeper than model.contact.link_warning_depth in any box, one record per

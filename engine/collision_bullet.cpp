@@ -26,13 +26,14 @@
 // box (distance > -radius), the distance is exact to rounding.
 //
 // The btCollisionWorld (dispatcher, Dbvt broadphase) owns the objects and their poses; its
-// broadphase picks the link-box pairs worth a narrow-phase query. Elbow queries go to every
-// box instead, since the nearest box may be far away.
-#include <btBulletCollisionCommon.h>
+// broadphase picks the link-box pairs worth a narrow-phase query. Elbow queries cannot use
+// it (the nearest box may be far away): they try every box whose bounding sphere could still
+// beat the best distance found so far.
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
+#include <btBulletCollisionCommon.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -151,8 +152,8 @@ CollisionWorld::CollisionWorld(const Model& model) : impl_(std::make_unique<Impl
                          .toRotationMatrix()
                    : Eigen::Matrix3d::Identity();
     w.capsule_in_link.push_back(to_bt(R, 0.5 * link.tip));
-    w.add(std::make_unique<btCapsuleShapeX>(link.radius, length), btTransform::getIdentity(),
-          kLink, i, kLinkGroup, kTableGroup);
+    w.add(std::make_unique<btCapsuleShapeX>(link.radius, length), btTransform::getIdentity(), kLink,
+          i, kLinkGroup, kTableGroup);
   }
   // Table boxes with sharp edges (margin 0), fixed in the world.
   for (int b = 0; b < static_cast<int>(model.table.size()); ++b) {
@@ -185,8 +186,8 @@ void CollisionWorld::elbow_contacts(const Model& model, const Data& data,
     // is already farther than the best distance cannot win; it is skipped without GJK
     // (~0.3-0.5 us per query in Bullet).
     ElbowContact& contact = out[k];
-    contact = ElbowContact{k, -1, std::numeric_limits<double>::infinity(),
-                           Eigen::Vector3d::UnitZ(), Eigen::Vector3d::Zero()};
+    contact = ElbowContact{k, -1, std::numeric_limits<double>::infinity(), Eigen::Vector3d::UnitZ(),
+                           Eigen::Vector3d::Zero()};
     for (int b = 0; b < static_cast<int>(w.boxes.size()); ++b) {
       const double lower_bound = (centre - w.box_center[b]).norm() - w.box_reach[b] - elbow.radius;
       if (lower_bound >= contact.distance) continue;

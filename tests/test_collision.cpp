@@ -84,8 +84,8 @@ TEST_CASE("sphere centre inside the box: EPA still gives depth and normal") {
 }
 
 TEST_CASE("box rotated 30 degrees about x: distance along the tilted face normal") {
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(std::numbers::pi / 6, Eigen::Vector3d::UnitX())
-                                .toRotationMatrix();
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(std::numbers::pi / 6, Eigen::Vector3d::UnitX()).toRotationMatrix();
   const Eigen::Vector3d center(0.2, -0.1, -0.3);
   const TableBox table = box(center, {1.0, 0.8, 0.1}, R);
   const Eigen::Vector3d n = R * Eigen::Vector3d::UnitZ();

@@ -33,6 +33,8 @@ std::function<void(double)> terminal_progress() {
 
 void write_outputs(const Scenario& scenario, const RunResult& result,
                    const std::filesystem::path& folder) {
+  write_atomically(folder / "scenario.yaml",
+                   [&](std::ostream& out) { out << scenario.resolved_yaml; });
   if (scenario.output.trajectory)
     write_atomically(folder / "trajectory.csv",
                      [&](std::ostream& out) { write_trajectory_csv(out, result.trajectory); });

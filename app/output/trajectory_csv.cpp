@@ -1,7 +1,12 @@
 #include "app/output/trajectory_csv.hpp"
 
 #include <cstdio>
+#include <cstdlib>
+#include <istream>
 #include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace elbowsim {
 
@@ -20,6 +25,49 @@ void write_trajectory_csv(std::ostream& out, const Recording& recording) {
     }
     out << '\n';
   }
+}
+
+namespace {
+
+Column parse_header_cell(const std::string& cell) {
+  const auto open = cell.rfind(" [");
+  if (open == std::string::npos || cell.back() != ']') return {cell, ""};
+  return {cell.substr(0, open), cell.substr(open + 2, cell.size() - open - 3)};
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::size_t start = 0;
+  for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1)
+    cells.push_back(line.substr(start, comma - start));
+  cells.push_back(line.substr(start));
+  return cells;
+}
+
+}  // namespace
+
+Recording read_trajectory_csv(std::istream& in, const std::string& file) {
+  Recording rec;
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error(file + ": empty trajectory file");
+  for (const std::string& cell : split(line)) rec.columns.push_back(parse_header_cell(cell));
+  for (long number = 2; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
+    const std::vector<std::string> cells = split(line);
+    if (cells.size() != rec.columns.size())
+      throw std::runtime_error(file + ":" + std::to_string(number) + ": expected " +
+                               std::to_string(rec.columns.size()) + " values, got " +
+                               std::to_string(cells.size()));
+    for (const std::string& cell : cells) {
+      char* end = nullptr;
+      const double v = std::strtod(cell.c_str(), &end);
+      if (end == cell.c_str() || *end != '\0')
+        throw std::runtime_error(file + ":" + std::to_string(number) + ": not a number: \"" +
+                                 cell + "\"");
+      rec.values.push_back(v);
+    }
+  }
+  return rec;
 }
 
 }  // namespace elbowsim

@@ -24,6 +24,10 @@ struct Scenario {
   std::string description;
   Model model;  // finalized (elbowsim::finalize called); model.initial from `initial:`
   OutputSettings output;
+  // The scenario as run: the file's YAML with the overrides applied. A run
+  // folder keeps it (scenario.yaml) so renders and reports can rebuild the
+  // model without the original file.
+  std::string resolved_yaml;
 };
 
 // An error in a scenario. what() reads "file:line:column: key.path: message";

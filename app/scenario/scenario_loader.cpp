@@ -114,7 +114,11 @@ Scenario load_scenario_text(const std::string& text, const std::string& file_nam
   loader::Source source(file_name);
   YAML::Node root = loader::parse(text, file_name);
   for (const std::string& o : overrides) loader::apply_override(root, o, source);
-  return loader::read(loader::Value(source, root), file_name);
+  Scenario scenario = loader::read(loader::Value(source, root), file_name);
+  YAML::Emitter resolved;
+  resolved << root;
+  scenario.resolved_yaml = std::string(resolved.c_str()) + "\n";
+  return scenario;
 }
 
 Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides) {
