@@ -115,8 +115,9 @@ struct CollisionWorld::Impl {
   btVoronoiSimplexSolver simplex;
   btGjkEpaPenetrationDepthSolver epa;
 
-  btCollisionObject& add(std::unique_ptr<btConvexShape> shape, const btTransform& pose, Kind kind,
-                         int index, int group, int mask) {
+  // Adds one object to the world; only objects whose group and mask match make broadphase pairs.
+  void add(std::unique_ptr<btConvexShape> shape, const btTransform& pose, Kind kind, int index,
+           int group, int mask) {
     auto object = std::make_unique<btCollisionObject>();
     object->setCollisionShape(shape.get());
     object->setWorldTransform(pose);
@@ -125,9 +126,7 @@ struct CollisionWorld::Impl {
     if (kind == kBox) object->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
     world.addCollisionObject(object.get(), group, mask);
     shapes.push_back(std::move(shape));
-    auto& list = kind == kElbow ? elbows : kind == kLink ? links : boxes;
-    list.push_back(std::move(object));
-    return *list.back();
+    (kind == kElbow ? elbows : kind == kLink ? links : boxes).push_back(std::move(object));
   }
 
   ~Impl() {

@@ -7,32 +7,59 @@ namespace elbowsim {
 
 namespace {
 
-// f = A^+ rhs with a complete orthogonal decomposition: exact for
-// independent rows, minimum-norm when rows are dependent.
+// f = A^-1 rhs. Cholesky (LU with friction, A is then not symmetric) while
+// the smallest pivot stays above rank_tolerance relative to the largest;
+// below it the rows are dependent, and a complete orthogonal decomposition
+// gives the minimum-norm f.
 void rank_revealing_solve(const Model& model, Data& data) {
   ContactData& c = data.contact;
+  const double tol = model.contact.rank_tolerance;
+  bool independent;
+  if (model.effects.friction) {
+    c.A_lu.compute(c.A);
+    const auto pivots = c.A_lu.matrixLU().diagonal().cwiseAbs();
+    independent = pivots.minCoeff() > tol * pivots.maxCoeff();
+    if (independent) c.fn = c.A_lu.solve(c.rhs);
+  } else {
+    c.A_llt.compute(c.A);
+    const auto pivots = c.A_llt.matrixLLT().diagonal().cwiseAbs2();
+    independent = c.A_llt.info() == Eigen::Success && pivots.minCoeff() > tol * pivots.maxCoeff();
+    if (independent) {
+      c.fn = c.rhs;
+      c.A_llt.solveInPlace(c.fn);
+    }
+  }
+  c.dependent = !independent;
+  if (independent) return;
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(c.A);
-  cod.setThreshold(model.contact.rank_tolerance);
-  c.dependent = cod.rank() < c.A.rows();
+  cod.setThreshold(tol);
   c.fn = cod.solve(c.rhs);
 }
 
-// Schur complement: with M = L L^T, Y = L^-1 Jc^T, Z = L^-1 Jf^T,
-// A = Y^T Z, f = A^-1 (gamma - Jc a_free), qdd = a_free + L^-T Z f.
+// Schur complement. With M = L L^T, w = L^-1 (tau - B_J), Y = L^-1 Jc^T and
+// Z = L^-1 Jf^T: A = Y^T Z, f = A^-1 (gamma - Y^T w), qdd = L^-T (w + Z f).
+// Three triangular solves and one p x p factorisation.
 void schur(const Model& model, Data& data, ConstVec tau) {
   ContactData& c = data.contact;
   data.llt.compute(data.mass_matrix);
-  c.a_free = tau - data.bias;
-  data.llt.solveInPlace(c.a_free);
   const auto L = data.llt.matrixL();
-  c.Y = L.solve(c.Jc.transpose());
-  c.Z = model.effects.friction ? Eigen::MatrixXd(L.solve(c.Jf.transpose())) : c.Y;
-  c.A = c.Y.transpose() * c.Z;
-  c.rhs = c.gamma - c.Jc * c.a_free;
+  c.a_free = tau - data.bias;  // becomes w
+  L.solveInPlace(c.a_free);
+  c.Y = c.Jc.transpose();
+  L.solveInPlace(c.Y);
+  const Eigen::MatrixXd* Z = &c.Y;  // without friction Jf = Jc
+  if (model.effects.friction) {
+    c.Z = c.Jf.transpose();
+    L.solveInPlace(c.Z);
+    Z = &c.Z;
+  }
+  c.A.noalias() = c.Y.transpose() * *Z;
+  c.rhs = c.gamma;
+  c.rhs.noalias() -= c.Y.transpose() * c.a_free;
   rank_revealing_solve(model, data);
-  data.qdd = c.Z * c.fn;
+  data.qdd = c.a_free;
+  data.qdd.noalias() += *Z * c.fn;
   data.llt.matrixU().solveInPlace(data.qdd);
-  data.qdd += c.a_free;
 }
 
 void dense_lu(Data& data, ConstVec tau) {
@@ -71,9 +98,9 @@ void solve_constrained(const Model& model, Data& data, ConstVec tau, ConstraintS
 
 void contact_lcp_terms(const Model& model, Data& data, ConstVec tau, Eigen::MatrixXd& A,
                        Eigen::VectorXd& b) {
-  schur(model, data, tau);  // leaves A, a_free
+  schur(model, data, tau);  // leaves A and rhs = gamma - Jc qdd_free
   A = data.contact.A;
-  b = data.contact.Jc * data.contact.a_free - data.contact.gamma;
+  b = -data.contact.rhs;
 }
 
 }  // namespace elbowsim

@@ -17,6 +17,9 @@ void resize_rows(Data& data, int p, int n) {
   c.fn = Eigen::VectorXd::Zero(p);
   c.slide.resize(p);
   c.rhs.resize(p);
+  c.Y.resize(n, p);
+  c.Z.resize(n, p);
+  c.A.resize(p, p);
 }
 
 // Friction part of row r: -mu t^T J_p at the contact point under the sphere.

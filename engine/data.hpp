@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 #include <Eigen/Core>
 #include <vector>
 
@@ -50,6 +51,8 @@ struct ContactData {
   Eigen::VectorXd slide;   // [p] sliding speed of each contact point [m/s]
   Eigen::MatrixXd Y, Z, A;       // scratch: L^-1 Jc^T, L^-1 Jf^T, Jc M^-1 Jf^T
   Eigen::VectorXd a_free, rhs;   // scratch [n], [p]
+  Eigen::LLT<Eigen::MatrixXd> A_llt;         // A without friction (symmetric)
+  Eigen::PartialPivLU<Eigen::MatrixXd> A_lu;  // A with friction
   Matrix3Xd J3;                  // scratch point Jacobian [3 x n]
   bool dependent = false;        // last solve met dependent rows
   double impact_loss = 0;        // [J] kinetic energy lost in impacts so far

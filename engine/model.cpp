@@ -82,6 +82,29 @@ void check_link(const Link& link, int i) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(link.inertia);
   require(link.inertia.isApprox(link.inertia.transpose()) && eig.eigenvalues().minCoeff() > 0,
           at("links", i) + ".inertia must be symmetric positive definite");
+  // A rigid body's principal moments satisfy I_a + I_b >= I_c.
+  const Eigen::Vector3d I = eig.eigenvalues();
+  require(I[0] + I[1] >= I[2] * (1 - 1e-12),
+          at("links", i) + ".inertia violates the triangle inequality of principal moments");
+  require(link.radius > 0, at("links", i) + ".radius must be > 0");
+}
+
+void check_contact_scene(const Model& model) {
+  for (std::size_t k = 0; k < model.elbows.size(); ++k) {
+    const Elbow& e = model.elbows[k];
+    require(e.link >= 0 && e.link < model.dof, at("elbows", int(k)) + ".link out of range");
+    require(e.radius > 0, at("elbows", int(k)) + ".radius must be > 0");
+  }
+  for (std::size_t b = 0; b < model.table.size(); ++b)
+    require((model.table[b].size.array() > 0).all(), at("table", int(b)) + ".size must be > 0");
+  const ContactOptions& c = model.contact;
+  require(c.restitution >= 0 && c.restitution <= 1, "contact.restitution must be in [0, 1]");
+  require(c.friction >= 0, "contact.friction must be >= 0");
+  require(c.rank_tolerance > 0 && c.rank_tolerance < 1, "contact.rank_tolerance must be in (0, 1)");
+  require(c.baumgarte_time > 0 && c.slip_velocity > 0 && c.locate_tolerance > 0,
+          "contact tolerances must be > 0");
+  if (!model.effects.contact) return;
+  require(!model.elbows.empty() && !model.table.empty(), "contact needs elbows and a table");
 }
 
 void check_motor(const Motor& m, int i, MotorModel model) {
@@ -120,6 +143,8 @@ void finalize(Model& model) {
     check_link(model.links[i], i);
     if (model.has_motor()) check_motor(model.motors[i], i, model.effects.motor);
   }
+  check_contact_scene(model);
+  require(!model.effects.friction || model.effects.contact, "friction needs contact");
   if (model.damping.size() == 0) model.damping = Eigen::VectorXd::Zero(n);
 
   // Reflected motor constants (DESIGN.md §1): Km = K k, Jm = Im k^2, Dm = dm k^2.

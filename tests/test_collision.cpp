@@ -191,7 +191,8 @@ TEST_CASE("a link capsule pushed into the table is reported with its depth") {
   //   ====================\==========  table top z = -0.03
   //                        \ link 1 (0.4 m), tip at z = -0.4 sin(theta)
   Model m = elbowsim::testing::planar_arm({{0.3, 1, 0.15, 0.01}, {0.4, 1, 0.2, 0.01}});
-  m.table = {box({0.5, 0, -0.28}, {2, 2, 0.5})};
+  // Box 0 is a side table out of reach, so the record must name box 1.
+  m.table = {box({-2, 2, -0.1}, {0.5, 0.5, 0.1}), box({0.5, 0, -0.28}, {2, 2, 0.5})};
   finalize(m);
   REQUIRE(m.contact.link_warning_depth == 0.005);
   Data data(m);
@@ -211,14 +212,14 @@ TEST_CASE("a link capsule pushed into the table is reported with its depth") {
     const auto p = penetrations(std::asin(0.045));  // depth 0.008
     REQUIRE(p.size() == 1);
     CHECK(p[0].link == 1);
-    CHECK(p[0].box == 0);
+    CHECK(p[0].box == 1);
     CHECK(approx(p[0].depth, 0.008, kExact));
   }
   SUBCASE("tip through the top (EPA): depth 0.17 + 0.02") {
     const auto p = penetrations(std::numbers::pi / 6);  // tip at z = -0.2
     REQUIRE(p.size() == 1);
     CHECK(p[0].link == 1);
-    CHECK(p[0].box == 0);
+    CHECK(p[0].box == 1);
     CHECK(approx(p[0].depth, 0.19, kExact));
   }
   SUBCASE("moving back out clears the report") {

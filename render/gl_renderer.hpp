@@ -1,0 +1,58 @@
+// Draws abstract scenes (scene.hpp) with OpenGL 3.3 core into framebuffer
+// objects and reads the frames back. Needs a current context (OsmesaContext).
+//
+// Each frame: begin_frame clears; draw() renders one scene into a viewport
+// (several viewports make side-by-side panels); end_frame resolves the
+// multisampled buffer into a single-sample one (glBlitFramebuffer) and starts
+// reading it into a pixel-buffer object; fetch() copies a read frame out.
+// Up to two frames may be pending, so frame k can be fetched while frame k+1
+// is drawn.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+
+#include "render/camera.hpp"
+#include "render/scene.hpp"
+
+namespace elbowsim {
+
+// A rectangle of the frame in pixels, from the top-left corner.
+struct Viewport {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
+class GlRenderer {
+ public:
+  // width x height [px]; msaa: requested samples per pixel (1 = off, 2, 4),
+  // capped at what the driver offers. Compiles the shaders, tessellates the
+  // unit shapes into vertex buffers and makes the framebuffers. Throws
+  // std::runtime_error on any GL failure.
+  GlRenderer(int width, int height, int msaa);
+  ~GlRenderer();
+  GlRenderer(const GlRenderer&) = delete;
+  GlRenderer& operator=(const GlRenderer&) = delete;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  int samples() const { return samples_; }  // samples per pixel in use
+
+  void begin_frame(const Color& background);
+  void draw(const Scene& scene, const Camera& camera, const Viewport& viewport);
+  // Resolves and starts the read-back; at most two frames may be pending.
+  void end_frame();
+  // Copies the oldest pending frame into rgba (width * height * 4 bytes, RGBA,
+  // rows bottom-up as GL stores them). Returns false if none is pending.
+  bool fetch(std::uint8_t* rgba);
+  int pending() const { return int(pending_.size()); }
+
+ private:
+  struct Gl;  // GL object names and per-shape instance lists (gl_renderer.cpp)
+  std::unique_ptr<Gl> gl_;
+  int width_, height_, samples_ = 1;
+  std::deque<int> pending_;  // pixel-buffer objects holding frames not yet fetched
+  int next_pbo_ = 0;
+};
+
+}  // namespace elbowsim

@@ -1,0 +1,129 @@
+#include "render/playback.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace elbowsim {
+
+namespace {
+
+// The values of a named column, or empty if the recording has none.
+std::vector<double> column(const Recording& rec, const std::string& name, std::size_t rows) {
+  const int c = rec.column(name);
+  std::vector<double> out;
+  if (c < 0) return out;
+  out.reserve(rows);
+  for (std::size_t r = 0; r < rows; ++r) out.push_back(rec.at(r, std::size_t(c)));
+  return out;
+}
+
+std::vector<double> required(const Recording& rec, const std::string& name, std::size_t rows,
+                             const std::string& why) {
+  if (rec.column(name) < 0)
+    throw std::invalid_argument("the trajectory has no column \"" + name + "\"" + why);
+  return column(rec, name, rows);
+}
+
+// Rows up to (not including) the first one with a non-finite value.
+std::size_t finite_rows(const Recording& rec) {
+  for (std::size_t r = 0; r < rec.rows(); ++r)
+    for (std::size_t c = 0; c < rec.columns.size(); ++c)
+      if (!std::isfinite(rec.at(r, c))) return r;
+  return rec.rows();
+}
+
+// Times at which a 0/1 column turns from 0 to 1.
+std::vector<double> rising_edges(const std::vector<double>& flag, const std::vector<double>& time) {
+  std::vector<double> out;
+  for (std::size_t r = 1; r < flag.size(); ++r)
+    if (flag[r] > 0.5 && flag[r - 1] <= 0.5) out.push_back(time[r]);
+  return out;
+}
+
+}  // namespace
+
+Playback::Playback(const Model& model, const Recording& rec) : dof_(model.dof) {
+  const std::size_t rows = finite_rows(rec);
+  time_ = required(rec, "time", rows, "");
+  if (time_.empty()) throw std::invalid_argument("the trajectory has no (finite) samples");
+  const std::string why = " (the model has " + std::to_string(dof_) + " joints)";
+  for (int j = 0; j < dof_; ++j) q_.push_back(required(rec, "q" + std::to_string(j), rows, why));
+  for (const char* axis : {"hand_x", "hand_y", "hand_z"}) hand_.push_back(column(rec, axis, rows));
+  if (hand_[0].empty() || hand_[1].empty() || hand_[2].empty()) hand_.clear();
+  for (const Elbow& e : model.elbows) {
+    fn_.push_back(column(rec, "fn_" + e.name, rows));
+    rest_.push_back(column(rec, "rest_" + e.name, rows));
+    landings_.push_back(rising_edges(rest_.back(), time_));
+  }
+  energy_in_ = column(rec, "E_in", rows);
+  // Hand path: drop samples closer than 1 mm to the last kept one.
+  for (std::size_t r = 0; !hand_.empty() && r < rows; ++r) {
+    const Eigen::Vector3d p(hand_[0][r], hand_[1][r], hand_[2][r]);
+    if (path_rows_.empty()) {
+      path_rows_.push_back(r);
+      continue;
+    }
+    const std::size_t k = path_rows_.back();
+    if ((p - Eigen::Vector3d(hand_[0][k], hand_[1][k], hand_[2][k])).norm() >= 1e-3)
+      path_rows_.push_back(r);
+  }
+}
+
+Playback::Bracket Playback::bracket(double t) const {
+  if (t <= time_.front() || time_.size() == 1) return {0, 0};
+  if (t >= time_.back()) return {time_.size() - 1, 0};
+  // Last row with time <= t (rows may repeat a time at events).
+  const auto it = std::upper_bound(time_.begin(), time_.end(), t);
+  const std::size_t row = std::size_t(it - time_.begin()) - 1;
+  const double span = time_[row + 1] - time_[row];
+  return {row, span > 0 ? (t - time_[row]) / span : 0.0};
+}
+
+double Playback::lerp(const std::vector<double>& c, const Bracket& b) const {
+  if (b.alpha == 0) return c[b.row];
+  return (1 - b.alpha) * c[b.row] + b.alpha * c[b.row + 1];
+}
+
+PlaybackState Playback::at(double t) const {
+  const Bracket b = bracket(t);
+  PlaybackState s;
+  s.t = std::clamp(t, time_.front(), time_.back());
+  s.q.resize(dof_);
+  for (int j = 0; j < dof_; ++j) s.q[j] = lerp(q_[j], b);
+  if (!hand_.empty()) s.hand = Eigen::Vector3d(lerp(hand_[0], b), lerp(hand_[1], b), lerp(hand_[2], b));
+  for (std::size_t k = 0; k < fn_.size(); ++k) {
+    ElbowSample e;
+    if (!fn_[k].empty()) e.fn = lerp(fn_[k], b);
+    if (!rest_[k].empty()) e.resting = rest_[k][b.row] > 0.5;
+    for (double landed : landings_[k])
+      if (landed <= s.t) e.landed_at = landed;
+    s.elbows.push_back(e);
+  }
+  if (!energy_in_.empty()) s.energy_in = lerp(energy_in_, b);
+  return s;
+}
+
+Eigen::VectorXd Playback::q(std::size_t row) const {
+  Eigen::VectorXd out(dof_);
+  for (int j = 0; j < dof_; ++j) out[j] = q_[j][row];
+  return out;
+}
+
+std::vector<Eigen::Vector3d> Playback::hand_path(double t) const {
+  std::vector<Eigen::Vector3d> path;
+  if (hand_.empty()) return path;
+  for (std::size_t r : path_rows_) {
+    if (time_[r] > t) break;
+    path.emplace_back(hand_[0][r], hand_[1][r], hand_[2][r]);
+  }
+  const Bracket b = bracket(t);
+  path.emplace_back(lerp(hand_[0], b), lerp(hand_[1], b), lerp(hand_[2], b));
+  return path;
+}
+
+int frame_count(double duration, double fps) {
+  return static_cast<int>(std::floor(std::max(duration, 0.0) * fps + 1e-9)) + 1;
+}
+
+}  // namespace elbowsim

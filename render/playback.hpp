@@ -1,0 +1,79 @@
+// A recorded run played back at any time: the columns the renderer draws,
+// interpolated linearly between recorded samples (trajectory.csv or the
+// Recording in memory). Frames are sampled by simulation time, independent of
+// the physics step and of output.every.
+#pragma once
+
+#include <Eigen/Core>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/model.hpp"
+#include "engine/recording.hpp"
+
+namespace elbowsim {
+
+struct ElbowSample {
+  double fn = 0;         // [N] normal force, linear between samples (0 if not recorded)
+  bool resting = false;  // held from the sample at or before t (rest_<name>)
+  // [s] time of the last touchdown (rest 0 -> 1 between samples) at or before t;
+  // -inf if none. An elbow resting from t = 0 has not landed.
+  double landed_at = -std::numeric_limits<double>::infinity();
+};
+
+struct PlaybackState {
+  double t = 0;                                      // [s]
+  Eigen::VectorXd q;                                 // [dof] joint angles [rad]
+  std::optional<Eigen::Vector3d> hand;               // [m] world, if recorded
+  std::vector<ElbowSample> elbows;                   // [model.elbows]
+  std::optional<double> energy_in;                   // [J] E_in so far, if recorded
+};
+
+class Playback {
+ public:
+  // Needs columns time and q0..q<dof-1>; uses hand_x/y/z, fn_/rest_<elbow>
+  // and E_in when present. Rows after the first non-finite value are dropped
+  // (a diverged run). Throws std::invalid_argument naming a missing column or
+  // an empty recording.
+  Playback(const Model& model, const Recording& recording);
+
+  double start_time() const { return time_.front(); }  // [s]
+  double end_time() const { return time_.back(); }     // [s]
+  std::size_t samples() const { return time_.size(); }
+  double time(std::size_t row) const { return time_[row]; }
+
+  // The state at time t [s], clamped to the recorded span.
+  PlaybackState at(double t) const;
+  // Joint angles of recorded row `row` [rad].
+  Eigen::VectorXd q(std::size_t row) const;
+  // The hand's path from the start up to t: recorded hand positions at least
+  // 1 mm apart, ending with the interpolated position at t. Empty if the hand
+  // was not recorded.
+  std::vector<Eigen::Vector3d> hand_path(double t) const;
+
+ private:
+  struct Bracket {
+    std::size_t row;  // sample at or before t
+    double alpha;     // weight of row + 1, in [0, 1)
+  };
+  Bracket bracket(double t) const;
+  double lerp(const std::vector<double>& column, const Bracket& b) const;
+
+  int dof_;
+  std::vector<double> time_;
+  std::vector<std::vector<double>> q_;        // [dof][rows]
+  std::vector<std::vector<double>> hand_;     // [3][rows] or empty
+  std::vector<std::vector<double>> fn_;       // [elbows][rows] (empty column: not recorded)
+  std::vector<std::vector<double>> rest_;     // [elbows][rows]
+  std::vector<std::vector<double>> landings_; // [elbows] touchdown times
+  std::vector<double> energy_in_;             // [rows] or empty
+  std::vector<std::size_t> path_rows_;        // rows kept for hand_path
+};
+
+// Number of frames for `duration` [s] at `fps`: one at t = 0 and one every
+// 1/fps up to and including the end, floor(duration fps) + 1.
+int frame_count(double duration, double fps);
+
+}  // namespace elbowsim

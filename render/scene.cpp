@@ -1,0 +1,170 @@
+#include "render/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/data.hpp"
+#include "engine/kinematics.hpp"
+
+namespace elbowsim {
+
+namespace {
+
+// Proportions of the drawn parts, relative to the link radius r.
+constexpr double kHousingRadius = 1.3;   // joint housing radius / r
+constexpr double kHousingLength = 2.6;   // joint housing length / r
+constexpr double kBasePlate = 5.0;       // base plate edge / r
+constexpr double kBaseThickness = 1.0;   // base plate thickness / r
+constexpr double kArrowRadius = 0.18;    // arrow shaft radius / elbow radius
+constexpr double kPathRadius = 0.002;    // [m] hand path tube radius
+
+Eigen::Vector3d world_up(const Model& model) {
+  const double g = model.gravity.norm();
+  return g > 0 ? Eigen::Vector3d(-model.gravity / g) : Eigen::Vector3d::UnitZ();
+}
+
+// Distance from a point to a (rotated) box; 0 inside.
+double distance_to_box(const TableBox& box, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d local = box.rotation.transpose() * (p - box.center);
+  const Eigen::Vector3d outside = (local.cwiseAbs() - 0.5 * box.size).cwiseMax(0.0);
+  return outside.norm();
+}
+
+// Unit vectors orthogonal to n (n unit).
+Eigen::Matrix3d frame_with_z(const Eigen::Vector3d& n) {
+  const Eigen::Vector3d helper =
+      std::abs(n.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d x = helper.cross(n).normalized();
+  Eigen::Matrix3d r;
+  r << x, n.cross(x), n;
+  return r;
+}
+
+// A plate behind joint 0: its normal along the joint axis, on the side the
+// axis points away from (for a planar arm, behind the arm as seen from the front).
+Box base_plate(const Model& model, const Data& data, const SceneStyle& style) {
+  const double r = model.links.empty() ? 0.02 : model.links[0].radius;
+  const Eigen::Vector3d axis = data.axis.empty() ? Eigen::Vector3d::UnitZ() : data.axis[0];
+  const Eigen::Vector3d origin = data.origin.empty() ? model.base.translation() : data.origin[0];
+  Box plate;
+  plate.rotation = frame_with_z(axis);
+  plate.size = Eigen::Vector3d(kBasePlate * r, kBasePlate * r, kBaseThickness * r);
+  plate.center = origin - axis * (0.5 * kHousingLength * r + 0.5 * plate.size.z());
+  plate.color = style.base;
+  return plate;
+}
+
+void add_links(const Model& model, const Data& data, Scene& scene, const SceneStyle& style) {
+  for (int i = 0; i < model.dof; ++i) {
+    const Link& link = model.links[std::size_t(i)];
+    scene.links.push_back(
+        {data.origin[i], point_position(data, i, link.tip), link.radius, style.link});
+    const Eigen::Vector3d half = 0.5 * kHousingLength * link.radius * data.axis[i];
+    scene.joints.push_back({data.origin[i] - half, data.origin[i] + half,
+                            kHousingRadius * link.radius, style.joint});
+  }
+}
+
+ElbowState elbow_state(const ElbowSample& e, double t, double window) {
+  if (!e.resting) return ElbowState::free;
+  return t - e.landed_at <= window ? ElbowState::landed : ElbowState::resting;
+}
+
+Color elbow_color(ElbowState state, const SceneStyle& style) {
+  switch (state) {
+    case ElbowState::free: return style.elbow_free;
+    case ElbowState::resting: return style.elbow_resting;
+    case ElbowState::landed: return style.elbow_landed;
+  }
+  return style.elbow_free;
+}
+
+// Elbow spheres coloured by state, and at each resting elbow pushed by the
+// table an arrow from the top of the sphere along the table normal, of length
+// fn * force_scale.
+void add_elbows(const Model& model, const Data& data, const PlaybackState& state, Scene& scene,
+                const SceneOptions& options) {
+  for (std::size_t k = 0; k < model.elbows.size(); ++k) {
+    const Elbow& elbow = model.elbows[k];
+    const ElbowSample sample = k < state.elbows.size() ? state.elbows[k] : ElbowSample{};
+    const ElbowState s = elbow_state(sample, state.t, options.landed_window);
+    const Eigen::Vector3d centre = point_position(data, elbow.link, elbow.point);
+    scene.elbows.push_back({{centre, elbow.radius, elbow_color(s, options.style)}, s});
+    const double length = sample.fn * options.force_scale;
+    if (s == ElbowState::free || length <= 0) continue;
+    const Eigen::Vector3d n = table_up(model, centre);
+    const Eigen::Vector3d tail = centre + elbow.radius * n;
+    scene.forces.push_back({tail, tail + length * n, std::max(kArrowRadius * elbow.radius, 0.002),
+                            options.style.force, int(k), sample.fn});
+  }
+}
+
+LineSet grid(const SceneOptions& options) {
+  LineSet lines{{}, options.style.grid};
+  const Eigen::AlignedBox2d& a = options.grid_area;
+  if (a.isEmpty() || options.grid_spacing <= 0) return lines;
+  const double h = options.grid_spacing, z = options.floor_z;
+  for (double x = std::ceil(a.min().x() / h) * h; x <= a.max().x() + 1e-9; x += h)
+    lines.points.insert(lines.points.end(), {{x, a.min().y(), z}, {x, a.max().y(), z}});
+  for (double y = std::ceil(a.min().y() / h) * h; y <= a.max().y() + 1e-9; y += h)
+    lines.points.insert(lines.points.end(), {{a.min().x(), y, z}, {a.max().x(), y, z}});
+  return lines;
+}
+
+}  // namespace
+
+Eigen::Vector3d table_up(const Model& model, const Eigen::Vector3d& point) {
+  const Eigen::Vector3d up = world_up(model);
+  if (model.table.empty()) return up;
+  const TableBox* nearest = &model.table.front();
+  for (const TableBox& box : model.table)
+    if (distance_to_box(box, point) < distance_to_box(*nearest, point)) nearest = &box;
+  // The face normal (+-column of the rotation) most aligned with up.
+  Eigen::Vector3d best = nearest->rotation.col(2);
+  for (int i = 0; i < 3; ++i)
+    for (double sign : {1.0, -1.0}) {
+      const Eigen::Vector3d n = sign * nearest->rotation.col(i);
+      if (n.dot(up) > best.dot(up)) best = n;
+    }
+  return best;
+}
+
+Scene build_scene(const Model& model, const PlaybackState& state,
+                  const std::vector<Eigen::Vector3d>& hand_path, const SceneOptions& options) {
+  const SceneStyle& style = options.style;
+  Data data(model);
+  forward_kinematics(model, data, state.q);
+  Scene scene;
+  scene.background = style.background;
+  for (const TableBox& box : model.table)
+    scene.table.push_back({box.center, box.rotation, box.size, style.table});
+  scene.base = base_plate(model, data, style);
+  add_links(model, data, scene, style);
+  add_elbows(model, data, state, scene, options);
+  scene.hand_path = {hand_path, kPathRadius, style.hand_path};
+  scene.grid = grid(options);
+  return scene;
+}
+
+Eigen::AlignedBox3d box_bounds(const Box& box) {
+  Eigen::AlignedBox3d out;
+  const Eigen::Vector3d half = 0.5 * (box.rotation.cwiseAbs() * box.size);
+  out.extend(box.center - half);
+  out.extend(box.center + half);
+  return out;
+}
+
+Eigen::AlignedBox3d arm_bounds(const Scene& scene) {
+  Eigen::AlignedBox3d out = box_bounds(scene.base);
+  auto add = [&out](const Eigen::Vector3d& p, double r) {
+    out.extend(p - Eigen::Vector3d::Constant(r));
+    out.extend(p + Eigen::Vector3d::Constant(r));
+  };
+  for (const Capsule& c : scene.links) add(c.a, c.radius), add(c.b, c.radius);
+  for (const Cylinder& c : scene.joints) add(c.a, c.radius), add(c.b, c.radius);
+  for (const ElbowMarker& e : scene.elbows) add(e.sphere.center, e.sphere.radius);
+  for (const Arrow& a : scene.forces) add(a.tip, a.radius);
+  return out;
+}
+
+}  // namespace elbowsim

@@ -1,0 +1,124 @@
+// The abstract scene of one frame: what to draw, where, in which colour, with
+// no GL (STYLE.md lesson 12, after MuJoCo's mjv_updateScene). Built from the
+// Model and one played-back state; gl_renderer.hpp draws it, tests read it.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "engine/model.hpp"
+#include "render/playback.hpp"
+
+namespace elbowsim {
+
+struct Color {
+  float r = 0, g = 0, b = 0;  // display RGB, each in [0, 1]
+};
+
+// Box with edge lengths `size` in its own frame, centred and rotated.
+struct Box {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();        // [m] world
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // box frame -> world
+  Eigen::Vector3d size = Eigen::Vector3d::Ones();          // [m] full edge lengths
+  Color color;
+};
+
+struct Sphere {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // [m] world
+  double radius = 0;                                 // [m]
+  Color color;
+};
+
+// A segment a-b swept by a sphere of `radius` (a link).
+struct Capsule {
+  Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero();  // [m] world
+  double radius = 0;                                                         // [m]
+  Color color;
+};
+
+// A solid, capped cylinder from a to b (a joint housing).
+struct Cylinder {
+  Eigen::Vector3d a = Eigen::Vector3d::Zero(), b = Eigen::Vector3d::Zero();  // [m] world
+  double radius = 0;                                                         // [m]
+  Color color;
+};
+
+// An arrow from tail to tip (shaft and cone head); its length |tip - tail|
+// is the force times SceneOptions::force_scale.
+struct Arrow {
+  Eigen::Vector3d tail = Eigen::Vector3d::Zero(), tip = Eigen::Vector3d::Zero();  // [m] world
+  double radius = 0;  // [m] of the shaft
+  Color color;
+  int elbow = -1;       // index into Model::elbows
+  double force = 0;     // [N]
+};
+
+// A polyline drawn as a thin tube.
+struct Polyline {
+  std::vector<Eigen::Vector3d> points;  // [m] world
+  double radius = 0;                    // [m]
+  Color color;
+};
+
+// Thin lines (1 px): each pair of points is one segment.
+struct LineSet {
+  std::vector<Eigen::Vector3d> points;  // [m] world, 2 per segment
+  Color color;
+};
+
+enum class ElbowState { free, resting, landed };  // landed: resting, touched down recently
+
+struct ElbowMarker {
+  Sphere sphere;
+  ElbowState state = ElbowState::free;
+};
+
+struct SceneStyle {
+  Color background{0.93f, 0.94f, 0.96f};
+  Color table{0.72f, 0.53f, 0.33f};
+  Color base{0.32f, 0.33f, 0.36f};
+  Color link{0.25f, 0.45f, 0.75f};
+  Color joint{0.20f, 0.21f, 0.24f};
+  Color elbow_free{0.80f, 0.80f, 0.80f};
+  Color elbow_resting{0.15f, 0.70f, 0.30f};
+  Color elbow_landed{0.98f, 0.55f, 0.05f};
+  Color force{0.85f, 0.12f, 0.15f};
+  Color hand_path{0.60f, 0.20f, 0.70f};
+  Color grid{0.70f, 0.72f, 0.76f};
+};
+
+struct SceneOptions {
+  double force_scale = 0.01;    // [m/N] arrow length per newton of normal force
+  double landed_window = 0.1;   // [s] an elbow that touched down this recently is "landed"
+  double floor_z = 0;           // [m] height of the ground grid
+  Eigen::AlignedBox2d grid_area;  // [m] x-y extent of the grid; empty: no grid
+  double grid_spacing = 0.1;    // [m]
+  SceneStyle style;
+};
+
+struct Scene {
+  Color background;
+  std::vector<Box> table;             // [table boxes]
+  Box base;                           // plate behind joint 0, normal along its axis
+  std::vector<Capsule> links;         // [dof] joint origin -> tip, link radius
+  std::vector<Cylinder> joints;       // [dof] housing at each joint origin, along its axis
+  std::vector<ElbowMarker> elbows;    // [model elbows]
+  std::vector<Arrow> forces;          // one per resting elbow with fn > 0
+  Polyline hand_path;                 // traced hand positions up to now
+  LineSet grid;                       // ground grid at floor_z
+};
+
+// The scene of `state` (joint angles placed with forward_kinematics on a Data
+// made here), with the traced `hand_path` (Playback::hand_path).
+Scene build_scene(const Model& model, const PlaybackState& state,
+                  const std::vector<Eigen::Vector3d>& hand_path, const SceneOptions& options);
+
+// Axis-aligned bounds of the arm: links, joints, elbows, base and forces [m].
+Eigen::AlignedBox3d arm_bounds(const Scene& scene);
+// Bounds of a box (any rotation) [m].
+Eigen::AlignedBox3d box_bounds(const Box& box);
+
+// The table's outward normal at the top (the box face most aligned with -gravity).
+Eigen::Vector3d table_up(const Model& model, const Eigen::Vector3d& point);
+
+}  // namespace elbowsim
