@@ -32,9 +32,9 @@ void prepare_mechanics(const Model& model, Data& data) {
   const StateLayout s(model);
   const auto qd = data.x.segment(s.qd(), s.n);
   if (s.current >= 0)
-    motor_stage(model, data, data.t, qd, data.x.segment(s.current, s.n));
+    motor_stage(model, data, data.t, data.x.segment(s.q(), s.n), qd, data.x.segment(s.current, s.n));
   else
-    motor_stage(model, data, data.t, qd, data.current);
+    motor_stage(model, data, data.t, data.x.segment(s.q(), s.n), qd, data.current);
   if (model.options.dynamics == DynamicsMethod::walker_orin)
     mass_matrix_walker_orin(model, data);
   else

@@ -19,6 +19,7 @@ Data::Data(const Model& model) {
   articulated_inertia = spatial_inertia;
   motion_subspace.assign(un, Vector6d::Zero());
   velocity = bias_acc = bias_force = acc = U = motion_subspace;
+  q_desired = qd_desired = v_feedforward = Eigen::VectorXd::Zero(n);
   const auto elbows = model.elbows.size();
   contact.resting.assign(elbows, false);
   contact.normal.assign(elbows, Eigen::Vector3d::UnitZ());

@@ -6,6 +6,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 #include <Eigen/Core>
+#include <memory>
 #include <vector>
 
 #include "model.hpp"
@@ -32,6 +33,7 @@ struct EnergyTerms {
   double normal_work = 0;      // [J] integral of fn^T Jc qd, work of the table's push (0 if C holds)
   double impact_loss = 0;      // [J] kinetic energy lost in impacts
   double projection = 0;       // [J] stored-energy change made by drift projection
+  double external = 0;         // [J] work of the constant hand force
   double mechanical() const { return kinetic_links + kinetic_rotors + potential; }
   double stored() const { return mechanical() + magnetic; }
 };
@@ -58,6 +60,8 @@ struct ContactData {
   double impact_loss = 0;        // [J] kinetic energy lost in impacts so far
   double projection_energy = 0;  // [J] stored-energy change made by projection so far
 };
+
+struct Plan;
 
 struct Data {
   explicit Data(const Model& model);
@@ -108,6 +112,10 @@ struct Data {
   } step, partial;
 
   ContactData contact;
+
+  // --- task and controller ---------------------------------------------------
+  std::shared_ptr<const Plan> plan;  // desired motion (plan.hpp), when the scene has a task
+  Eigen::VectorXd q_desired, qd_desired, v_feedforward;  // [n] the plan at the stage time
 
   EnergyTerms energy;           // at time t
   EnergyTerms energy_initial;   // at t = 0

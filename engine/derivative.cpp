@@ -4,6 +4,7 @@
 #include "constraint_rows.hpp"
 #include "crba.hpp"
 #include "forward_dynamics.hpp"
+#include "kinematics.hpp"
 #include "walker_orin.hpp"
 #include "kinematics.hpp"
 #include "motor.hpp"
@@ -43,6 +44,12 @@ void energy_rates(const Model& model, const Data& data, ConstVec qd, Eigen::Ref<
   out[4] = normal;
 }
 
+// A constant world force F at the hand acts as joint torques J_hand^T F.
+void add_hand_force(const Model& model, Data& data) {
+  point_jacobian(model, data, model.hand_link, model.hand_point, data.contact.J3);
+  data.actuation.noalias() += data.contact.J3.transpose() * model.hand_load.force;
+}
+
 // (M + Jm) qdd = tau - B_J + Jf^T fn with Jc qdd = gamma for the resting
 // elbows (eq. 30-33); plain forward dynamics when none rests.
 void arm_accelerations(const Model& model, Data& data, ConstVec qd) {
@@ -68,9 +75,10 @@ void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
   const auto qd = x.segment(s.qd(), s.n);
   forward_kinematics(model, data, q);
   if (s.current >= 0)
-    motor_stage(model, data, t, qd, x.segment(s.current, s.n));
+    motor_stage(model, data, t, q, qd, x.segment(s.current, s.n));
   else
-    motor_stage(model, data, t, qd, data.current);
+    motor_stage(model, data, t, q, qd, data.current);
+  if (s.external >= 0) add_hand_force(model, data);
   arm_accelerations(model, data, qd);
 
   N.segment(s.q(), s.n) = qd;
@@ -80,6 +88,8 @@ void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
     N.segment(s.current, s.n) =
         (data.voltage - model.km.cwiseProduct(qd)).cwiseQuotient(model.inductance);
   energy_rates(model, data, qd, N.segment(s.energy, s.energy_terms));
+  if (s.external >= 0)  // power of the hand force: F . v_hand
+    N[s.external] = model.hand_load.force.dot(data.contact.J3 * qd);
 }
 
 }  // namespace elbowsim

@@ -131,6 +131,19 @@ void check_sizes(const Model& model) {
   require(model.options.step > 0 && model.options.duration > 0, "step and duration must be > 0");
 }
 
+// Merges a point mass at `point` (link frame) into a link: new com, and the
+// inertia about it by the parallel-axis theorem.
+void add_point_mass(Link& link, double mass, const Eigen::Vector3d& point) {
+  const double m = link.mass + mass;
+  const Eigen::Vector3d com = (link.mass * link.com + mass * point) / m;
+  auto shift = [](const Eigen::Vector3d& d) {
+    return Eigen::Matrix3d(d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+  };
+  link.inertia += link.mass * shift(link.com - com) + mass * shift(point - com);
+  link.com = com;
+  link.mass = m;
+}
+
 }  // namespace
 
 void finalize(Model& model) {
@@ -144,6 +157,12 @@ void finalize(Model& model) {
     if (model.has_motor()) check_motor(model.motors[i], i, model.effects.motor);
   }
   check_contact_scene(model);
+  require(model.hand_load.mass >= 0, "hand_load.mass must be >= 0");
+  if (model.hand_load.mass != model.hand_mass_added) {  // once, however often finalize runs
+    add_point_mass(model.links[model.hand_link], model.hand_load.mass - model.hand_mass_added,
+                   model.hand_point);
+    model.hand_mass_added = model.hand_load.mass;
+  }
   require(!model.effects.friction || model.effects.contact, "friction needs contact");
   if (model.damping.size() == 0) model.damping = Eigen::VectorXd::Zero(n);
 

@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "controller.hpp"
 #include "inputs.hpp"
+#include "task.hpp"
 
 namespace elbowsim {
 
@@ -135,6 +137,12 @@ struct Model {
   Effects effects;
   Options options;
   OpenLoopInputs inputs;  // voltages (motor on) or torques (motor none)
+
+  // The paper's experiment: a hand task, the controller that tracks it, a load.
+  HandTask task;
+  ControllerSpec controller;
+  HandLoad hand_load;
+  double hand_mass_added = 0;  // [kg] of hand_load.mass already merged into the hand link by finalize()
 
   // Derived by finalize(): reflected motor constants, per joint [dof].
   Eigen::VectorXd km;             // Km [N m / A]

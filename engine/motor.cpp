@@ -1,5 +1,7 @@
 #include "motor.hpp"
 
+#include "plan.hpp"
+
 namespace elbowsim {
 
 namespace {
@@ -9,17 +11,35 @@ double input_at(const Model& model, int joint, double t) {
   return profiles.empty() ? 0.0 : profiles[static_cast<std::size_t>(joint)].at(t);
 }
 
+// Commanded voltages (before saturation) into data.voltage.
+void command(const Model& model, Data& data, double t, ConstVec q, ConstVec qd) {
+  const ControllerSpec& c = model.controller;
+  if (c.kind == ControllerSpec::Kind::open_loop || !data.plan) {
+    for (int j = 0; j < model.dof; ++j) data.voltage[j] = input_at(model, j, t);
+    return;
+  }
+  const Plan& plan = *data.plan;
+  plan.at(plan.q, t, data.q_desired);
+  plan.at(plan.qd, t, data.qd_desired);
+  // PD on the joint errors, in volts.
+  data.voltage = c.kp.cwiseProduct(data.q_desired - q) + c.kd.cwiseProduct(data.qd_desired - qd);
+  if (c.kind == ControllerSpec::Kind::pd) return;
+  plan.at(plan.v_ff, t, data.v_feedforward);
+  data.voltage += data.v_feedforward;
+}
+
 }  // namespace
 
-void motor_stage(const Model& model, Data& data, double t, ConstVec qd,
+void motor_stage(const Model& model, Data& data, double t, ConstVec q, ConstVec qd,
                  ConstVec current) {
   const int n = model.dof;
   if (!model.has_motor()) {
     for (int j = 0; j < n; ++j) data.actuation[j] = input_at(model, j, t);
     return;
   }
+  command(model, data, t, q, qd);
   for (int j = 0; j < n; ++j) {
-    const double v = saturate(input_at(model, j, t), model.voltage_limit[j]);
+    const double v = saturate(data.voltage[j], model.voltage_limit[j]);
     const double back_emf = model.km[j] * qd[j];
     data.voltage[j] = v;
     if (model.has_current_state()) {

@@ -12,11 +12,11 @@ namespace elbowsim {
 // Clamp a commanded voltage to [-limit, limit].
 inline double saturate(double v, double limit) { return v < -limit ? -limit : (v > limit ? limit : v); }
 
-// Inputs and motors at time t for joint rates qd and, with the full model,
-// motor currents `current`. Fills data.voltage (saturated), data.current
-// (quasi_static: computed; full: copied), data.actuation (Km i, or the input
-// torque without motors) and data.current_rate (full model only).
-void motor_stage(const Model& model, Data& data, double t, ConstVec qd,
+// Controller, inputs and motors at time t for the state (q, qd) and, with the
+// full model, motor currents `current`. Fills data.voltage (saturated),
+// data.current (quasi_static: computed; full: copied), data.actuation (Km i,
+// or the input torque without motors) and data.current_rate (full model only).
+void motor_stage(const Model& model, Data& data, double t, ConstVec q, ConstVec qd,
                  ConstVec current);
 
 }  // namespace elbowsim

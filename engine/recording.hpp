@@ -8,6 +8,7 @@
 
 #include "contact_tracker.hpp"
 #include "data.hpp"
+#include "metrics.hpp"
 
 namespace elbowsim {
 
@@ -42,6 +43,7 @@ struct RunResult {
   // Contact (effects.contact): events, drift and the collision worlds built.
   ContactLog contact;
   long collision_worlds_built = 0;  // by this run
+  Metrics metrics;                  // computed from the trajectory at the end
 };
 
 }  // namespace elbowsim

@@ -9,6 +9,8 @@
 #include "energy.hpp"
 #include "integrator.hpp"
 #include "kinematics.hpp"
+#include "metrics.hpp"
+#include "plan.hpp"
 #include "state_vector.hpp"
 
 namespace elbowsim {
@@ -35,6 +37,9 @@ std::vector<Column> trajectory_columns(const Model& model) {
   }
   add_columns(cols, "tau", "N m", n);
   for (const char* axis : {"hand_x", "hand_y", "hand_z"}) cols.push_back({axis, "m"});
+  if (needs_plan(model)) {
+    for (const char* axis : {"hand_d_x", "hand_d_y", "hand_d_z", "hand_error"}) cols.push_back({axis, "m"});
+  }
   if (model.effects.contact) {
     for (const Elbow& e : model.elbows) {
       cols.push_back({"fn_" + e.name, "N"});
@@ -81,6 +86,14 @@ void record_sample(const Model& model, Data& data, ContactTracker* tracker, Reco
   append(row, data.actuation);
   const Eigen::Vector3d hand = point_position(data, model.hand_link, model.hand_point);
   row.insert(row.end(), {hand.x(), hand.y(), hand.z()});
+  if (data.plan) {
+    const Plan& plan = *data.plan;
+    const double u = std::clamp(data.t / plan.dt, 0.0, double(plan.hand.size() - 1));
+    const std::size_t k = std::min(std::size_t(u), plan.hand.size() - 1);
+    const std::size_t k1 = std::min(k + 1, plan.hand.size() - 1);
+    const Eigen::Vector3d desired = plan.hand[k] + (u - double(k)) * (plan.hand[k1] - plan.hand[k]);
+    row.insert(row.end(), {desired.x(), desired.y(), desired.z(), (hand - desired).norm()});
+  }
   if (tracker) append_contacts(model, data, *tracker, row);
   const EnergyTerms& e = data.energy;
   row.insert(row.end(), {e.electrical_in, e.joule, e.viscous, e.kinetic_links, e.kinetic_rotors,
@@ -111,6 +124,14 @@ void reset_state(const Model& model, Data& data) {
   data.x.segment(s.q(), s.n) = or_zeros(model.initial.q, s.n);
   data.x.segment(s.qd(), s.n) = or_zeros(model.initial.qd, s.n);
   if (s.current >= 0) data.x.segment(s.current, s.n) = or_zeros(model.initial.current, s.n);
+  // A tracking controller starts on its plan, with the currents that hold it.
+  if (!data.plan || model.controller.kind == ControllerSpec::Kind::open_loop) return;
+  const Plan& plan = *data.plan;
+  data.x.segment(s.q(), s.n) = plan.q[0];
+  data.x.segment(s.qd(), s.n) = plan.qd[0];
+  if (s.current >= 0 && model.controller.kind != ControllerSpec::Kind::pd)
+    data.x.segment(s.current, s.n) =
+        (plan.v_ff[0] - model.km.cwiseProduct(plan.qd[0])).cwiseQuotient(model.resistance);
 }
 
 void evaluate_outputs(const Model& model, Data& data) {
@@ -124,6 +145,7 @@ void evaluate_outputs(const Model& model, Data& data) {
   data.energy.electrical_in = data.x[s.energy];
   data.energy.joule = data.x[s.energy + 1];
   data.energy.viscous = data.x[s.energy + 2];
+  if (s.external >= 0) data.energy.external = data.x[s.external];
   if (!model.effects.contact) return;
   data.energy.friction = data.x[s.energy + 3];
   data.energy.normal_work = data.x[s.energy + 4];
@@ -155,6 +177,7 @@ RunResult simulate(const Model& model, const RunOptions& options) {
   RunResult result;
   result.trajectory.columns = trajectory_columns(model);
   Data data(model);
+  if (needs_plan(model)) data.plan = make_plan(model);  // may throw PlanError
   std::optional<ContactTracker> contacts;
   if (model.effects.contact) contacts.emplace(model);  // no collision world otherwise
   prepare_integrator(model, data);
@@ -193,6 +216,7 @@ RunResult simulate(const Model& model, const RunOptions& options) {
   result.energy_final = data.energy;
   result.balance_residual = balance_residual(data.energy, data.energy_initial);
   result.warnings = result.contact.warnings;
+  result.metrics = compute_metrics(model, result.trajectory);
   result.collision_worlds_built =
       model.effects.contact ? CollisionWorld::worlds_built() - worlds_before : 0;
   result.wall_seconds =

@@ -15,7 +15,8 @@ struct RunOptions {
 
 // Runs the model from its initial state for options.duration. A state that
 // turns non-finite stops the run: completed = false, failure says when and
-// which quantity, and what was recorded so far is kept.
+// which quantity, and what was recorded so far is kept. A hand task that
+// cannot be followed throws PlanError before anything runs.
 RunResult simulate(const Model& model, const RunOptions& options);
 
 // Puts the model's initial state into data (t = 0, x, q, qd, current).
