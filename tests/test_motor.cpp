@@ -43,7 +43,7 @@ TEST_CASE("motor: stalled rotor draws i = V/R and gives torque Km V/R") {
   const Eigen::VectorXd qd = Eigen::VectorXd::Zero(1);
   // Steady state of L di/dt = v - R i at qd = 0.
   const Eigen::VectorXd i = Eigen::VectorXd::Constant(1, 6.0 / 2.0);
-  motor_stage(model, data, 0.0, qd, i);
+  motor_stage(model, data, 0.0, qd, qd, i);
   CHECK(data.current_rate[0] == doctest::Approx(0.0));
   CHECK(data.actuation[0] == doctest::Approx(0.03 * 50 * 6.0 / 2.0).epsilon(1e-14));
   // And a held rotor driven through the electrical transient settles there.
@@ -88,7 +88,7 @@ TEST_CASE("motor: quasi-static and full models agree as L -> 0") {
 TEST_CASE("motor: voltage saturates at the limit") {
   const Model model = spinner(MotorModel::quasi_static, 100.0);
   Data data(model);
-  motor_stage(model, data, 0.0, Eigen::VectorXd::Zero(1), data.current);
+  motor_stage(model, data, 0.0, Eigen::VectorXd::Zero(1), Eigen::VectorXd::Zero(1), data.current);
   CHECK(data.voltage[0] == 24.0);
   CHECK(data.current[0] == doctest::Approx(12.0));
 }
