@@ -11,13 +11,32 @@ namespace {
 constexpr const char* kVersion = "0.1.0";
 
 constexpr const char* kUsage = R"(usage:
-  elbowsim run SCENARIO [--out DIR] [--set key=value ...]   simulate, write outputs
+  elbowsim run SCENARIO [--out DIR] [--set key=value ...] [--no-render] [--no-report]
+                       [--expect EXPR ...]                  simulate, write outputs
   elbowsim validate SCENARIO [--set key=value ...]          load, check, print the model
+  elbowsim sweep SCENARIO --key KEY --values V1,V2,... [--out DIR] [run options]
+                                                            one run per value of KEY
+  elbowsim render RUN_DIR [--camera PRESET] [--size WxH] [--fps N]
+                                                            re-render a saved run (no simulation)
+  elbowsim report RUN_DIR [--expect EXPR ...]               rebuild report.html (no simulation)
+  elbowsim compare RUN_DIR RUN_DIR ... [--out DIR] [--expect EXPR ...]
+                                                            compare saved runs in one report
   elbowsim --help | --version
 
 Outputs of run (in output.folder, or DIR): scenario.yaml (as run), trajectory.csv,
-summary.json, events.csv (with contacts).
-Exit codes: 0 ok, 1 I/O error, 2 bad input, 3 run stopped early (outputs kept).
+summary.json, events.csv (with contacts), video.mp4 (output.video) and frames/
+(output.frames); --no-render skips the last two. render writes RUN_DIR/video.mp4
+(and frames/ if the scenario asks); PRESET: front, side, top, three_quarter.
+run and report write RUN_DIR/report.html and plots/ (--no-report skips them);
+compare writes report.html, comparison.json and plots/ into DIR (default: compare/
+beside the first run). --expect "energy_final.electrical_in < 120" checks a
+summary.json metric (compare: "A.energy_final.joule < B.energy_final.joule", A and B
+run folder names); README "Expectations" has the language.
+A scenario with variants: runs each into DIR/<variant>/, then DIR/comparison.csv and
+comparison.json. sweep writes DIR/KEY=V/ per value and DIR/sweep.csv (DIR default:
+output.folder/sweep).
+Exit codes: 0 ok, 1 I/O error, 2 bad input, 3 run stopped early (outputs kept),
+4 an --expect expression does not hold.
 Scenario keys: scenarios/README.md)";
 
 cxxopts::Options make_options() {
@@ -26,7 +45,16 @@ cxxopts::Options make_options() {
       "o,out", "output folder (overrides output.folder)", cxxopts::value<std::string>())(
       "s,set", "override a scenario key: key.path=value (repeatable)",
       cxxopts::value<std::vector<std::string>>())(
-      "positional", "", cxxopts::value<std::vector<std::string>>());
+      "positional", "", cxxopts::value<std::vector<std::string>>())(
+      "no-render", "run: skip output.video and output.frames")(
+      "no-report", "run: skip report.html and plots")(
+      "expect", "run, report, compare: a check over summary.json metrics (repeatable)",
+      cxxopts::value<std::vector<std::string>>())(
+      "camera", "render: camera preset", cxxopts::value<std::string>())(
+      "size", "render: WIDTHxHEIGHT", cxxopts::value<std::string>())(
+      "fps", "render: frames per second", cxxopts::value<std::string>())(
+      "key", "sweep: the key path to vary", cxxopts::value<std::string>())(
+      "values", "sweep: its values, comma-separated", cxxopts::value<std::string>());
   options.parse_positional({"positional"});
   return options;
 }
@@ -36,6 +64,18 @@ std::vector<std::string> strings(const cxxopts::ParseResult& parsed, const char*
                            : std::vector<std::string>{};
 }
 
+// run (and sweep): the scenario, --out, --set, --no-render, --no-report, --expect.
+elbowsim::RunArguments run_arguments(const cxxopts::ParseResult& parsed, const std::string& file) {
+  elbowsim::RunArguments args;
+  args.scenario = file;
+  args.sets = strings(parsed, "set");
+  if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
+  args.render = !parsed.count("no-render");
+  args.report = !parsed.count("no-report");
+  args.expect = strings(parsed, "expect");
+  return args;
+}
+
 int dispatch(const cxxopts::ParseResult& parsed) {
   using namespace elbowsim;
   if (parsed.count("help")) return std::cout << kUsage << '\n', exit_ok;
@@ -43,12 +83,25 @@ int dispatch(const cxxopts::ParseResult& parsed) {
   const auto words = strings(parsed, "positional");
   const auto sets = strings(parsed, "set");
   const std::string command = words.empty() ? "" : words[0];
-  if (command == "run" && words.size() == 2) {
-    RunArguments args{words[1], std::nullopt, sets};
-    if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
-    return run_command(args);
+  if (command == "run" && words.size() == 2) return run_command(run_arguments(parsed, words[1]));
+  if (command == "sweep" && words.size() == 2 && parsed.count("key") && parsed.count("values"))
+    return sweep_command({run_arguments(parsed, words[1]), parsed["key"].as<std::string>(),
+                          parsed["values"].as<std::string>()});
+  if (command == "render" && words.size() == 2) {
+    RenderArguments args{words[1], {}, {}, {}};
+    for (auto [key, value] :
+         {std::pair{"camera", &args.camera}, {"size", &args.size}, {"fps", &args.fps}})
+      if (parsed.count(key)) *value = parsed[key].as<std::string>();
+    return render_command(args);
   }
   if (command == "validate" && words.size() == 2) return validate_command(words[1], sets);
+  if (command == "report" && words.size() == 2)
+    return report_command({words[1], strings(parsed, "expect")});
+  if (command == "compare" && words.size() >= 3) {
+    CompareArguments args{{words.begin() + 1, words.end()}, std::nullopt, strings(parsed, "expect")};
+    if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
+    return compare_command(args);
+  }
   std::cerr << kUsage << '\n';
   return exit_bad_input;
 }

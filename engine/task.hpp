@@ -17,8 +17,8 @@ struct HandTask {
   double start_delay = 0.0;         // [s] hold the start point this long
   double duration = 1.0;            // [s] > 0, time to traverse the path
   // line: points[0] -> points[1]; waypoints: through all points (piecewise
-  // linear in arc length); hold: points[0]. Empty points[0] = the hand's
-  // position at the initial pose.
+  // linear in arc length); hold: points[0]. A non-finite (NaN) points[0], or no
+  // points, means the hand's position at the initial pose.
   std::vector<Eigen::Vector3d> points;  // [m] world
   // circle: centre, radius, plane normal, start angle; one full turn.
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  // [m]

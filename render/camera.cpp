@@ -7,16 +7,6 @@
 
 namespace elbowsim {
 
-const char* to_string(CameraPreset preset) {
-  switch (preset) {
-    case CameraPreset::front: return "front";
-    case CameraPreset::side: return "side";
-    case CameraPreset::top: return "top";
-    case CameraPreset::three_quarter: return "three_quarter";
-  }
-  return "?";
-}
-
 namespace {
 
 double tan_half(double fov_deg) { return std::tan(0.5 * fov_deg * std::numbers::pi / 180.0); }
@@ -40,21 +30,43 @@ std::array<Eigen::Vector3d, 8> corners(const Eigen::AlignedBox3d& box) {
   return out;
 }
 
-// Distance from the frame's centre along `back` at which every corner of the
-// frame projects inside the view: for a corner at (x, y, z) in the camera
-// basis relative to the centre, the eye at distance D sees it at depth D - z,
-// so |x| <= (D - z) tan_h and |y| <= (D - z) tan_v.
-double framing_distance(const Basis& b, const Eigen::AlignedBox3d& frame, double tan_v,
-                        double tan_h) {
-  const Eigen::Vector3d centre = frame.center();
+// Distance from `centre` along `back` at which every corner of the frame
+// projects inside the view: for a corner at (x, y, z) in the camera basis
+// relative to the centre, the eye at distance D sees it at depth D - z, so
+// |x| <= (D - z) tan_h and |y| <= (D - z) tan_v.
+double framing_distance(const Basis& b, const Eigen::AlignedBox3d& frame,
+                        const Eigen::Vector3d& centre, double tan_v, double tan_h) {
   double distance = 0;
   for (const Eigen::Vector3d& c : corners(frame)) {
     const Eigen::Vector3d d = c - centre;
     const double z = d.dot(b.back);
-    distance = std::max({distance, z + std::abs(d.dot(b.right)) / tan_h,
-                         z + std::abs(d.dot(b.up)) / tan_v});
+    distance = std::max(
+        {distance, z + std::abs(d.dot(b.right)) / tan_h, z + std::abs(d.dot(b.up)) / tan_v});
   }
   return distance;
+}
+
+// The frame seen along -back, centred in the image: perspective makes its
+// near side look bigger, so the target moves sideways until the projected
+// extents are symmetric (a few fixed-point steps), then the distance is refit.
+void frame_view(Camera& camera, const Basis& b, const Eigen::AlignedBox3d& frame, double tan_v,
+                double tan_h) {
+  Eigen::Vector3d centre = frame.center();
+  double distance = 0;
+  for (int iteration = 0; iteration < 4; ++iteration) {
+    distance = std::max(framing_distance(b, frame, centre, tan_v, tan_h), 0.05);
+    const Eigen::Vector3d eye = centre + distance * b.back;
+    double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+    for (const Eigen::Vector3d& c : corners(frame)) {
+      const Eigen::Vector3d d = c - eye;
+      const double depth = -d.dot(b.back);
+      lo_x = std::min(lo_x, d.dot(b.right) / depth), hi_x = std::max(hi_x, d.dot(b.right) / depth);
+      lo_y = std::min(lo_y, d.dot(b.up) / depth), hi_y = std::max(hi_y, d.dot(b.up) / depth);
+    }
+    centre += distance * (0.5 * (lo_x + hi_x) * b.right + 0.5 * (lo_y + hi_y) * b.up);
+  }
+  camera.target = centre;
+  camera.eye = centre + distance * b.back;
 }
 
 // Near and far planes around everything in `depth`, seen from eye along -back.
@@ -106,10 +118,14 @@ std::optional<Eigen::Vector2d> Camera::project(const Eigen::Vector3d& p, int wid
 
 Eigen::Vector3d preset_direction(CameraPreset preset) {
   switch (preset) {
-    case CameraPreset::front: return Eigen::Vector3d(0, -1, 0);
-    case CameraPreset::side: return Eigen::Vector3d(1, 0, 0);
-    case CameraPreset::top: return Eigen::Vector3d(0, 0, 1);
-    case CameraPreset::three_quarter: return Eigen::Vector3d(0.55, -1.0, 0.5).normalized();
+    case CameraPreset::front:
+      return Eigen::Vector3d(0, -1, 0);
+    case CameraPreset::side:
+      return Eigen::Vector3d(1, 0, 0);
+    case CameraPreset::top:
+      return Eigen::Vector3d(0, 0, 1);
+    case CameraPreset::three_quarter:
+      return Eigen::Vector3d(0.55, -1.0, 0.5).normalized();
   }
   return Eigen::Vector3d(0, -1, 0);
 }
@@ -133,9 +149,7 @@ Camera make_camera(const CameraSettings& settings, const Eigen::AlignedBox3d& fr
     const double tan_h = tan_v * aspect;
     const Eigen::Vector3d back = preset_direction(settings.preset);
     camera.up = preset_up(settings.preset);
-    camera.target = frame.center();
-    const Basis b = basis(camera.target + back, camera.target, camera.up);
-    camera.eye = camera.target + back * std::max(framing_distance(b, frame, tan_v, tan_h), 0.05);
+    frame_view(camera, basis(back, Eigen::Vector3d::Zero(), camera.up), frame, tan_v, tan_h);
   }
   Eigen::AlignedBox3d everything = depth;
   everything.extend(frame);

@@ -11,7 +11,7 @@
 namespace elbowsim {
 
 struct Camera {
-  Eigen::Vector3d eye = Eigen::Vector3d(0, -2, 0);  // [m] world
+  Eigen::Vector3d eye = Eigen::Vector3d(0, -2, 0);   // [m] world
   Eigen::Vector3d target = Eigen::Vector3d::Zero();  // [m] world, centre of the view
   Eigen::Vector3d up = Eigen::Vector3d::UnitZ();     // world; need not be orthogonal
   double fov_deg = 40;                               // vertical field of view [deg]

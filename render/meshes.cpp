@@ -8,7 +8,8 @@ namespace elbowsim {
 namespace {
 
 std::uint32_t add_vertex(Mesh& m, double x, double y, double z, double nx, double ny, double nz) {
-  m.vertices.insert(m.vertices.end(), {float(x), float(y), float(z), float(nx), float(ny), float(nz)});
+  m.vertices.insert(m.vertices.end(),
+                    {float(x), float(y), float(z), float(nx), float(ny), float(nz)});
   return std::uint32_t(m.vertices.size() / 6 - 1);
 }
 
@@ -26,8 +27,10 @@ void add_disc(Mesh& m, int slices, double z, bool up) {
     add_vertex(m, std::cos(phi), std::sin(phi), z, 0, 0, s);
   }
   for (int j = 0; j < slices; ++j) {
-    if (up) add_triangle(m, centre, first + j, first + j + 1);
-    else add_triangle(m, centre, first + j + 1, first + j);
+    if (up)
+      add_triangle(m, centre, first + j, first + j + 1);
+    else
+      add_triangle(m, centre, first + j + 1, first + j);
   }
 }
 
@@ -78,10 +81,10 @@ Mesh unit_cone(int slices) {
   for (int j = 0; j < slices; ++j) {
     const double phi0 = 2 * std::numbers::pi * j / slices;
     const double phi1 = 2 * std::numbers::pi * (j + 1) / slices, mid = 0.5 * (phi0 + phi1);
-    const std::uint32_t a = add_vertex(m, std::cos(phi0), std::sin(phi0), 0, k * std::cos(phi0),
-                                       k * std::sin(phi0), k);
-    const std::uint32_t b = add_vertex(m, std::cos(phi1), std::sin(phi1), 0, k * std::cos(phi1),
-                                       k * std::sin(phi1), k);
+    const std::uint32_t a =
+        add_vertex(m, std::cos(phi0), std::sin(phi0), 0, k * std::cos(phi0), k * std::sin(phi0), k);
+    const std::uint32_t b =
+        add_vertex(m, std::cos(phi1), std::sin(phi1), 0, k * std::cos(phi1), k * std::sin(phi1), k);
     const std::uint32_t apex = add_vertex(m, 0, 0, 1, k * std::cos(mid), k * std::sin(mid), k);
     add_triangle(m, a, b, apex);
   }
@@ -92,9 +95,9 @@ Mesh unit_cone(int slices) {
 Mesh unit_box() {
   Mesh m;
   // Each face: normal n and tangents u, v with u x v = n.
-  const int faces[6][9] = {{1, 0, 0, 0, 1, 0, 0, 0, 1},   {-1, 0, 0, 0, 0, 1, 0, 1, 0},
-                           {0, 1, 0, 0, 0, 1, 1, 0, 0},   {0, -1, 0, 1, 0, 0, 0, 0, 1},
-                           {0, 0, 1, 1, 0, 0, 0, 1, 0},   {0, 0, -1, 0, 1, 0, 1, 0, 0}};
+  const int faces[6][9] = {{1, 0, 0, 0, 1, 0, 0, 0, 1}, {-1, 0, 0, 0, 0, 1, 0, 1, 0},
+                           {0, 1, 0, 0, 0, 1, 1, 0, 0}, {0, -1, 0, 1, 0, 0, 0, 0, 1},
+                           {0, 0, 1, 1, 0, 0, 0, 1, 0}, {0, 0, -1, 0, 1, 0, 1, 0, 0}};
   for (const auto& f : faces) {
     const std::uint32_t first = std::uint32_t(m.vertices.size() / 6);
     for (const auto& [su, sv] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})

@@ -21,8 +21,8 @@ class OsmesaContext {
   std::string description() const;
 
  private:
-  void* context_;                    // OSMesaContext
-  unsigned char placeholder_[4]{};   // the context's 1x1 RGBA default framebuffer
+  void* context_;                   // OSMesaContext
+  unsigned char placeholder_[4]{};  // the context's 1x1 RGBA default framebuffer
 };
 
 }  // namespace elbowsim

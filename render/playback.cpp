@@ -48,7 +48,9 @@ Playback::Playback(const Model& model, const Recording& rec) : dof_(model.dof) {
   time_ = required(rec, "time", rows, "");
   if (time_.empty()) throw std::invalid_argument("the trajectory has no (finite) samples");
   const std::string why = " (the model has " + std::to_string(dof_) + " joints)";
-  for (int j = 0; j < dof_; ++j) q_.push_back(required(rec, "q" + std::to_string(j), rows, why));
+  // Names appended piece by piece: `"q" + std::to_string(j)` trips GCC 12's -Wrestrict.
+  for (int j = 0; j < dof_; ++j)
+    q_.push_back(required(rec, std::string("q").append(std::to_string(j)), rows, why));
   for (const char* axis : {"hand_x", "hand_y", "hand_z"}) hand_.push_back(column(rec, axis, rows));
   if (hand_[0].empty() || hand_[1].empty() || hand_[2].empty()) hand_.clear();
   for (const Elbow& e : model.elbows) {
@@ -91,7 +93,8 @@ PlaybackState Playback::at(double t) const {
   s.t = std::clamp(t, time_.front(), time_.back());
   s.q.resize(dof_);
   for (int j = 0; j < dof_; ++j) s.q[j] = lerp(q_[j], b);
-  if (!hand_.empty()) s.hand = Eigen::Vector3d(lerp(hand_[0], b), lerp(hand_[1], b), lerp(hand_[2], b));
+  if (!hand_.empty())
+    s.hand = Eigen::Vector3d(lerp(hand_[0], b), lerp(hand_[1], b), lerp(hand_[2], b));
   for (std::size_t k = 0; k < fn_.size(); ++k) {
     ElbowSample e;
     if (!fn_[k].empty()) e.fn = lerp(fn_[k], b);

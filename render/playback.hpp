@@ -24,11 +24,11 @@ struct ElbowSample {
 };
 
 struct PlaybackState {
-  double t = 0;                                      // [s]
-  Eigen::VectorXd q;                                 // [dof] joint angles [rad]
-  std::optional<Eigen::Vector3d> hand;               // [m] world, if recorded
-  std::vector<ElbowSample> elbows;                   // [model.elbows]
-  std::optional<double> energy_in;                   // [J] E_in so far, if recorded
+  double t = 0;                         // [s]
+  Eigen::VectorXd q;                    // [dof] joint angles [rad]
+  std::optional<Eigen::Vector3d> hand;  // [m] world, if recorded
+  std::vector<ElbowSample> elbows;      // [model.elbows]
+  std::optional<double> energy_in;      // [J] E_in so far, if recorded
 };
 
 class Playback {
@@ -63,13 +63,13 @@ class Playback {
 
   int dof_;
   std::vector<double> time_;
-  std::vector<std::vector<double>> q_;        // [dof][rows]
-  std::vector<std::vector<double>> hand_;     // [3][rows] or empty
-  std::vector<std::vector<double>> fn_;       // [elbows][rows] (empty column: not recorded)
-  std::vector<std::vector<double>> rest_;     // [elbows][rows]
-  std::vector<std::vector<double>> landings_; // [elbows] touchdown times
-  std::vector<double> energy_in_;             // [rows] or empty
-  std::vector<std::size_t> path_rows_;        // rows kept for hand_path
+  std::vector<std::vector<double>> q_;         // [dof][rows]
+  std::vector<std::vector<double>> hand_;      // [3][rows] or empty
+  std::vector<std::vector<double>> fn_;        // [elbows][rows] (empty column: not recorded)
+  std::vector<std::vector<double>> rest_;      // [elbows][rows]
+  std::vector<std::vector<double>> landings_;  // [elbows] touchdown times
+  std::vector<double> energy_in_;              // [rows] or empty
+  std::vector<std::size_t> path_rows_;         // rows kept for hand_path
 };
 
 // Number of frames for `duration` [s] at `fps`: one at t = 0 and one every

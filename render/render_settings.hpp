@@ -10,7 +10,19 @@ namespace elbowsim {
 // Named view directions; each is framed automatically (camera.hpp).
 enum class CameraPreset { front, side, top, three_quarter };
 
-const char* to_string(CameraPreset preset);
+inline const char* to_string(CameraPreset preset) {
+  switch (preset) {
+    case CameraPreset::front:
+      return "front";
+    case CameraPreset::side:
+      return "side";
+    case CameraPreset::top:
+      return "top";
+    case CameraPreset::three_quarter:
+      return "three_quarter";
+  }
+  return "?";
+}
 
 struct CameraSettings {
   // With `explicit_pose` false the camera looks along the preset's direction
@@ -26,12 +38,12 @@ struct CameraSettings {
 
 struct RenderSettings {
   CameraSettings camera;
-  int width = 1280;             // [px] even (H.264 with yuv420p)
-  int height = 720;             // [px] even
-  double fps = 30.0;            // [1/s] frames per second of simulation time
-  int msaa = 4;                 // samples per pixel: 1 (off), 2 or 4
-  bool supersample = false;     // render 2w x 2h and average 2x2 blocks (for stills)
-  double force_scale = 0.01;    // [m/N] length of a normal-force arrow per newton
+  int width = 1280;           // [px] even (H.264 with yuv420p)
+  int height = 720;           // [px] even
+  double fps = 30.0;          // [1/s] frames per second of simulation time
+  int msaa = 4;               // samples per pixel: 1 (off), 2 or 4
+  bool supersample = false;   // render 2w x 2h and average 2x2 blocks (for stills)
+  double force_scale = 0.01;  // [m/N] length of a normal-force arrow per newton
 };
 
 }  // namespace elbowsim

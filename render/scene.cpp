@@ -11,12 +11,12 @@ namespace elbowsim {
 namespace {
 
 // Proportions of the drawn parts, relative to the link radius r.
-constexpr double kHousingRadius = 1.3;   // joint housing radius / r
-constexpr double kHousingLength = 2.6;   // joint housing length / r
-constexpr double kBasePlate = 5.0;       // base plate edge / r
-constexpr double kBaseThickness = 1.0;   // base plate thickness / r
-constexpr double kArrowRadius = 0.18;    // arrow shaft radius / elbow radius
-constexpr double kPathRadius = 0.002;    // [m] hand path tube radius
+constexpr double kHousingRadius = 1.3;  // joint housing radius / r
+constexpr double kHousingLength = 2.6;  // joint housing length / r
+constexpr double kBasePlate = 5.0;      // base plate edge / r
+constexpr double kBaseThickness = 1.0;  // base plate thickness / r
+constexpr double kArrowRadius = 0.18;   // arrow shaft radius / elbow radius
+constexpr double kPathRadius = 0.002;   // [m] hand path tube radius
 
 Eigen::Vector3d world_up(const Model& model) {
   const double g = model.gravity.norm();
@@ -54,14 +54,28 @@ Box base_plate(const Model& model, const Data& data, const SceneStyle& style) {
   return plate;
 }
 
+// Radius of the largest elbow sphere containing `p`, 0 if none.
+double enclosing_elbow(const Model& model, const Data& data, const Eigen::Vector3d& p) {
+  double r = 0;
+  for (const Elbow& e : model.elbows)
+    if ((point_position(data, e.link, e.point) - p).norm() < e.radius) r = std::max(r, e.radius);
+  return r;
+}
+
+// Links as capsules; a housing at each joint, shrunk to fit inside an elbow
+// sphere around the joint so that it does not hide the elbow's colour.
 void add_links(const Model& model, const Data& data, Scene& scene, const SceneStyle& style) {
   for (int i = 0; i < model.dof; ++i) {
     const Link& link = model.links[std::size_t(i)];
     scene.links.push_back(
         {data.origin[i], point_position(data, i, link.tip), link.radius, style.link});
-    const Eigen::Vector3d half = 0.5 * kHousingLength * link.radius * data.axis[i];
-    scene.joints.push_back({data.origin[i] - half, data.origin[i] + half,
-                            kHousingRadius * link.radius, style.joint});
+    double radius = kHousingRadius * link.radius, half = 0.5 * kHousingLength * link.radius;
+    if (const double elbow = enclosing_elbow(model, data, data.origin[i]); elbow > 0) {
+      radius = std::min(radius, 0.7 * elbow);
+      half = std::min(half, 0.7 * elbow);
+    }
+    const Eigen::Vector3d h = half * data.axis[i];
+    scene.joints.push_back({data.origin[i] - h, data.origin[i] + h, radius, style.joint});
   }
 }
 
@@ -72,9 +86,12 @@ ElbowState elbow_state(const ElbowSample& e, double t, double window) {
 
 Color elbow_color(ElbowState state, const SceneStyle& style) {
   switch (state) {
-    case ElbowState::free: return style.elbow_free;
-    case ElbowState::resting: return style.elbow_resting;
-    case ElbowState::landed: return style.elbow_landed;
+    case ElbowState::free:
+      return style.elbow_free;
+    case ElbowState::resting:
+      return style.elbow_resting;
+    case ElbowState::landed:
+      return style.elbow_landed;
   }
   return style.elbow_free;
 }

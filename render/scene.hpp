@@ -49,8 +49,8 @@ struct Arrow {
   Eigen::Vector3d tail = Eigen::Vector3d::Zero(), tip = Eigen::Vector3d::Zero();  // [m] world
   double radius = 0;  // [m] of the shaft
   Color color;
-  int elbow = -1;       // index into Model::elbows
-  double force = 0;     // [N]
+  int elbow = -1;    // index into Model::elbows
+  double force = 0;  // [N]
 };
 
 // A polyline drawn as a thin tube.
@@ -88,24 +88,24 @@ struct SceneStyle {
 };
 
 struct SceneOptions {
-  double force_scale = 0.01;    // [m/N] arrow length per newton of normal force
-  double landed_window = 0.1;   // [s] an elbow that touched down this recently is "landed"
-  double floor_z = 0;           // [m] height of the ground grid
+  double force_scale = 0.01;      // [m/N] arrow length per newton of normal force
+  double landed_window = 0.1;     // [s] an elbow that touched down this recently is "landed"
+  double floor_z = 0;             // [m] height of the ground grid
   Eigen::AlignedBox2d grid_area;  // [m] x-y extent of the grid; empty: no grid
-  double grid_spacing = 0.1;    // [m]
+  double grid_spacing = 0.1;      // [m]
   SceneStyle style;
 };
 
 struct Scene {
   Color background;
-  std::vector<Box> table;             // [table boxes]
-  Box base;                           // plate behind joint 0, normal along its axis
-  std::vector<Capsule> links;         // [dof] joint origin -> tip, link radius
-  std::vector<Cylinder> joints;       // [dof] housing at each joint origin, along its axis
-  std::vector<ElbowMarker> elbows;    // [model elbows]
-  std::vector<Arrow> forces;          // one per resting elbow with fn > 0
-  Polyline hand_path;                 // traced hand positions up to now
-  LineSet grid;                       // ground grid at floor_z
+  std::vector<Box> table;           // [table boxes]
+  Box base;                         // plate behind joint 0, normal along its axis
+  std::vector<Capsule> links;       // [dof] joint origin -> tip, link radius
+  std::vector<Cylinder> joints;     // [dof] housing at each joint origin, along its axis
+  std::vector<ElbowMarker> elbows;  // [model elbows]
+  std::vector<Arrow> forces;        // one per resting elbow with fn > 0
+  Polyline hand_path;               // traced hand positions up to now
+  LineSet grid;                     // ground grid at floor_z
 };
 
 // The scene of `state` (joint angles placed with forward_kinematics on a Data

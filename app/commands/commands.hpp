@@ -1,23 +1,93 @@
 // The subcommands of the elbowsim command line. Each returns the exit code:
 // 0 success, 1 I/O failure, 2 bad input (scenario or usage), 3 the run
-// stopped early (diverged); what it recorded is still written.
+// stopped early (diverged); what it recorded is still written; 4 an
+// --expect expression does not hold.
 #pragma once
 
+#include <filesystem>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace elbowsim {
 
-enum ExitCode { exit_ok = 0, exit_io = 1, exit_bad_input = 2, exit_run_failed = 3 };
+struct Scenario;
+struct Recording;
+struct RunRecord;  // app/output/comparison.hpp
+
+enum ExitCode {
+  exit_ok = 0,
+  exit_io = 1,
+  exit_bad_input = 2,
+  exit_run_failed = 3,
+  exit_expectation_failed = 4
+};
 
 struct RunArguments {
   std::string scenario;
   std::optional<std::string> out;   // overrides output.folder
   std::vector<std::string> sets;    // "key.path=value" overrides
+  bool render = true;               // false: --no-render (skip output.video / output.frames)
+  bool report = true;               // false: --no-report (skip report.html, plots/)
+  std::vector<std::string> expect;  // --expect expressions over summary.json
+};
+
+// elbowsim render RUN_DIR [--camera preset] [--size WxH] [--fps N]
+struct RenderArguments {
+  std::string folder;                 // a run folder: scenario.yaml, trajectory.csv
+  std::optional<std::string> camera;  // preset name, replaces render.camera
+  std::optional<std::string> size;    // "WxH", replaces render.size
+  std::optional<std::string> fps;     // replaces render.fps
 };
 
 int run_command(const RunArguments& args);
+
+// Runs `scenario` (loaded from args.scenario with args.sets) into `folder`:
+// alone, or, when it declares variants, each variant into folder/<variant>/
+// then folder/comparison.csv and comparison.json (--expect paths then start
+// with a variant name). Appends one record per run. Used by run and sweep.
+int run_scenario(const RunArguments& args, const Scenario& scenario,
+                 const std::filesystem::path& folder, std::vector<RunRecord>& records);
+
+// elbowsim sweep SCENARIO --key K --values V1,V2,... [--out DIR] [--set ...]
+struct SweepArguments {
+  RunArguments run;    // scenario, out (default: output.folder + "/sweep"), sets, render, report
+  std::string key;     // the swept key path, e.g. task.duration
+  std::string values;  // comma-separated YAML values
+};
+int sweep_command(const SweepArguments& args);
 int validate_command(const std::string& scenario, const std::vector<std::string>& sets);
+int render_command(const RenderArguments& args);
+
+// elbowsim report RUN_DIR [--expect EXPR ...]
+struct ReportArguments {
+  std::string folder;
+  std::vector<std::string> expect;
+};
+// elbowsim compare RUN_DIR RUN_DIR ... [--out DIR] [--expect EXPR ...]
+struct CompareArguments {
+  std::vector<std::string> folders;
+  std::optional<std::string> out;  // default: "compare" beside the first run folder
+  std::vector<std::string> expect;  // paths start with a run label (folder name)
+};
+int report_command(const ReportArguments& args);
+int compare_command(const CompareArguments& args);
+
+// Writes report.html and plots/ into a run folder from its files. Used by run and report.
+int report_outputs(const std::filesystem::path& folder);
+
+// --expect (report/expect.hpp): prints each malformed expression with its
+// column; false if any.
+bool expectations_well_formed(const std::vector<std::string>& expressions);
+// Evaluates them over `metrics`: exit_ok, exit_expectation_failed, or
+// exit_bad_input (malformed, or naming a metric that is not there).
+int check_expectations(const std::vector<std::string>& expressions,
+                       const nlohmann::ordered_json& metrics);
+
+// Renders a recording of `scenario` into `folder` as its output section asks
+// (video.mp4 and/or frames/), printing what was written. Used by run and render.
+int render_outputs(const Scenario& scenario, const Recording& recording,
+                   const std::filesystem::path& folder);
 
 }  // namespace elbowsim

@@ -4,13 +4,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "app/commands/commands.hpp"
 #include "app/output/atomic_file.hpp"
+#include "app/output/comparison.hpp"
 #include "app/output/events_csv.hpp"
 #include "app/output/summary_json.hpp"
 #include "app/output/trajectory_csv.hpp"
 #include "app/scenario/scenario.hpp"
+#include "engine/inverse_kinematics.hpp"
 #include "engine/simulator.hpp"
 
 namespace elbowsim {
@@ -32,7 +35,7 @@ std::function<void(double)> terminal_progress() {
 }
 
 void write_outputs(const Scenario& scenario, const RunResult& result,
-                   const std::filesystem::path& folder) {
+                   const nlohmann::ordered_json& summary, const std::filesystem::path& folder) {
   write_atomically(folder / "scenario.yaml",
                    [&](std::ostream& out) { out << scenario.resolved_yaml; });
   if (scenario.output.trajectory)
@@ -43,14 +46,119 @@ void write_outputs(const Scenario& scenario, const RunResult& result,
       write_events_csv(out, scenario.model, result.contact);
     });
   if (scenario.output.summary)
-    write_atomically(folder / "summary.json", [&](std::ostream& out) {
-      out << run_summary(scenario, result).dump(2) << '\n';
+    write_atomically(folder / "summary.json",
+                     [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+}
+
+// One run folder: simulate, write, render, report. Its code: exit_ok,
+// exit_io (nothing more done), exit_run_failed, or what rendering or the
+// report returned. Expectations are the caller's.
+struct RunOutcome {
+  int code = exit_ok;
+  nlohmann::ordered_json summary;  // as written to summary.json
+};
+
+// A hand task that cannot be followed stops the run before it starts: it
+// counts as a run that stopped early (a sweep goes on past an unreachable
+// value), with nothing recorded, so nothing to render or report.
+RunResult simulate_or_fail(const Scenario& scenario) {
+  try {
+    return simulate(scenario.model, RunOptions{scenario.output.every, terminal_progress()});
+  } catch (const PlanError& e) {
+    RunResult failed;
+    failed.failure = std::string("the hand task cannot be followed: ") + e.what();
+    return failed;
+  }
+}
+
+RunOutcome run_one(const Scenario& scenario, const std::filesystem::path& folder,
+                   const RunArguments& args) {
+  const RunResult result = simulate_or_fail(scenario);
+  const bool recorded = result.trajectory.rows() > 0;
+  RunOutcome outcome{exit_ok, run_summary(scenario, result)};
+  try {
+    std::filesystem::create_directories(folder);
+    write_outputs(scenario, result, outcome.summary, folder);
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    outcome.code = exit_io;
+    return outcome;
+  }
+  for (const std::string& warning : result.warnings) std::cerr << "warning: " << warning << '\n';
+  if (!result.completed) {
+    std::cerr << "error: " << result.failure << "\n  kept " << result.trajectory.rows()
+              << " recorded samples in " << folder.string() << '\n';
+  } else {
+    std::cout << scenario.model.name << ": " << result.steps << " steps to t = "
+              << result.final_time << " s in " << result.wall_seconds << " s; outputs in "
+              << folder.string() << '\n';
+  }
+  // Frames and video last, from the recording in memory (what it recorded,
+  // also when the run stopped early).
+  const bool render = recorded && args.render && (scenario.output.video || scenario.output.frames);
+  const int rendered = render ? render_outputs(scenario, result.trajectory, folder) : exit_ok;
+  // The report after everything else: it reads the folder back, video included.
+  const int reported = recorded && args.report ? report_outputs(folder) : exit_ok;
+  outcome.code = !result.completed ? exit_run_failed : rendered != exit_ok ? rendered : reported;
+  return outcome;
+}
+
+// Each variant into folder/<variant>/ (all loaded first: a bad one writes
+// nothing), then comparison.csv and comparison.json. A failed run does not
+// stop the others; an I/O error does.
+int run_variants(const RunArguments& args, const Scenario& scenario,
+                 const std::filesystem::path& folder, std::vector<RunRecord>& records) {
+  std::vector<Scenario> variants;
+  try {
+    for (const auto& [name, overrides] : scenario.variants)
+      variants.push_back(load_scenario_variant(args.scenario, name, args.sets));
+  } catch (const ScenarioError& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_bad_input;
+  }
+  std::vector<RunRecord> runs;
+  int code = exit_ok;
+  nlohmann::ordered_json summaries;  // variant -> summary, for --expect
+  for (const Scenario& v : variants) {
+    RunOutcome outcome = run_one(v, folder / v.variant, args);
+    if (outcome.code == exit_io) return exit_io;
+    if (code == exit_ok) code = outcome.code;
+    summaries[v.variant] = outcome.summary;
+    runs.push_back({v.variant, v.variant, std::move(outcome.summary)});
+  }
+  try {
+    write_atomically(folder / "comparison.csv",
+                     [&](std::ostream& out) { write_comparison_csv(out, runs); });
+    write_atomically(folder / "comparison.json", [&](std::ostream& out) {
+      out << comparison_json(scenario.model.name, runs).dump(2) << '\n';
     });
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_io;
+  }
+  std::cout << scenario.model.name << ": " << runs.size() << " variants compared in "
+            << (folder / "comparison.csv").string() << '\n';
+  records.insert(records.end(), runs.begin(), runs.end());
+  // Expectations name the variant first: "elbow_on.energy_final.joule < ...".
+  const int checked = check_expectations(args.expect, summaries);
+  return code != exit_ok ? code : checked;
 }
 
 }  // namespace
 
+int run_scenario(const RunArguments& args, const Scenario& scenario,
+                 const std::filesystem::path& folder, std::vector<RunRecord>& records) {
+  if (!scenario.variants.empty()) return run_variants(args, scenario, folder, records);
+  RunOutcome outcome = run_one(scenario, folder, args);
+  if (outcome.code == exit_io) return exit_io;
+  const int checked = check_expectations(args.expect, outcome.summary);
+  records.push_back({"", ".", std::move(outcome.summary)});
+  return outcome.code != exit_ok ? outcome.code : checked;
+}
+
 int run_command(const RunArguments& args) {
+  // A malformed --expect is a usage error: found before simulating.
+  if (!expectations_well_formed(args.expect)) return exit_bad_input;
   Scenario scenario;
   try {
     scenario = load_scenario(args.scenario, args.sets);
@@ -58,26 +166,8 @@ int run_command(const RunArguments& args) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_bad_input;
   }
-  const std::filesystem::path folder = args.out.value_or(scenario.output.folder);
-  const RunResult result =
-      simulate(scenario.model, RunOptions{scenario.output.every, terminal_progress()});
-  try {
-    std::filesystem::create_directories(folder);
-    write_outputs(scenario, result, folder);
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return exit_io;
-  }
-  for (const std::string& warning : result.warnings) std::cerr << "warning: " << warning << '\n';
-  if (!result.completed) {
-    std::cerr << "error: " << result.failure << "\n  kept " << result.trajectory.rows()
-              << " recorded samples in " << folder.string() << '\n';
-    return exit_run_failed;
-  }
-  std::cout << scenario.model.name << ": " << result.steps << " steps to t = "
-            << result.final_time << " s in " << result.wall_seconds << " s; outputs in "
-            << folder.string() << '\n';
-  return exit_ok;
+  std::vector<RunRecord> records;
+  return run_scenario(args, scenario, args.out.value_or(scenario.output.folder), records);
 }
 
 }  // namespace elbowsim

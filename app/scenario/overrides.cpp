@@ -17,15 +17,15 @@ struct Step {
 };
 
 struct Override {
-  std::string label;  // "command line --set <text>"
+  Source::Origin origin;  // where it was given: "command line --set <text>" or a file line
+  std::string note;       // appended to messages (Source::note)
   std::vector<Step> steps;
   std::string path;   // normalized "a.b[0].c"
   std::string value;  // YAML text
 };
 
-[[noreturn]] void fail(const std::string& label, const std::string& key,
-                       const std::string& message) {
-  throw ScenarioError(label, 0, 0, key, message);
+[[noreturn]] void fail(const Override& o, const std::string& key, const std::string& message) {
+  throw ScenarioError(o.origin.file, o.origin.line, o.origin.column, key, message + o.note);
 }
 
 bool is_key_char(char c) {
@@ -33,10 +33,11 @@ bool is_key_char(char c) {
 }
 
 // "links[2][0]" -> key "links", indices 2, 0.
-void parse_segment(const std::string& segment, const std::string& label, std::vector<Step>& out) {
+void parse_segment(const std::string& segment, Override& o) {
+  std::vector<Step>& out = o.steps;
   std::size_t i = 0;
   while (i < segment.size() && is_key_char(segment[i])) ++i;
-  if (i == 0) fail(label, "", "expected key.path=value (bad key \"" + segment + "\")");
+  if (i == 0) fail(o, "", "expected key.path=value (bad key \"" + segment + "\")");
   out.push_back({segment.substr(0, i)});
   while (i < segment.size()) {
     std::size_t close = segment.find(']', i);
@@ -44,7 +45,7 @@ void parse_segment(const std::string& segment, const std::string& label, std::ve
     auto [end, ec] = std::from_chars(segment.data() + i + 1, segment.data() + close, index);
     if (segment[i] != '[' || close == std::string::npos || ec != std::errc{} ||
         end != segment.data() + close || index < 0)
-      fail(label, "", "expected key.path=value (bad index in \"" + segment + "\")");
+      fail(o, "", "expected key.path=value (bad index in \"" + segment + "\")");
     out.push_back({"", index});
     i = close + 1;
   }
@@ -63,14 +64,14 @@ std::string join_path(const std::vector<Step>& steps, std::size_t count) {
   return path;
 }
 
-Override parse(const std::string& text) {
-  Override o{"command line --set " + text, {}, "", ""};
+Override parse(const std::string& text, Source::Origin origin, std::string note) {
+  Override o{std::move(origin), std::move(note), {}, "", ""};
   std::size_t eq = text.find('=');
-  if (eq == std::string::npos || eq == 0) fail(o.label, "", "expected key.path=value");
+  if (eq == std::string::npos || eq == 0) fail(o, "", "expected key.path=value");
   std::string path = text.substr(0, eq);
   for (std::size_t start = 0; start <= path.size();) {
     std::size_t dot = std::min(path.find('.', start), path.size());
-    parse_segment(path.substr(start, dot - start), o.label, o.steps);
+    parse_segment(path.substr(start, dot - start), o);
     start = dot + 1;
   }
   o.path = join_path(o.steps, o.steps.size());
@@ -86,13 +87,12 @@ YAML::Node descend(YAML::Node node, const Override& o, std::size_t k) {
   std::string there = join_path(o.steps, k + 1);
   if (s.index >= 0) {
     if (!node.IsSequence())
-      fail(o.label, there, (here.empty() ? "the document" : here) + " is not a list");
+      fail(o, there, (here.empty() ? "the document" : here) + " is not a list");
     if (static_cast<std::size_t>(s.index) >= node.size())
-      fail(o.label, there,
-           "index out of range (the list has " + std::to_string(node.size()) + " items)");
+      fail(o, there, "index out of range (the list has " + std::to_string(node.size()) + " items)");
     return node[static_cast<std::size_t>(s.index)];
   }
-  if (!node.IsMap() && !node.IsNull()) fail(o.label, there, here + " is not a map");
+  if (!node.IsMap() && !node.IsNull()) fail(o, there, here + " is not a map");
   return node[s.key];
 }
 
@@ -100,14 +100,19 @@ YAML::Node parse_value(const Override& o) {
   try {
     return YAML::Load(o.value);
   } catch (const YAML::Exception& e) {
-    fail(o.label, o.path, "invalid YAML value: " + e.msg);
+    fail(o, o.path, "invalid YAML value: " + e.msg);
   }
 }
 
 }  // namespace
 
 void apply_override(YAML::Node& root, const std::string& text, Source& source) {
-  Override o = parse(text);
+  apply_override(root, text, source, {"command line --set " + text, 0, 0});
+}
+
+void apply_override(YAML::Node& root, const std::string& text, Source& source,
+                    const Source::Origin& origin) {
+  Override o = parse(text, origin, source.note());
   YAML::Node value = parse_value(o);
   YAML::Node node = root;
   // Walk to the parent of the last step, creating missing maps on the way.
@@ -120,7 +125,7 @@ void apply_override(YAML::Node& root, const std::string& text, Source& source) {
   }
   YAML::Node target = descend(node, o, o.steps.size() - 1);
   target = value;
-  source.add_override(o.path, text);
+  source.add_override(o.path, o.origin);
 }
 
 }  // namespace elbowsim::loader

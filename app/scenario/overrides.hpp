@@ -15,5 +15,9 @@ namespace elbowsim::loader {
 // the way; list indices must exist. Records the override in `source` so that
 // later errors in the value it set name it. Throws ScenarioError.
 void apply_override(YAML::Node& root, const std::string& text, Source& source);
+// Same, for an override given elsewhere (a variant's entry in the file):
+// errors in the value it set are reported at `origin`.
+void apply_override(YAML::Node& root, const std::string& text, Source& source,
+                    const Source::Origin& origin);
 
 }  // namespace elbowsim::loader

@@ -5,9 +5,11 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/model.hpp"
+#include "render/render_settings.hpp"
 
 namespace elbowsim {
 
@@ -17,6 +19,8 @@ struct OutputSettings {
   bool trajectory = true;                       // write trajectory.csv
   bool summary = true;                          // write summary.json
   int every = 1;                                // record every N-th step (>= 1)
+  bool video = false;                           // render video.mp4 (render: section)
+  bool frames = false;                          // render frames/frame_00001.png ...
 };
 
 struct Scenario {
@@ -24,10 +28,15 @@ struct Scenario {
   std::string description;
   Model model;  // finalized (elbowsim::finalize called); model.initial from `initial:`
   OutputSettings output;
+  RenderSettings render;  // how frames look; rendered when output.video or output.frames
   // The scenario as run: the file's YAML with the overrides applied. A run
   // folder keeps it (scenario.yaml) so renders and reports can rebuild the
   // model without the original file.
   std::string resolved_yaml;
+  // variants: name -> its overrides ("key.path=value", applied like --set after
+  // the file, before the command line's). Each is validated by the loader.
+  std::vector<std::pair<std::string, std::vector<std::string>>> variants;
+  std::string variant;  // the variant this is (load_scenario_variant); "" otherwise
 };
 
 // An error in a scenario. what() reads "file:line:column: key.path: message";
@@ -51,5 +60,15 @@ Scenario load_scenario(const std::string& path, const std::vector<std::string>& 
 // Same from text; `file_name` is used only in messages and Scenario::file.
 Scenario load_scenario_text(const std::string& text, const std::string& file_name,
                             const std::vector<std::string>& overrides = {});
+
+// One variant of a scenario: the file, then the variant's overrides, then
+// `overrides`. The result has no variants (nor has its resolved_yaml), so a
+// run folder's scenario.yaml is that variant alone. Throws ScenarioError, also
+// when the scenario has no variant `name`.
+Scenario load_scenario_variant(const std::string& path, const std::string& name,
+                               const std::vector<std::string>& overrides = {});
+Scenario load_scenario_variant_text(const std::string& text, const std::string& file_name,
+                                    const std::string& name,
+                                    const std::vector<std::string>& overrides = {});
 
 }  // namespace elbowsim

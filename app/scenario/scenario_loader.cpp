@@ -69,21 +69,23 @@ std::string read_name(const Value& v) {
 
 // finalize() re-checks the model; the readers above should have caught
 // everything, so a failure here has no line to point at.
-void finalize_model(Model& model, const std::string& file) {
+void finalize_model(Model& model, const Source& source) {
   try {
     finalize(model);
   } catch (const std::invalid_argument& e) {
-    throw ScenarioError(file, 0, 0, "", e.what());
+    throw ScenarioError(source.file(), 0, 0, "", e.what() + source.note());
   }
 }
 
 // The sections, in dependency order: effects and robot (dof) before motors,
-// elbows, initial state and inputs.
-Scenario read(const Value& root, const std::string& file) {
+// elbows, initial state, inputs and the task. Fills `variants` with the
+// variants: section (with where each entry is written).
+Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>& variants) {
   root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "elbows",
-                   "table", "contact", "initial", "simulation", "inputs", "output"});
+                   "table", "contact", "initial", "simulation", "inputs", "output", "render",
+                   "task", "controller", "hand_load", "variants"});
   Scenario s;
-  s.file = file;
+  s.file = source.file();
   Model& model = s.model;
   model.name = read_name(root.require("name"));
   s.description = value_or(root.get("description"), std::string(), text);
@@ -99,34 +101,92 @@ Scenario read(const Value& root, const std::string& file) {
   model.options = read_simulation(root.require("simulation"));
   model.initial = read_initial(root.get("initial"), model.dof);
   model.inputs = read_inputs(root.get("inputs"), model);
+  model.task = read_task(root.get("task"), model);
+  model.controller = read_controller(root.get("controller"), model);
+  model.hand_load = read_hand_load(root.get("hand_load"));
   s.output = read_output(root.get("output"), model.name);
-  finalize_model(model, file);
+  s.render = read_render(root.get("render"));
+  finalize_model(model, source);
   check_initial_penetration(root, model);
+  variants = read_variants(root.get("variants"));
+  for (const VariantSpec& v : variants) {
+    s.variants.emplace_back(v.name, std::vector<std::string>());
+    for (const VariantSpec::Entry& e : v.overrides) s.variants.back().second.push_back(e.text);
+  }
   return s;
 }
 
-}  // namespace
-
-}  // namespace loader
-
-Scenario load_scenario_text(const std::string& text, const std::string& file_name,
-                            const std::vector<std::string>& overrides) {
-  loader::Source source(file_name);
-  YAML::Node root = loader::parse(text, file_name);
-  for (const std::string& o : overrides) loader::apply_override(root, o, source);
-  Scenario scenario = loader::read(loader::Value(source, root), file_name);
+// One load: the file, then `variant`'s overrides (if any; errors they cause
+// name the variant), then `overrides`. A variant's scenario has no variants.
+Scenario load_once(const std::string& text, const std::string& file, const VariantSpec* variant,
+                   const std::vector<std::string>& overrides, std::vector<VariantSpec>& variants) {
+  Source source(file);
+  YAML::Node root = parse(text, file);
+  if (variant) {
+    source.set_note(" (in variant " + variant->name + ")");
+    for (const VariantSpec::Entry& e : variant->overrides)
+      apply_override(root, e.text, source, e.origin);
+  }
+  for (const std::string& o : overrides) apply_override(root, o, source);
+  if (variant) root.remove("variants");
+  Scenario scenario = read(Value(source, root), source, variants);
+  scenario.variant = variant ? variant->name : "";
   YAML::Emitter resolved;
   resolved << root;
   scenario.resolved_yaml = std::string(resolved.c_str()) + "\n";
   return scenario;
 }
 
-Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides) {
+const VariantSpec& find_variant(const std::vector<VariantSpec>& variants, const std::string& name,
+                                const std::string& file) {
+  std::vector<std::string_view> names;
+  for (const VariantSpec& v : variants) {
+    if (v.name == name) return v;
+    names.push_back(v.name);
+  }
+  throw ScenarioError(file, 0, 0, "variants",
+                      "no variant named \"" + name + "\"" +
+                          (names.empty() ? " (the scenario has none)" : "; it has " + join(names)));
+}
+
+std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ScenarioError(path, 0, 0, "", std::string("cannot open: ") + std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
-  return load_scenario_text(text.str(), path, overrides);
+  return text.str();
+}
+
+}  // namespace
+
+}  // namespace loader
+
+// The scenario itself, then each variant loaded once to check it.
+Scenario load_scenario_text(const std::string& text, const std::string& file_name,
+                            const std::vector<std::string>& overrides) {
+  std::vector<loader::VariantSpec> variants, none;
+  Scenario scenario = loader::load_once(text, file_name, nullptr, overrides, variants);
+  for (const loader::VariantSpec& v : variants)
+    loader::load_once(text, file_name, &v, overrides, none);
+  return scenario;
+}
+
+Scenario load_scenario_variant_text(const std::string& text, const std::string& file_name,
+                                    const std::string& name,
+                                    const std::vector<std::string>& overrides) {
+  std::vector<loader::VariantSpec> variants, none;
+  loader::load_once(text, file_name, nullptr, overrides, variants);
+  const loader::VariantSpec& v = loader::find_variant(variants, name, file_name);
+  return loader::load_once(text, file_name, &v, overrides, none);
+}
+
+Scenario load_scenario_variant(const std::string& path, const std::string& name,
+                               const std::vector<std::string>& overrides) {
+  return load_scenario_variant_text(loader::read_file(path), path, name, overrides);
+}
+
+Scenario load_scenario(const std::string& path, const std::vector<std::string>& overrides) {
+  return load_scenario_text(loader::read_file(path), path, overrides);
 }
 
 }  // namespace elbowsim

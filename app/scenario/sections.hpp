@@ -30,6 +30,7 @@ Options read_simulation(const Value& simulation);                          // re
 Model::InitialState read_initial(const Value& initial, int dof);           // optional
 OpenLoopInputs read_inputs(const Value& inputs, const Model& model);       // optional
 OutputSettings read_output(const Value& output, const std::string& name);  // optional
+RenderSettings read_render(const Value& render);                           // optional
 
 // elbows (optional list): spheres on the links. Needs model.dof and
 // model.links; `planar` says the robot was given as robot.planar, the only
@@ -42,5 +43,24 @@ ContactOptions read_contact(const Value& contact);     // optional; defaults: Co
 void check_contact_scene(const Value& root, const Model& model);
 // After finalize(): no elbow starts deeper in the table than allowed.
 void check_initial_penetration(const Value& root, const Model& model);
+
+// task, controller, hand_load (optional): the paper's experiment. Call after
+// model.elbows, model.table and model.initial are read; read_controller after
+// model.task. Controller gains are expanded to one per joint.
+HandTask read_task(const Value& task, const Model& model);
+ControllerSpec read_controller(const Value& controller, const Model& model);
+HandLoad read_hand_load(const Value& hand_load);
+
+// variants (optional): name -> overrides "key.path=value", in file order, each
+// with where it was written (for errors found when the variant is loaded).
+struct VariantSpec {
+  struct Entry {
+    std::string text;       // "key.path=yaml value", as for --set
+    Source::Origin origin;  // the entry's key in the file
+  };
+  std::string name;
+  std::vector<Entry> overrides;
+};
+std::vector<VariantSpec> read_variants(const Value& variants);
 
 }  // namespace elbowsim::loader

@@ -86,7 +86,7 @@ OutputSettings read_output(const Value& output, const std::string& name) {
   OutputSettings out;
   out.folder = "runs/" + name;
   if (!output.present()) return out;
-  output.allow_keys({"folder", "trajectory", "summary", "every"});
+  output.allow_keys({"folder", "trajectory", "summary", "every", "video", "frames"});
   Value folder = output.get("folder");
   out.folder = value_or(folder, out.folder, text);
   if (out.folder.empty()) folder.fail("must not be empty");
@@ -98,6 +98,8 @@ OutputSettings read_output(const Value& output, const std::string& name) {
   if (n > std::numeric_limits<int>::max())
     every.fail("is too large (got " + std::to_string(n) + ")");
   out.every = static_cast<int>(n);
+  out.video = value_or(output.get("video"), out.video, boolean);
+  out.frames = value_or(output.get("frames"), out.frames, boolean);
   return out;
 }
 

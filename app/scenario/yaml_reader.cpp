@@ -67,17 +67,21 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 // ---------------------------------------------------------------------------
 // Source
 
-void Source::add_override(std::string path, std::string text) {
-  overrides_.push_back({std::move(path), std::move(text)});
+void Source::add_override(std::string path, Origin origin) {
+  overrides_.push_back({std::move(path), std::move(origin)});
+}
+
+Source::Origin Source::origin(const YAML::Mark& mark, const std::string& key) const {
+  for (auto it = overrides_.rbegin(); it != overrides_.rend(); ++it) {
+    if (is_under(key, it->path)) return it->origin;
+  }
+  return {file_, one_based(mark.line), one_based(mark.column)};
 }
 
 void Source::fail(const YAML::Mark& mark, const std::string& key,
                   const std::string& message) const {
-  for (auto it = overrides_.rbegin(); it != overrides_.rend(); ++it) {
-    if (is_under(key, it->path))
-      throw ScenarioError("command line --set " + it->text, 0, 0, key, message);
-  }
-  throw ScenarioError(file_, one_based(mark.line), one_based(mark.column), key, message);
+  const Origin o = origin(mark, key);
+  throw ScenarioError(o.file, o.line, o.column, key, message + note_);
 }
 
 // ---------------------------------------------------------------------------
@@ -101,6 +105,43 @@ Value& Value::operator=(const Value& other) {
 bool Value::present() const { return exists_ && node_.IsDefined() && !node_.IsNull(); }
 
 void Value::fail(const std::string& message) const { source_->fail(mark_, path_, message); }
+
+Source::Origin Value::origin() const { return source_->origin(mark_, path_); }
+
+namespace {
+
+// Flow-style YAML of a node. Quoted scalars stay quoted ("1.0" stays a
+// string), which yaml-cpp's own emitter of a node would drop.
+void emit_flow(YAML::Emitter& out, const YAML::Node& node) {
+  if (node.IsScalar()) {
+    if (is_quoted(node)) out << YAML::DoubleQuoted;
+    out << node.Scalar();
+  } else if (node.IsSequence()) {
+    out << YAML::Flow << YAML::BeginSeq;
+    for (const auto& item : node) emit_flow(out, item);
+    out << YAML::EndSeq;
+  } else if (node.IsMap()) {
+    out << YAML::Flow << YAML::BeginMap;
+    for (const auto& entry : node) {
+      out << YAML::Key;
+      emit_flow(out, entry.first);
+      out << YAML::Value;
+      emit_flow(out, entry.second);
+    }
+    out << YAML::EndMap;
+  } else {
+    out << YAML::Null;
+  }
+}
+
+}  // namespace
+
+std::string Value::flow_yaml() const {
+  if (!present()) return "";
+  YAML::Emitter out;
+  emit_flow(out, node_);
+  return out.c_str();
+}
 
 std::string Value::child_path(std::string_view key) const {
   return path_.empty() ? std::string(key) : path_ + "." + std::string(key);

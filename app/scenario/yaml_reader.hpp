@@ -17,24 +17,39 @@
 
 namespace elbowsim::loader {
 
-// The origin of a tree: one file plus the --set overrides applied to it, in
-// order. Decides where an error is reported: at the override whose key path
-// contains the offending key (the last one applied wins), else at the file mark.
+// The origin of a tree: one file plus the overrides applied to it, in order
+// (a variant's entries, then --set). Decides where an error is reported: at the
+// override whose key path contains the offending key (the last one applied
+// wins), else at the file mark.
 class Source {
  public:
+  // Where a value came from: a file position, or "command line --set <text>"
+  // (line and column 0).
+  struct Origin {
+    std::string file;
+    int line = 0;    // 1-based, 0 if none
+    int column = 0;  // 1-based, 0 if none
+  };
+
   explicit Source(std::string file) : file_(std::move(file)) {}
   const std::string& file() const { return file_; }
-  void add_override(std::string path, std::string text);
+  void add_override(std::string path, Origin origin);
+  // Appended to every message, e.g. " (in variant elbow_off)".
+  void set_note(std::string note) { note_ = std::move(note); }
+  const std::string& note() const { return note_; }
+  // Where the node at `mark` with key path `key` came from.
+  Origin origin(const YAML::Mark& mark, const std::string& key) const;
   [[noreturn]] void fail(const YAML::Mark& mark, const std::string& key,
                          const std::string& message) const;
 
  private:
   struct Override {
     std::string path;  // normalized key path it set
-    std::string text;  // as given on the command line
+    Origin origin;
   };
   std::string file_;
   std::vector<Override> overrides_;
+  std::string note_;
 };
 
 // One node of the tree, possibly missing (a key that is not there).
@@ -50,6 +65,8 @@ class Value {
   bool is_map() const { return present() && node_.IsMap(); }
   bool is_sequence() const { return present() && node_.IsSequence(); }
   [[noreturn]] void fail(const std::string& message) const;
+  Source::Origin origin() const;  // where this node came from (file line or --set)
+  std::string flow_yaml() const;  // the node as one line of YAML ("" if null)
 
   // --- maps ---------------------------------------------------------------
   // Fails unless a map whose keys are plain, unique and among `allowed`

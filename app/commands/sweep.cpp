@@ -1,0 +1,101 @@
+// elbowsim sweep: one run of a scenario (with its variants, if any) per value
+// of one key, into DIR/<key>=<value>/ (and <variant>/ below), then
+// DIR/sweep.csv with one row per (value, variant). Serves the
+// accuracy-vs-speed study (task.duration) and the elbow-position study
+// (elbows[0].at).
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <set>
+
+#include "app/commands/commands.hpp"
+#include "app/output/atomic_file.hpp"
+#include "app/output/comparison.hpp"
+#include "app/scenario/scenario.hpp"
+
+namespace elbowsim {
+
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
+}
+
+// "8, 6,4" -> {"8", "6", "4"}.
+std::vector<std::string> split_values(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  for (std::size_t comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1)
+    out.push_back(trim(text.substr(start, comma - start)));
+  out.push_back(trim(text.substr(start)));
+  return out;
+}
+
+int usage_error(const std::string& message) {
+  std::cerr << "error: sweep: " << message << '\n';
+  return exit_bad_input;
+}
+
+// Each value becomes a folder name and a sweep.csv cell.
+std::string check_values(const std::string& key, const std::vector<std::string>& values) {
+  if (key.empty() || key.find('=') != std::string::npos)
+    return "--key needs a key path, e.g. --key task.duration";
+  std::set<std::string> seen;
+  for (const std::string& v : values) {
+    if (v.empty()) return "--values needs a comma-separated list, e.g. --values 8,6,4";
+    if (v.find('/') != std::string::npos) return "a value must not contain '/' (got " + v + ")";
+    if (!seen.insert(v).second) return "value " + v + " is given twice";
+  }
+  return "";
+}
+
+}  // namespace
+
+int sweep_command(const SweepArguments& args) {
+  if (!expectations_well_formed(args.run.expect)) return exit_bad_input;
+  const std::vector<std::string> values = split_values(args.values);
+  if (const std::string problem = check_values(args.key, values); !problem.empty())
+    return usage_error(problem);
+  // Load every value first (the swept key last, after --set): a bad one writes nothing.
+  std::vector<RunArguments> runs;
+  std::vector<Scenario> scenarios;
+  try {
+    for (const std::string& v : values) {
+      runs.push_back(args.run);
+      runs.back().sets.push_back(args.key + "=" + v);
+      scenarios.push_back(load_scenario(args.run.scenario, runs.back().sets));
+    }
+  } catch (const ScenarioError& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_bad_input;
+  }
+  const std::filesystem::path folder =
+      args.run.out.value_or(scenarios.front().output.folder + "/sweep");
+  std::vector<SweepRow> rows;
+  int code = exit_ok;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::string sub = args.key + "=" + values[i];
+    std::vector<RunRecord> records;
+    const int c = run_scenario(runs[i], scenarios[i], folder / sub, records);
+    if (c == exit_io) return exit_io;
+    if (code == exit_ok) code = c;
+    for (RunRecord& r : records) {
+      r.folder = r.folder == "." ? sub : sub + "/" + r.folder;
+      rows.push_back({values[i], std::move(r)});
+    }
+  }
+  try {
+    write_atomically(folder / "sweep.csv",
+                     [&](std::ostream& out) { write_sweep_csv(out, args.key, rows); });
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_io;
+  }
+  std::cout << "sweep of " << args.key << ": " << rows.size() << " runs; table in "
+            << (folder / "sweep.csv").string() << '\n';
+  return code;
+}
+
+}  // namespace elbowsim

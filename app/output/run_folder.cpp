@@ -1,0 +1,137 @@
+#include "app/output/run_folder.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "app/output/trajectory_csv.hpp"
+#include "app/scenario/scenario.hpp"
+
+namespace elbowsim {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Rows = std::vector<std::pair<std::string, std::string>>;
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", v);
+  return text;
+}
+
+// events.csv rows: time, elbow, kind, speed, impulse, energy_lost.
+std::vector<report::EventRow> read_events(const fs::path& path) {
+  std::ifstream in(path);
+  std::vector<report::EventRow> rows;
+  std::string line;
+  std::getline(in, line);  // header
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
+    std::stringstream cells(line);
+    std::string t, elbow, kind, speed, impulse, lost;
+    std::getline(cells, t, ','), std::getline(cells, elbow, ','), std::getline(cells, kind, ',');
+    std::getline(cells, speed, ','), std::getline(cells, impulse, ','), std::getline(cells, lost);
+    try {
+      rows.push_back({std::stod(t), elbow, kind, std::stod(speed), std::stod(impulse), std::stod(lost)});
+    } catch (const std::exception&) {
+      throw std::runtime_error(path.string() + ":" + std::to_string(number) + ": malformed event row");
+    }
+  }
+  return rows;
+}
+
+std::string links_text(const Model& m) {
+  std::string text;
+  for (const Link& link : m.links)
+    text += (text.empty() ? "" : "; ") + number(link.tip.norm()) + " m, " + number(link.mass) + " kg";
+  return text;
+}
+
+std::string motor_text(const Motor& motor) {
+  return "R " + number(motor.resistance) + " ohm, L " + number(motor.inductance) + " H, K " +
+         number(motor.torque_constant) + " N m/A, gear " + number(motor.gear_ratio) +
+         ":1, limit " + number(motor.voltage_limit) + " V";
+}
+
+std::string motors_text(const Model& m) {
+  bool same = true;
+  for (const Motor& motor : m.motors) same = same && motor_text(motor) == motor_text(m.motors[0]);
+  if (same && !m.motors.empty()) return "each joint: " + motor_text(m.motors[0]);
+  std::string text;
+  for (std::size_t j = 0; j < m.motors.size(); ++j)
+    text += (j ? "; " : "") + std::string("joint ") + std::to_string(j) + ": " + motor_text(m.motors[j]);
+  return text;
+}
+
+std::string contact_text(const Model& m) {
+  std::string text;
+  for (const Elbow& e : m.elbows)
+    text += (text.empty() ? "" : "; ") + e.name + " on link " + std::to_string(e.link) +
+            ", radius " + number(e.radius) + " m";
+  text += "; table of " + std::to_string(m.table.size()) + " box(es); restitution " +
+          number(m.contact.restitution);
+  if (m.effects.friction) text += ", friction mu " + number(m.contact.friction);
+  if (m.effects.stabilization == Stabilization::baumgarte)
+    text += ", Baumgarte time " + number(m.contact.baumgarte_time) + " s";
+  return text;
+}
+
+// The model in a few rows, rebuilt from the scenario as run.
+Rows model_rows(const Model& m) {
+  Rows rows{{"links (length, mass)", links_text(m)}};
+  if (m.has_motor()) rows.push_back({"motors", motors_text(m)});
+  std::string gravity = number(m.gravity.x());
+  gravity += ", " + number(m.gravity.y()) + ", " + number(m.gravity.z());
+  rows.push_back({"gravity", "(" + gravity + ") m/s^2"});
+  if (m.effects.contact) rows.push_back({"elbows and table", contact_text(m)});
+  return rows;
+}
+
+void read_scenario(const fs::path& file, report::RunData& run) {
+  run.scenario_yaml = slurp(file);
+  try {
+    run.model_rows = model_rows(load_scenario_text(run.scenario_yaml, file.string()).model);
+  } catch (const std::exception& e) {
+    run.problems.push_back("scenario.yaml: the model could not be rebuilt: " + std::string(e.what()));
+  }
+}
+
+}  // namespace
+
+report::RunData load_run_folder(const fs::path& folder) {
+  if (!fs::is_directory(folder)) throw NotARunFolder(folder.string() + ": no such folder");
+  report::RunData run;
+  run.folder = folder;
+  run.label = fs::weakly_canonical(fs::absolute(folder)).filename().string();
+  const fs::path summary = folder / "summary.json", trajectory = folder / "trajectory.csv";
+  if (!fs::exists(summary) && !fs::exists(trajectory))
+    throw NotARunFolder(folder.string() + ": not a run folder (no summary.json, no trajectory.csv)");
+  // Each file on its own: one that cannot be read is a problem shown in the report.
+  const auto attempt = [&](const fs::path& file, auto&& read) {
+    if (!fs::exists(file)) return run.problems.push_back(file.filename().string() + ": not in the run folder");
+    try {
+      read();
+    } catch (const std::exception& e) {
+      run.problems.push_back(file.filename().string() + ": " + e.what());
+    }
+  };
+  attempt(summary, [&] { run.summary = nlohmann::ordered_json::parse(slurp(summary)); });
+  attempt(trajectory, [&] {
+    std::ifstream in(trajectory);
+    run.trajectory = read_trajectory_csv(in, trajectory.string());
+  });
+  if (fs::exists(folder / "events.csv")) attempt(folder / "events.csv", [&] { run.events = read_events(folder / "events.csv"); });
+  attempt(folder / "scenario.yaml", [&] { read_scenario(folder / "scenario.yaml", run); });
+  run.has_video = fs::exists(folder / "video.mp4");
+  return run;
+}
+
+}  // namespace elbowsim

@@ -1,0 +1,100 @@
+// render: how frames and videos of a run look (camera, size, rate,
+// anti-aliasing, force arrows). Whether a run renders at all is output.video /
+// output.frames (settings_section.cpp).
+#include <cmath>
+
+#include "app/scenario/checks.hpp"
+#include "app/scenario/sections.hpp"
+
+namespace elbowsim::loader {
+
+namespace {
+
+// A whole number in [lo, hi].
+long whole_in(const Value& v, long lo, long hi) {
+  const long x = v.integer();
+  if (x < lo || x > hi)
+    v.fail("must be in " + std::to_string(lo) + " .. " + std::to_string(hi) + " (got " +
+           std::to_string(x) + ")");
+  return x;
+}
+
+// render.camera: {preset, fov_deg} or {eye, target, up, fov_deg}.
+CameraSettings read_camera(const Value& camera) {
+  CameraSettings out;
+  if (!camera.present()) return out;
+  camera.allow_keys({"preset", "eye", "target", "up", "fov_deg"});
+  Value fov = camera.get("fov_deg");
+  if (fov.present()) {
+    out.fov_deg = fov.number();
+    if (!(out.fov_deg >= 1 && out.fov_deg <= 170))
+      fov.fail("must be in [1, 170] degrees (got " + format_number(out.fov_deg) + ")");
+  }
+  Value preset = camera.get("preset");
+  if (preset.present()) {
+    for (const char* key : {"eye", "target", "up"})
+      if (camera.get(key).exists())
+        camera.get(key).fail("give either preset or eye and target (with up), not both");
+    out.preset = choose(preset, {CameraPreset::front, CameraPreset::side, CameraPreset::top,
+                                 CameraPreset::three_quarter});
+    return out;
+  }
+  if (!camera.get("eye").exists() && !camera.get("target").exists() && !camera.get("up").exists())
+    return out;
+  out.explicit_pose = true;
+  out.eye = camera.require("eye").vec3();
+  Value target = camera.require("target");
+  out.target = target.vec3();
+  const Eigen::Vector3d view = out.target - out.eye;
+  if (view.norm() < 1e-9) target.fail("must differ from eye");
+  Value up = camera.get("up");
+  out.up = value_or(up, out.up, vec3);
+  if (out.up.cross(view).norm() <= 1e-9 * out.up.norm() * view.norm())
+    (up.present() ? up : target)
+        .fail("up [" + format_number(out.up.x()) + ", " + format_number(out.up.y()) + ", " +
+              format_number(out.up.z()) + "] must not be zero or parallel to target - eye");
+  return out;
+}
+
+// render.size: [width, height] in pixels, even (H.264 with yuv420p halves the
+// chroma resolution).
+void read_size(const Value& size, RenderSettings& out) {
+  if (!size.present()) return;
+  const std::vector<Value> items = size.items();
+  if (items.size() != 2)
+    size.fail("expected [width, height] in pixels (got " + std::to_string(items.size()) +
+              " values)");
+  int* targets[2] = {&out.width, &out.height};
+  for (int k = 0; k < 2; ++k) {
+    const long x = whole_in(items[std::size_t(k)], 16, 8192);
+    if (x % 2 != 0)
+      items[std::size_t(k)].fail("must be even (H.264 video with yuv420p; got " +
+                                 std::to_string(x) + ")");
+    *targets[k] = int(x);
+  }
+}
+
+}  // namespace
+
+RenderSettings read_render(const Value& render) {
+  RenderSettings out;
+  if (!render.present()) return out;
+  render.allow_keys({"camera", "size", "fps", "msaa", "supersample", "force_scale"});
+  out.camera = read_camera(render.get("camera"));
+  read_size(render.get("size"), out);
+  Value fps = render.get("fps");
+  out.fps = value_or(fps, out.fps, positive);
+  if (out.fps > 240) fps.fail("must be <= 240 (got " + format_number(out.fps) + ")");
+  Value msaa = render.get("msaa");
+  if (msaa.present()) {
+    const long samples = msaa.integer();
+    if (samples != 1 && samples != 2 && samples != 4)
+      msaa.fail("must be 1 (off), 2 or 4 (got " + std::to_string(samples) + ")");
+    out.msaa = int(samples);
+  }
+  out.supersample = value_or(render.get("supersample"), out.supersample, boolean);
+  out.force_scale = value_or(render.get("force_scale"), out.force_scale, non_negative);
+  return out;
+}
+
+}  // namespace elbowsim::loader

@@ -1,0 +1,122 @@
+// End-to-end frame rate of the renderer (render/render_job.cpp): scene
+// building, drawing (OSMesa llvmpipe, GL 3.3 core), read-back through
+// pixel-buffer objects, overlay, and piping raw RGB frames to ffmpeg (libx264,
+// yuv420p, mp4), with drawing and encoding overlapped (writer thread + the
+// ffmpeg process). A plain timed program, not Google Benchmark: one
+// measurement is a whole render of 150 frames (5 s at 30 fps).
+//
+// Prototype scene: an 8-link planar arm (8 capsules) swinging over a table,
+// with 3 elbow spheres (two resting with force arrows), the hand path and the
+// ground grid. Protocol: one warm-up render, then 3 timed renders per
+// configuration; reports the median and where the time went in that run.
+//
+// Run: build/bench/bench_render [runs]   (output in /tmp/elbowsim_bench_render)
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <numbers>
+#include <vector>
+
+#include "render/frame_source.hpp"
+#include "render/render_job.hpp"
+#include "support/models.hpp"
+
+using namespace elbowsim;
+
+namespace {
+
+Model prototype_arm() {
+  std::vector<testing::PlanarLinkSpec> links(8, {0.11, 0.4, 0.055, 4e-4});
+  Model m = testing::planar_arm(links);
+  for (Link& link : m.links) link.radius = 0.018;
+  m.elbows = {Elbow{"e1", 1, Eigen::Vector3d(0.11, 0, 0), 0.025},
+              Elbow{"e3", 3, Eigen::Vector3d(0.11, 0, 0), 0.025},
+              Elbow{"e5", 5, Eigen::Vector3d(0.11, 0, 0), 0.025}};
+  m.table = {TableBox{{0.5, 0, -0.08}, {1.3, 0.8, 0.1}, Eigen::Matrix3d::Identity()}};
+  m.effects.contact = true;
+  finalize(m);
+  return m;
+}
+
+// 5 s at 1 kHz / 10 (like output.every: 10): the arm waves, elbows rest and lift.
+Recording prototype_recording(const Model& model) {
+  Recording rec;
+  rec.columns.push_back({"time", "s"});
+  for (int j = 0; j < 8; ++j)
+    rec.columns.push_back({std::string("q").append(std::to_string(j)), "rad"});
+  for (const char* c : {"hand_x", "hand_y", "hand_z"}) rec.columns.push_back({c, "m"});
+  for (const Elbow& e : model.elbows) {
+    rec.columns.push_back({"fn_" + e.name, "N"});
+    rec.columns.push_back({"rest_" + e.name, "1"});
+  }
+  rec.columns.push_back({"E_in", "J"});
+  for (int k = 0; k <= 500; ++k) {
+    const double t = 0.01 * k;
+    rec.values.push_back(t);
+    for (int j = 0; j < 8; ++j)
+      rec.values.push_back(0.35 * std::sin(2 * std::numbers::pi * 0.4 * t + 0.7 * j) - 0.05);
+    const double hx = 0.7 + 0.1 * std::sin(t), hz = 0.1 + 0.05 * std::cos(2 * t);
+    rec.values.insert(rec.values.end(), {hx, 0.0, hz});
+    for (int e = 0; e < 3; ++e) {
+      const bool rest = std::sin(2 * t + e) > -0.3;
+      rec.values.insert(rec.values.end(),
+                        {rest ? 8.0 + 3 * std::sin(3 * t + e) : 0.0, rest ? 1.0 : 0.0});
+    }
+    rec.values.push_back(2.0 * t);
+  }
+  return rec;
+}
+
+struct Config {
+  int width, height, msaa;
+  bool video;
+};
+
+void print_row(const Config& c, std::vector<RenderStats> runs) {
+  std::sort(runs.begin(), runs.end(), [](const RenderStats& a, const RenderStats& b) {
+    return a.wall_seconds < b.wall_seconds;
+  });
+  const RenderStats& m = runs[runs.size() / 2];
+  const double per = 1000.0 / m.frames;  // ms per frame
+  std::printf(
+      "%5dx%-4d  msaa %d  %-4s  %6.1f fps (%5.1f .. %5.1f)  ms/frame: scene %4.2f  "
+      "draw %5.2f  end %5.2f  fetch %5.2f | writer: compose %4.2f  output %5.2f\n",
+      c.width, c.height, m.samples, c.video ? "mp4" : "none", m.frames / m.wall_seconds,
+      runs.back().frames / runs.back().wall_seconds,
+      runs.front().frames / runs.front().wall_seconds, m.scene_seconds * per, m.draw_seconds * per,
+      m.finish_seconds * per, m.readback_seconds * per, m.compose_seconds * per,
+      m.output_seconds * per);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
+  const Model model = prototype_arm();
+  const Recording recording = prototype_recording(model);
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / "elbowsim_bench_render";
+  std::filesystem::create_directories(folder);
+
+  RenderSettings settings;
+  settings.fps = 30;
+  const std::vector<Config> configs = {{640, 480, 1, true},   {640, 480, 4, true},
+                                       {1280, 720, 1, true},  {1280, 720, 4, true},
+                                       {1280, 720, 1, false}, {1280, 720, 4, false}};
+  bool warmed = false;
+  for (const Config& c : configs) {
+    settings.width = c.width;
+    settings.height = c.height;
+    settings.msaa = c.msaa;
+    const FrameSource source(model, recording, settings, "prototype");
+    const RenderRequest request{folder, c.video, false};
+    if (!warmed) render_panels({&source}, settings, request), warmed = true;
+    std::vector<RenderStats> stats;
+    for (int r = 0; r < runs; ++r) stats.push_back(render_panels({&source}, settings, request));
+    if (c.width == 1280 && c.msaa == 4 && c.video) std::printf("(%s)\n", stats[0].gl.c_str());
+    print_row(c, stats);
+  }
+}

@@ -1,0 +1,18 @@
+// PNG files via libpng: the only file that includes png.h (STYLE.md lesson 5).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace elbowsim {
+
+// Writes an 8-bit RGB image (rows top-down, 3 bytes per pixel) as PNG. Fast
+// settings for frame sequences: the SUB filter only, zlib level 2. Throws
+// std::runtime_error naming the file on failure.
+void write_png(const std::filesystem::path& path, int width, int height, const std::uint8_t* rgb);
+
+// Reads an 8-bit RGB or RGBA PNG back as RGB (for tests). Throws on failure.
+std::vector<std::uint8_t> read_png(const std::filesystem::path& path, int& width, int& height);
+
+}  // namespace elbowsim

@@ -1,0 +1,130 @@
+#include "report/html.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+namespace elbowsim::report::html {
+
+namespace {
+
+constexpr const char* kStyle = R"(
+body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; color: #1a1a1a;
+       max-width: 980px; margin: 1.5em auto; padding: 0 1em; line-height: 1.45; }
+h1 { margin-bottom: 0.2em; }
+h2 { border-bottom: 1px solid #ddd; padding-bottom: 0.2em; margin-top: 1.8em; }
+.description { font-size: 1.1em; color: #333; margin-top: 0; }
+.meta { color: #666; font-size: 0.9em; }
+.failure { background: #fde8e8; border: 2px solid #c0392b; padding: 0.6em 1em; }
+.warnings { background: #fff6d6; border: 2px solid #d4a017; padding: 0.6em 1em; }
+.problems { background: #eef2f7; border: 2px solid #7f8c9d; padding: 0.6em 1em; }
+.verdict { background: #e9f5ec; border: 2px solid #3c8d50; padding: 0.6em 1em; font-size: 1.05em; }
+.failure ul, .warnings ul, .problems ul, .verdict ul { margin: 0.3em 0; }
+table { border-collapse: collapse; margin: 0.5em 0; font-size: 0.92em; }
+th, td { border: 1px solid #ddd; padding: 0.25em 0.6em; text-align: left; vertical-align: top; }
+th { background: #f3f3f3; }
+tr:nth-child(even) td { background: #fafafa; }
+td.num { text-align: right; font-family: "DejaVu Sans Mono", monospace; white-space: nowrap; }
+td.differs, tr.differs code { font-weight: bold; }
+code { font-family: "DejaVu Sans Mono", monospace; font-size: 0.95em; }
+figure { margin: 1.2em 0; }
+figure img { max-width: 100%; height: auto; border: 1px solid #e3e3e3; }
+figcaption { color: #444; font-size: 0.92em; }
+nav { margin: 0.8em 0; }
+video { max-width: 100%; border: 1px solid #ccc; }
+pre { background: #f6f6f6; padding: 0.8em; overflow-x: auto; font-size: 0.85em; }
+)";
+
+}  // namespace
+
+std::string escape(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string display_value(const nlohmann::ordered_json& value) {
+  if (value.is_null()) return "NaN";
+  if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+  if (value.is_number_integer()) return value.dump();
+  if (!value.is_number()) return value.dump();
+  char text[40];
+  std::snprintf(text, sizeof text, "%.6g", value.get<double>());
+  return text;
+}
+
+std::string exact_value(const nlohmann::ordered_json& value) {
+  if (!value.is_number_float()) return display_value(value);
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", value.get<double>());
+  return text;
+}
+
+std::string page_begin(const std::string& title) {
+  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+         "<meta name=\"generator\" content=\"elbowsim\">\n<title>" +
+         escape(title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
+}
+
+std::string page_end() { return "</body>\n</html>\n"; }
+
+std::string notice(const std::string& css_class, const std::string& heading,
+                   const std::vector<std::string>& items, const std::string& id) {
+  std::string out = "<div class=\"" + css_class + "\"" + (id.empty() ? "" : " id=\"" + id + "\"") +
+                    " role=\"alert\">\n<strong>" + escape(heading) + "</strong>\n";
+  if (!items.empty()) {
+    out += "<ul>\n";
+    for (const std::string& item : items) out += "<li>" + escape(item) + "</li>\n";
+    out += "</ul>\n";
+  }
+  return out + "</div>\n";
+}
+
+std::string info_table(const std::vector<std::pair<std::string, std::string>>& rows) {
+  std::string out = "<table class=\"info\">\n";
+  for (const auto& [label, value] : rows)
+    out += "<tr><th scope=\"row\">" + escape(label) + "</th><td>" + escape(value) + "</td></tr>\n";
+  return out + "</table>\n";
+}
+
+std::string metrics_table(const std::vector<Metric>& metrics, const std::string& id) {
+  std::string out = "<table id=\"" + id + "\" class=\"metrics\">\n"
+                    "<tr><th>metric</th><th>value</th><th>unit</th></tr>\n";
+  for (const Metric& m : metrics)
+    out += "<tr><td><code>" + escape(m.path) + "</code></td><td class=\"num\" data-metric=\"" +
+           escape(m.path) + "\" data-value=\"" + exact_value(m.value) + "\">" +
+           escape(display_value(m.value)) + "</td><td>" + escape(m.unit) + "</td></tr>\n";
+  return out + "</table>\n";
+}
+
+std::string figure(const Figure& f) {
+  return "<figure>\n<img src=\"" + escape(f.file) + "\" alt=\"" + escape(f.title) +
+         "\" width=\"" + std::to_string(f.width) + "\" height=\"" + std::to_string(f.height) +
+         "\">\n<figcaption>" + escape(f.caption) + "</figcaption>\n</figure>\n";
+}
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  const std::filesystem::path partial = path.string() + ".tmp";
+  {
+    std::ofstream out(partial, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw std::runtime_error(path.string() + ": cannot write");
+  }
+  std::error_code error;
+  std::filesystem::rename(partial, path, error);
+  if (error) throw std::runtime_error(path.string() + ": " + error.message());
+}
+
+}  // namespace elbowsim::report::html

@@ -1,0 +1,116 @@
+// Plots drawn with cairo and written as PNG: line plots (linear or log axes,
+// NaN gaps, optional timeline lanes under the x axis), grouped bar charts and
+// work-precision diagrams. A figure is plain data; write_png draws it. Cairo
+// is included in plot.cpp only.
+//
+// PNGs are written by cairo's own writer (cairo_surface_write_to_png, itself
+// libpng) so that the report does not depend on the renderer's png_writer.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace elbowsim::plot {
+
+struct Color {
+  double r = 0, g = 0, b = 0;  // [0, 1]
+};
+
+// The i-th colour of a 10-colour qualitative palette (Tableau 10), cycling.
+Color palette(int i);
+
+enum class Scale { linear, log };
+enum class Dash { solid, dashed, dotted };
+
+struct Axis {
+  std::string label;  // "time"
+  std::string unit;   // "s": drawn as "time [s]"; empty: no brackets
+  Scale scale = Scale::linear;
+  std::optional<double> min, max;  // fixed limits; default: from the data
+  bool tight = false;  // limits at the data (time axes); else out to round ticks
+  bool include_zero = false;  // linear: the range reaches 0 (bar charts, magnitudes)
+};
+
+Axis linear_axis(std::string label, std::string unit);
+Axis log_axis(std::string label, std::string unit);
+Axis time_axis();  // "time [s]", tight
+
+// One line. Points with a non-finite x or y (or y <= 0 on a log axis) are not
+// drawn and break the line there.
+struct Series {
+  std::string label;  // legend entry; empty: not in the legend
+  std::vector<double> x, y;
+  std::optional<Color> color;  // default: palette(index of the series)
+  Dash dash = Dash::solid;
+  double width = 1.6;    // [px]
+  bool markers = false;  // a dot at every point
+};
+
+// A timeline strip under the plot: where a state (an elbow resting) holds.
+struct Interval {
+  double begin = 0, end = 0;  // x units
+};
+struct Lane {
+  std::string label;
+  std::vector<Interval> on;
+  std::optional<Color> color;  // default: palette(lane index)
+};
+
+struct LinePlot {
+  std::string title;
+  Axis x = time_axis();
+  Axis y;
+  std::vector<Series> series;
+  std::vector<Lane> lanes;  // drawn between the plot and the x tick labels
+  // Shown in the plot area when no series has a drawable point.
+  std::string empty_message = "no data";
+  int width = 900, height = 480;  // [px]
+};
+
+// Bars grouped by category: each group is one legend entry with one value per
+// category (e.g. categories = runs, groups = "E_in", "Joule").
+struct BarGroup {
+  std::string label;
+  std::vector<double> values;  // [categories]; non-finite: no bar
+};
+struct BarChart {
+  std::string title;
+  std::vector<std::string> categories;
+  std::vector<BarGroup> groups;
+  Axis y;  // linear, always reaching 0
+  std::string empty_message = "no data";
+  int width = 900, height = 480;
+};
+
+// Work-precision: one method's error against CPU time, one point per setting
+// (step size, tolerance), in the order given.
+struct MethodResult {
+  std::string method;
+  std::vector<double> cpu_seconds;  // [s] > 0
+  std::vector<double> error;        // > 0, in error_unit
+};
+
+// A log-log line plot of error against CPU time, one marked line per method.
+LinePlot work_precision_plot(const std::vector<MethodResult>& methods, const std::string& title,
+                             const std::string& error_label, const std::string& error_unit);
+
+// A decoded PNG, for checks: pixels row-major as 0xRRGGBB (alpha dropped).
+struct Image {
+  int width = 0, height = 0;
+  std::vector<std::uint32_t> rgb;  // [height x width]
+  std::uint32_t at(int x, int y) const { return rgb[static_cast<std::size_t>(y) * width + x]; }
+};
+
+// Reads a PNG file. Throws std::runtime_error naming the file when it does
+// not decode.
+Image read_png(const std::filesystem::path& png);
+
+// Draw the figure and write it to `png`. Throws std::runtime_error naming the
+// file when it cannot be written.
+void write_png(const LinePlot& plot, const std::filesystem::path& png);
+void write_png(const BarChart& chart, const std::filesystem::path& png);
+
+}  // namespace elbowsim::plot

@@ -1,0 +1,187 @@
+#include "report/run_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "report/html.hpp"
+#include "report/metrics.hpp"
+
+namespace elbowsim::report {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Rows = std::vector<std::pair<std::string, std::string>>;
+
+constexpr std::size_t kMaxEventRows = 200;
+
+std::string number(double v, const char* unit = "") {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return *unit ? std::string(text) + " " + unit : text;
+}
+
+std::string joined(const nlohmann::ordered_json& list) {
+  std::string out;
+  if (list.is_array())
+    for (const auto& item : list) out += (out.empty() ? "" : ", ") + item.get<std::string>();
+  return out.empty() ? "(none)" : out;
+}
+
+std::string dynamics_name(const std::string& method) {
+  if (method == "walker_orin") return "walker_orin: mass matrix by Walker-Orin method 1 (the paper's) + Cholesky";
+  if (method == "crba") return "crba: mass matrix by the composite-rigid-body algorithm + Cholesky";
+  if (method == "aba") return "aba: articulated-body algorithm";
+  return method;
+}
+
+std::string status(const nlohmann::ordered_json& s) {
+  const std::string steps = std::to_string(s.value("steps", 0L)) + " steps to t = " +
+                            number(s.value("final_time", 0.0), "s");
+  return s.value("completed", false) ? "completed: " + steps : "STOPPED EARLY after " + steps;
+}
+
+Rows run_rows(const RunData& run) {
+  const nlohmann::ordered_json& s = run.summary;
+  Rows rows{{"run folder", run.label}};
+  if (!run.has_summary()) return rows;
+  const auto& settings = s.value("settings", nlohmann::ordered_json::object());
+  const auto& model = s.value("model", nlohmann::ordered_json::object());
+  const double wall = s.value("wall_seconds", 0.0);
+  rows.push_back({"status", status(s)});
+  rows.push_back({"scenario file", s.value("file", "")});
+  rows.push_back({"active effects", joined(s.value("effects", nlohmann::ordered_json::array()))});
+  rows.push_back({"model", std::to_string(model.value("dof", 0)) + " joints, total mass " +
+                               number(model.value("total_mass", 0.0), "kg") + ", hand on link " +
+                               std::to_string(model.value("hand_link", 0))});
+  for (const auto& row : run.model_rows) rows.push_back(row);
+  rows.push_back({"integrator", settings.value("integrator", "") + ", step " +
+                                    number(settings.value("step", 0.0), "s") + ", duration " +
+                                    number(settings.value("duration", 0.0), "s")});
+  rows.push_back({"dynamics", dynamics_name(settings.value("dynamics", ""))});
+  const auto& contact = s.value("contact", nlohmann::ordered_json::object());
+  if (contact.value("enabled", false))
+    rows.push_back({"contact", "events: " + contact.value("events", "") + ", stabilization: " +
+                                   contact.value("stabilization", "") + ", " +
+                                   std::to_string(contact.value("landings", 0)) + " landings, " +
+                                   std::to_string(contact.value("releases", 0)) + " releases"});
+  const long steps_per_second = wall > 0 ? std::lround(s.value("steps", 0L) / wall) : 0;
+  rows.push_back({"wall time", number(wall, "s") + (wall > 0 ? " (" + std::to_string(steps_per_second) + " steps/s)" : "")});
+  rows.push_back({"recorded samples", std::to_string(run.trajectory.rows())});
+  return rows;
+}
+
+std::string header(const RunData& run) {
+  const std::string name = run.has_summary() ? run.summary.value("scenario", run.label) : run.label;
+  std::string out = "<header>\n<h1>" + html::escape(name) + "</h1>\n";
+  if (run.has_summary() && !run.summary.value("description", "").empty())
+    out += "<p class=\"description\">" + html::escape(run.summary["description"].get<std::string>()) + "</p>\n";
+  return out + "<p class=\"meta\">elbowsim run report, rebuilt from the files in run folder <code>" +
+         html::escape(run.label) + "</code> (<code>elbowsim report " + html::escape(run.label) +
+         "</code> rebuilds it).</p>\n</header>\n";
+}
+
+// Failure, warnings and unreadable files, before anything else.
+std::string notices(const RunData& run) {
+  std::string out;
+  const nlohmann::ordered_json& s = run.summary;
+  if (run.has_summary() && !s.value("completed", true))
+    out += html::notice("failure", "This run did not complete.",
+                        {"Failure: " + s.value("failure", std::string("(no reason recorded)")),
+                         "What it recorded is kept: t = 0 to " + number(s.value("final_time", 0.0), "s") +
+                             ", " + std::to_string(run.trajectory.rows()) +
+                             " samples; the plots and totals cover that span only."},
+                        "failure");
+  std::vector<std::string> warnings;
+  if (run.has_summary() && s.contains("warnings"))
+    for (const auto& w : s["warnings"]) warnings.push_back(w.get<std::string>());
+  if (!warnings.empty())
+    out += html::notice("warnings", std::to_string(warnings.size()) + " warning(s)", warnings, "warnings");
+  if (!run.problems.empty())
+    out += html::notice("problems", "Missing or unreadable files", run.problems, "problems");
+  return out;
+}
+
+std::string plots_section(const FigureSet& figures) {
+  std::string out = "<section id=\"plots\">\n<h2>Plots</h2>\n";
+  for (const Figure& f : figures.figures) out += html::figure(f);
+  if (!figures.skipped.empty()) {
+    out += "<p class=\"meta\">Not plotted for this run:</p>\n<ul class=\"meta\">\n";
+    for (const std::string& s : figures.skipped) out += "<li>" + html::escape(s) + "</li>\n";
+    out += "</ul>\n";
+  }
+  return out + "</section>\n";
+}
+
+std::string events_section(const RunData& run) {
+  if (run.events.empty()) return "";
+  std::string out = "<section id=\"events\">\n<h2>Contact events</h2>\n<table>\n<tr><th>time [s]</th>"
+                    "<th>elbow</th><th>kind</th><th>speed [m/s]</th><th>impulse [N s]</th>"
+                    "<th>energy lost [J]</th></tr>\n";
+  for (std::size_t k = 0; k < std::min(run.events.size(), kMaxEventRows); ++k) {
+    const EventRow& e = run.events[k];
+    out += "<tr><td class=\"num\">" + number(e.t) + "</td><td>" + html::escape(e.elbow) +
+           "</td><td>" + html::escape(e.kind) + "</td><td class=\"num\">" + number(e.speed) +
+           "</td><td class=\"num\">" + number(e.impulse) + "</td><td class=\"num\">" +
+           number(e.energy_lost) + "</td></tr>\n";
+  }
+  out += "</table>\n";
+  if (run.events.size() > kMaxEventRows)
+    out += "<p class=\"meta\">First " + std::to_string(kMaxEventRows) + " of " +
+           std::to_string(run.events.size()) + " events; all are in events.csv.</p>\n";
+  return out + "</section>\n";
+}
+
+std::string contents(const RunData& run) {
+  std::string links = "<a href=\"#run\">Run</a>";
+  if (run.has_video) links += " · <a href=\"#video\">Video</a>";
+  links += " · <a href=\"#plots\">Plots</a> · <a href=\"#summary-metrics\">Metrics</a>";
+  if (!run.events.empty()) links += " · <a href=\"#events\">Contact events</a>";
+  return "<nav class=\"meta\">" + links + " · <a href=\"#files\">Files</a></nav>\n";
+}
+
+std::string files_section(const RunData& run) {
+  std::string out = "<section id=\"files\">\n<h2>Files</h2>\n<ul>\n";
+  for (const char* name : {"trajectory.csv", "summary.json", "events.csv", "scenario.yaml", "video.mp4"})
+    if (fs::exists(run.folder / name))
+      out += "<li><a href=\"" + std::string(name) + "\">" + name + "</a></li>\n";
+  out += "</ul>\n";
+  if (!run.scenario_yaml.empty())
+    out += "<details>\n<summary>The scenario as run (scenario.yaml)</summary>\n<pre>" +
+           html::escape(run.scenario_yaml) + "</pre>\n</details>\n";
+  return out + "</section>\n";
+}
+
+}  // namespace
+
+std::string run_report_html(const RunData& run, const FigureSet& figures) {
+  const std::string name = run.has_summary() ? run.summary.value("scenario", run.label) : run.label;
+  std::string page = html::page_begin("elbowsim report: " + name) + header(run) + notices(run);
+  page += contents(run);
+  page += "<section id=\"run\">\n<h2>Run</h2>\n" + html::info_table(run_rows(run)) + "</section>\n";
+  if (run.has_video)
+    page += "<section id=\"video\">\n<h2>Video</h2>\n<video src=\"video.mp4\" controls "
+            "preload=\"metadata\" width=\"960\">video.mp4</video>\n</section>\n";
+  page += plots_section(figures);
+  page += "<section id=\"summary-metrics\">\n<h2>Metrics (summary.json)</h2>\n";
+  page += run.has_summary()
+              ? "<p class=\"meta\">In summary.json's order, named as <code>--expect</code> "
+                "names them.</p>\n" + html::metrics_table(summary_metrics(run.summary), "metrics")
+              : "<p>No summary.json in this run folder.</p>\n";
+  const auto derived = trajectory_metrics(run.trajectory);
+  if (!derived.empty())
+    page += "<h3>Derived from trajectory.csv</h3>\n" +
+            html::metrics_table(derived, "trajectory-metrics");
+  page += "</section>\n" + events_section(run) + files_section(run);
+  return page + html::page_end();
+}
+
+ReportFiles write_run_report(const RunData& run) {
+  ReportFiles files;
+  files.figures = write_run_plots(run, run.folder);
+  files.html = run.folder / "report.html";
+  html::write_file(files.html, run_report_html(run, files.figures));
+  return files;
+}
+
+}  // namespace elbowsim::report

@@ -1,0 +1,97 @@
+// Shared by the report tests: looking at decoded PNGs, running the elbowsim
+// binary, scratch folders.
+#pragma once
+
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "report/plot/plot.hpp"
+
+namespace elbowsim::testing {
+
+inline double luminance(std::uint32_t rgb) {
+  return 0.299 * ((rgb >> 16) & 0xFF) + 0.587 * ((rgb >> 8) & 0xFF) + 0.114 * (rgb & 0xFF);
+}
+
+// Variance of the luminance over the whole image: 0 for a blank one.
+inline double luminance_variance(const plot::Image& image) {
+  double sum = 0, square = 0;
+  for (std::uint32_t p : image.rgb) sum += luminance(p), square += luminance(p) * luminance(p);
+  const double n = static_cast<double>(image.rgb.size());
+  return square / n - (sum / n) * (sum / n);
+}
+
+// Pixels darker than `below` (text, axes) in the box [x0, x1) x [y0, y1).
+inline long dark_pixels(const plot::Image& image, int x0, int y0, int x1, int y1,
+                        double below = 110) {
+  long n = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) n += luminance(image.at(x, y)) < below;
+  return n;
+}
+
+// Pixels within `tolerance` (per channel) of an 8-bit colour, in a box.
+inline long color_pixels(const plot::Image& image, plot::Color c, int x0, int y0, int x1, int y1,
+                         int tolerance = 40) {
+  const int r = static_cast<int>(c.r * 255 + 0.5), g = static_cast<int>(c.g * 255 + 0.5),
+            b = static_cast<int>(c.b * 255 + 0.5);
+  long n = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const std::uint32_t p = image.at(x, y);
+      n += std::abs(static_cast<int>((p >> 16) & 0xFF) - r) <= tolerance &&
+           std::abs(static_cast<int>((p >> 8) & 0xFF) - g) <= tolerance &&
+           std::abs(static_cast<int>(p & 0xFF) - b) <= tolerance;
+    }
+  return n;
+}
+
+// A decoded PNG of the expected size that is not blank: some contrast, and
+// dark text in the y-label strip (left) and x-label strip (bottom).
+inline void check_plot_png(const std::filesystem::path& png, int width, int height) {
+  INFO(png.string());
+  const plot::Image image = plot::read_png(png);
+  REQUIRE(image.width == width);
+  REQUIRE(image.height == height);
+  CHECK(luminance_variance(image) > 50);
+  CHECK(dark_pixels(image, 0, height / 4, 40, 3 * height / 4) > 20);          // y label
+  CHECK(dark_pixels(image, width / 4, height - 50, 3 * width / 4, height) > 40);  // x ticks, label
+}
+
+struct Outcome {
+  int exit_code;
+  std::string output;  // stdout and stderr
+};
+
+inline Outcome run_elbowsim(const std::string& arguments) {
+  const std::string command = std::string(ELBOWSIM_BINARY) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::string output;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+inline std::string slurp(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+inline std::filesystem::path scratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("elbowsim_report_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace elbowsim::testing

@@ -1,0 +1,310 @@
+// The renderer with GL (OSMesa): small frames checked pixel by pixel against
+// the camera's projection, and the video / frames outputs of the command line
+// (run as a process; ffprobe checks the mp4).
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "render/frame_source.hpp"
+#include "render/gl_renderer.hpp"
+#include "render/osmesa_context.hpp"
+#include "render/png_writer.hpp"
+#include "render/render_job.hpp"
+#include "render/scene.hpp"
+#include "render/video_encoder.hpp"
+#include "test_render_fixtures.hpp"
+
+using namespace elbowsim;
+using Eigen::Vector3d;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kWidth = 160, kHeight = 120;
+
+struct Pixel {
+  int r, g, b;
+};
+
+// A frame read back: RGBA rows bottom-up -> pixel (x, y) from the top-left.
+struct Image {
+  int width, height;
+  std::vector<std::uint8_t> rgba;
+  Pixel at(double x, double y) const {
+    const std::size_t i =
+        (std::size_t(height - 1 - int(y)) * std::size_t(width) + std::size_t(x)) * 4;
+    return {rgba[i], rgba[i + 1], rgba[i + 2]};
+  }
+  void save(const fs::path& path) const {  // top-down RGB, for looking at
+    std::vector<std::uint8_t> rgb;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const Pixel p = at(x, y);
+        rgb.insert(rgb.end(), {std::uint8_t(p.r), std::uint8_t(p.g), std::uint8_t(p.b)});
+      }
+    write_png(path, width, height, rgb.data());
+  }
+};
+
+// Lit colour of a surface of base colour c: a brightness factor in
+// [0.45, 1.45] times c, hue kept (chromaticity within 0.04).
+bool looks_like(const Pixel& p, const Color& c) {
+  const double ps = p.r + p.g + p.b, cs = 255.0 * (c.r + c.g + c.b);
+  if (ps <= 0 || ps < 0.45 * cs || ps > 1.45 * cs) return false;
+  const double d[3] = {p.r / ps - 255 * c.r / cs, p.g / ps - 255 * c.g / cs,
+                       p.b / ps - 255 * c.b / cs};
+  return std::abs(d[0]) < 0.04 && std::abs(d[1]) < 0.04 && std::abs(d[2]) < 0.04;
+}
+
+bool is_background(const Pixel& p, const Color& c) {
+  return std::abs(p.r - 255 * c.r) <= 1.5 && std::abs(p.g - 255 * c.g) <= 1.5 &&
+         std::abs(p.b - 255 * c.b) <= 1.5;
+}
+
+std::string show(const Pixel& p) {
+  return std::to_string(p.r) + "," + std::to_string(p.g) + "," + std::to_string(p.b);
+}
+
+Camera test_camera(double aspect) {
+  Camera c;
+  c.eye = Vector3d(0.4, -0.9, 0.2);
+  c.target = Vector3d(0.4, 0, 0.1);
+  c.fov_deg = 30;
+  c.aspect = aspect;
+  c.near = 0.1;
+  c.far = 5;
+  return c;
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("elbowsim_render_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+struct Outcome {
+  int exit_code;
+  std::string output;  // stdout and stderr
+};
+
+Outcome shell(const std::string& command) {
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::string output;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+Outcome cli(const std::string& arguments) {
+  return shell(std::string(ELBOWSIM_BINARY) + " " + arguments);
+}
+
+const std::string kElbowRest = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_rest.yaml";
+
+// A short elbow_rest run, 0.5 s, rendered at 160x120 and 20 fps as asked.
+std::string short_run(const fs::path& dir, const std::string& outputs) {
+  return "run " + kElbowRest + " --out " + dir.string() +
+         " --set simulation.duration=0.5 --set 'render.size=[160, 120]' --set render.fps=20 " +
+         outputs;
+}
+
+}  // namespace
+
+TEST_CASE("render gl: a 160x120 frame has the table, the link and the background where projected") {
+  const Model model = render_fixture::arm();
+  const Playback playback(model, render_fixture::recording());
+  const Scene scene = build_scene(model, playback.at(0.2), {}, SceneOptions{});  // link 1 up
+  const SceneStyle style;
+  for (int msaa : {4, 1}) {
+    CAPTURE(msaa);
+    OsmesaContext context;
+    GlRenderer renderer(kWidth, kHeight, msaa);
+    CHECK(renderer.samples() == msaa);
+    const Camera camera = test_camera(double(kWidth) / kHeight);
+    renderer.begin_frame(scene.background);
+    renderer.draw(scene, camera, {0, 0, kWidth, kHeight});
+    renderer.end_frame();
+    Image image{kWidth, kHeight, std::vector<std::uint8_t>(kWidth * kHeight * 4)};
+    REQUIRE(renderer.fetch(image.rgba.data()));
+    CHECK_FALSE(renderer.fetch(image.rgba.data()));
+    image.save(fs::temp_directory_path() /
+               ("elbowsim_render_gl_msaa" + std::to_string(msaa) + ".png"));
+
+    const Eigen::Vector2d table = *camera.project(Vector3d(0.15, -0.15, -0.03), kWidth, kHeight);
+    const Eigen::Vector2d link = *camera.project(Vector3d(0.4, 0, 0.2), kWidth, kHeight);
+    const Eigen::Vector2d elbow = *camera.project(Vector3d(0.4, -0.015, -0.01), kWidth, kHeight);
+    INFO("table ", show(image.at(table.x(), table.y())), " link ",
+         show(image.at(link.x(), link.y())), " elbow ", show(image.at(elbow.x(), elbow.y())));
+    CHECK(looks_like(image.at(table.x(), table.y()), style.table));
+    CHECK(looks_like(image.at(link.x(), link.y()), style.link));
+    CHECK(looks_like(image.at(elbow.x(), elbow.y()), style.elbow_free));
+    CHECK_FALSE(looks_like(image.at(link.x(), link.y()), style.table));
+    CHECK(is_background(image.at(3, 3), style.background));
+    CHECK(is_background(image.at(kWidth - 4, 3), style.background));
+  }
+}
+
+TEST_CASE("render gl: two runs side by side, one panel each") {
+  const Model model = render_fixture::arm();
+  const Playback playback(model, render_fixture::recording());
+  const SceneStyle style;
+  // Left: t = 0.3 s, the elbow free (grey); right: t = 0.8 s, resting (green).
+  const Scene left = build_scene(model, playback.at(0.3), {}, SceneOptions{});
+  const Scene right = build_scene(model, playback.at(0.8), {}, SceneOptions{});
+  OsmesaContext context;
+  GlRenderer renderer(kWidth, kHeight, 4);
+  const int half = kWidth / 2;
+  const Camera camera = test_camera(double(half) / kHeight);
+  renderer.begin_frame(left.background);
+  renderer.draw(left, camera, {0, 0, half, kHeight});
+  renderer.draw(right, camera, {half, 0, half, kHeight});
+  renderer.end_frame();
+  Image image{kWidth, kHeight, std::vector<std::uint8_t>(kWidth * kHeight * 4)};
+  REQUIRE(renderer.fetch(image.rgba.data()));
+  image.save(fs::temp_directory_path() / "elbowsim_render_gl_panels.png");
+  const Eigen::Vector2d elbow = *camera.project(Vector3d(0.4, -0.015, -0.01), half, kHeight);
+  const Pixel l = image.at(elbow.x(), elbow.y()), r = image.at(elbow.x() + half, elbow.y());
+  INFO("left ", show(l), " right ", show(r));
+  CHECK(looks_like(l, style.elbow_free));
+  CHECK(looks_like(r, style.elbow_resting));
+}
+
+TEST_CASE("render video: run writes an H.264 yuv420p mp4 of duration x fps frames") {
+  const fs::path ffprobe = find_on_path("ffprobe");
+  REQUIRE_MESSAGE(!ffprobe.empty(), "ffprobe (package ffmpeg) is needed on PATH");
+  const fs::path dir = scratch("video");
+  const Outcome run = cli(short_run(dir, "--set output.video=true"));
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK(run.output.find("video: " + (dir / "video.mp4").string()) != std::string::npos);
+  REQUIRE(fs::exists(dir / "video.mp4"));
+  CHECK_FALSE(fs::exists(dir / "frames"));
+  for (const auto& entry : fs::directory_iterator(dir))
+    CHECK(entry.path().filename().string().find("tmp") == std::string::npos);
+  const Outcome probe = shell(ffprobe.string() +
+                              " -v error -select_streams v:0 -count_frames -show_entries "
+                              "stream=codec_name,pix_fmt,width,height,nb_read_frames -of csv=p=0 " +
+                              (dir / "video.mp4").string());
+  REQUIRE(probe.exit_code == 0);
+  // 0.5 s x 20 fps: frames at 0, 0.05, ..., 0.5 s.
+  CHECK(probe.output == "h264,160,120,yuv420p,11\n");
+
+  SUBCASE("render re-renders a run folder at another size and rate without simulating") {
+    const Outcome again = cli("render " + dir.string() + " --size 96x64 --fps 10 --camera top");
+    INFO(again.output);
+    REQUIRE(again.exit_code == 0);
+    const Outcome reprobe = shell(ffprobe.string() +
+                                  " -v error -select_streams v:0 -count_frames -show_entries "
+                                  "stream=codec_name,pix_fmt,width,height,nb_read_frames -of "
+                                  "csv=p=0 " +
+                                  (dir / "video.mp4").string());
+    CHECK(reprobe.output == "h264,96,64,yuv420p,6\n");
+  }
+}
+
+TEST_CASE("render frames: output.frames writes numbered PNGs; --no-render writes none") {
+  const fs::path dir = scratch("frames");
+  // Supersampled: drawn at 320x240, averaged down to 160x120.
+  const Outcome run = cli(short_run(dir, "--set output.frames=true --set render.supersample=true"));
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  CHECK_FALSE(fs::exists(dir / "video.mp4"));
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "frames")) {
+    (void)entry;
+    ++count;
+  }
+  CHECK(count == 11);
+  int w = 0, h = 0;
+  read_png(dir / "frames" / "frame_00011.png", w, h);
+  CHECK(w == 160);
+  CHECK(h == 120);
+
+  const fs::path none = scratch("no_render");
+  const Outcome skipped =
+      cli(short_run(none, "--set output.video=true --set output.frames=true --no-render"));
+  CHECK(skipped.exit_code == 0);
+  CHECK(fs::exists(none / "trajectory.csv"));
+  CHECK_FALSE(fs::exists(none / "video.mp4"));
+  CHECK_FALSE(fs::exists(none / "frames"));
+}
+
+TEST_CASE("render without ffmpeg on PATH: PNG frames and the command that makes the video") {
+  const fs::path dir = scratch("no_ffmpeg");
+  REQUIRE(cli(short_run(dir, "")).exit_code == 0);
+  const fs::path empty = scratch("empty_path");
+  const Outcome out = shell("PATH=" + empty.string() + " " + ELBOWSIM_BINARY + " render " +
+                            dir.string() + " --fps 10");
+  INFO(out.output);
+  CHECK(out.exit_code == 0);
+  CHECK(out.output.find("ffmpeg was not found on PATH") != std::string::npos);
+  CHECK(out.output.find("wrote 6 PNG frames to " + (dir / "frames").string()) != std::string::npos);
+  CHECK(out.output.find("ffmpeg -framerate 10 -i '" + (dir / "frames" / "frame_%05d.png").string() +
+                        "' -c:v libx264") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "video.mp4"));
+  CHECK(fs::exists(dir / "frames" / "frame_00001.png"));
+  CHECK(fs::exists(dir / "frames" / "frame_00006.png"));
+  CHECK_FALSE(fs::exists(dir / "frames" / "frame_00007.png"));
+}
+
+TEST_CASE("render: a bad run folder is exit 2 with a clear message, and nothing is written") {
+  const Outcome missing = cli("render /nonexistent/run");
+  CHECK(missing.exit_code == 2);
+  CHECK(missing.output.find("error: /nonexistent/run: not a run folder") != std::string::npos);
+
+  const fs::path dir = scratch("bad_dir");
+  std::ofstream(dir / "scenario.yaml") << render_fixture::scenario_yaml();
+  const Outcome no_csv = cli("render " + dir.string());
+  CHECK(no_csv.exit_code == 2);
+  CHECK(no_csv.output.find("no trajectory.csv") != std::string::npos);
+  std::ofstream(dir / "trajectory.csv") << "time [s],q0 [rad]\n0,0\n";
+  const Outcome short_csv = cli("render " + dir.string());
+  CHECK(short_csv.exit_code == 2);
+  CHECK(short_csv.output.find("no column \"q1\"") != std::string::npos);
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) (void)entry, ++files;
+  CHECK(files == 2);
+
+  const fs::path ok = scratch("bad_option");
+  REQUIRE(cli(short_run(ok, "")).exit_code == 0);
+  const Outcome size = cli("render " + ok.string() + " --size 161x120");
+  CHECK(size.exit_code == 2);
+  CHECK(size.output.find("--size: width and height must be even") != std::string::npos);
+  CHECK(cli("render " + ok.string() + " --camera diagonal").exit_code == 2);
+  CHECK(cli("render " + ok.string() + " --fps 0").exit_code == 2);
+  CHECK_FALSE(fs::exists(ok / "video.mp4"));
+}
+
+TEST_CASE("render panels: two runs side by side, each with its own overlay") {
+  const Model model = render_fixture::arm();
+  const Recording rec = render_fixture::recording();
+  RenderSettings settings;
+  settings.width = kWidth;
+  settings.height = kHeight;
+  settings.fps = 5;
+  const FrameSource left(model, rec, settings, "left");
+  const FrameSource right(model, rec, settings, "right");
+  const fs::path dir = scratch("panels");
+  const RenderStats stats = render_panels({&left, &right}, settings, {dir, false, true});
+  CHECK(stats.frames == 6);  // 1 s at 5 fps
+  CHECK(stats.frames_written);
+  int w = 0, h = 0;
+  const std::vector<std::uint8_t> rgb = read_png(dir / "frames" / "frame_00006.png", w, h);
+  REQUIRE(w == kWidth);
+  // The overlay's dark box at the top left of each half; the background below.
+  auto brightness = [&](int x, int y) {
+    const std::size_t i = (std::size_t(y) * std::size_t(w) + std::size_t(x)) * 3;
+    return rgb[i] + rgb[i + 1] + rgb[i + 2];
+  };
+  CHECK(brightness(7, 7) < 3 * 140);
+  CHECK(brightness(kWidth / 2 + 7, 7) < 3 * 140);
+  CHECK(brightness(kWidth / 2 - 2, kHeight - 2) > 3 * 200);
+  CHECK(brightness(kWidth - 2, kHeight - 2) > 3 * 200);
+}

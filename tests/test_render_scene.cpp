@@ -1,0 +1,266 @@
+// The renderer's GL-free half: playback of a recording, the abstract scene,
+// the camera maths, the overlay text, the unit meshes and the render: keys.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "app/scenario/scenario.hpp"
+#include "render/camera.hpp"
+#include "render/frame_source.hpp"
+#include "render/meshes.hpp"
+#include "render/overlay.hpp"
+#include "render/playback.hpp"
+#include "render/render_job.hpp"
+#include "render/scene.hpp"
+#include "support/approx.hpp"
+#include "support/models.hpp"
+#include "test_render_fixtures.hpp"
+
+using namespace elbowsim;
+using Eigen::Vector3d;
+using elbowsim::testing::approx;
+
+namespace {
+
+bool same(const Color& a, const Color& b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+
+}  // namespace
+
+TEST_CASE(
+    "render scene: a known pose gives links, joints and an elbow where kinematics puts them") {
+  const Model model = render_fixture::arm();
+  const Recording rec = render_fixture::recording();
+  const Playback playback(model, rec);
+  // At t = 0.2 s: q = (0, pi/2), link 0 along +x, link 1 straight up.
+  const PlaybackState state = playback.at(0.2);
+  REQUIRE(approx(state.q, Eigen::Vector2d(0, std::numbers::pi / 2), 1e-12));
+  const Scene scene = build_scene(model, state, {}, SceneOptions{});
+
+  REQUIRE(scene.links.size() == 2);
+  CHECK(approx(scene.links[0].a, Vector3d(0, 0, 0), 1e-12));
+  CHECK(approx(scene.links[0].b, Vector3d(0.4, 0, 0), 1e-12));
+  CHECK(approx(scene.links[1].a, Vector3d(0.4, 0, 0), 1e-12));
+  CHECK(approx(scene.links[1].b, Vector3d(0.4, 0, 0.35), 1e-12));
+  CHECK(scene.links[0].radius == 0.02);
+  CHECK(scene.links[1].radius == 0.015);
+  // Housings centred on the joint origins, along the joint axis (-y).
+  REQUIRE(scene.joints.size() == 2);
+  CHECK(approx(0.5 * (scene.joints[1].a + scene.joints[1].b), Vector3d(0.4, 0, 0), 1e-12));
+  CHECK(approx((scene.joints[1].b - scene.joints[1].a).normalized(), Vector3d(0, -1, 0), 1e-12));
+  REQUIRE(scene.elbows.size() == 1);
+  CHECK(approx(scene.elbows[0].sphere.center, Vector3d(0.4, 0, 0), 1e-12));
+  CHECK(scene.elbows[0].sphere.radius == 0.03);
+  REQUIRE(scene.table.size() == 1);
+  CHECK(approx(scene.table[0].center, model.table[0].center, 0));
+  CHECK(same(scene.table[0].color, SceneStyle{}.table));
+  // The base plate sits behind joint 0 (along +y, the side the axis points away from).
+  CHECK(scene.base.center.y() > 0);
+}
+
+TEST_CASE("render scene: elbow colour follows its contact state; landed means within 0.1 s") {
+  const Model model = render_fixture::arm();
+  const Playback playback(model, render_fixture::recording());
+  const SceneStyle style;
+  auto elbow_at = [&](double t) { return build_scene(model, playback.at(t), {}, {}).elbows[0]; };
+  // rest_elbow: 0 until t = 0.5, 1 from then on (recorded every 0.1 s).
+  CHECK(elbow_at(0.3).state == ElbowState::free);
+  CHECK(same(elbow_at(0.3).sphere.color, style.elbow_free));
+  CHECK(elbow_at(0.55).state == ElbowState::landed);
+  CHECK(same(elbow_at(0.55).sphere.color, style.elbow_landed));
+  CHECK(elbow_at(0.6).state == ElbowState::landed);  // exactly 0.1 s after touchdown
+  CHECK(elbow_at(0.65).state == ElbowState::resting);
+  CHECK(same(elbow_at(0.65).sphere.color, style.elbow_resting));
+  CHECK(playback.at(0.55).elbows[0].landed_at == doctest::Approx(0.5));
+}
+
+TEST_CASE("render scene: force arrows only at resting elbows, length = fn * force_scale") {
+  const Model model = render_fixture::arm();
+  const Playback playback(model, render_fixture::recording());
+  SceneOptions options;
+  CHECK(build_scene(model, playback.at(0.3), {}, options).forces.empty());  // free: none
+  for (double scale : {0.01, 0.004}) {
+    options.force_scale = scale;
+    // fn: 8 N at t = 0.7, 12 N at t = 0.8 -> 10 N at t = 0.75 (linear).
+    const Scene scene = build_scene(model, playback.at(0.75), {}, options);
+    REQUIRE(scene.forces.size() == 1);
+    const Arrow& arrow = scene.forces[0];
+    CHECK(arrow.force == doctest::Approx(10.0));
+    CHECK((arrow.tip - arrow.tail).norm() == doctest::Approx(10.0 * scale));
+    CHECK(approx((arrow.tip - arrow.tail).normalized(), Vector3d(0, 0, 1), 1e-12));  // table up
+    const Sphere& s = scene.elbows[0].sphere;
+    CHECK(approx(arrow.tail, s.center + Vector3d(0, 0, s.radius), 1e-12));  // on top of the sphere
+  }
+  options.force_scale = 0;
+  CHECK(build_scene(model, playback.at(0.75), {}, options).forces.empty());
+}
+
+TEST_CASE("render playback: linear between samples, clamped outside; the hand path up to t") {
+  const Model model = render_fixture::arm();
+  const Playback playback(model, render_fixture::recording());
+  // q1 goes 0 -> pi/2 over 0 .. 0.2 s.
+  CHECK(playback.at(0.05).q[1] == doctest::Approx(std::numbers::pi / 8));
+  CHECK(playback.at(-1).q[1] == 0);
+  CHECK(playback.at(99).t == doctest::Approx(1.0));
+  CHECK(*playback.at(0.75).energy_in == doctest::Approx(0.75));
+  const std::vector<Vector3d> path = playback.hand_path(0.15);
+  REQUIRE(path.size() == 3);  // samples at 0, 0.1 and the point at 0.15
+  CHECK(approx(path.back(), *playback.at(0.15).hand, 1e-12));
+  CHECK_THROWS_WITH_AS(Playback(render_fixture::arm(3), render_fixture::recording()),
+                       doctest::Contains("no column \"q2\""), std::invalid_argument);
+}
+
+TEST_CASE("render playback: frames by simulation time, duration x fps + 1") {
+  CHECK(frame_count(2.0, 30) == 61);
+  CHECK(frame_count(0.5, 20) == 11);
+  CHECK(frame_count(0.0, 30) == 1);
+  const std::vector<double> times = frame_times(1.0, 4);
+  REQUIRE(times.size() == 5);
+  CHECK(times[1] == 0.25);
+  CHECK(times.back() == 1.0);
+}
+
+TEST_CASE("render camera: the target projects to the centre; the auto frame fits in the image") {
+  Camera c;
+  c.eye = Vector3d(1, -2, 1);
+  c.target = Vector3d(0.2, 0.1, -0.1);
+  const Eigen::Vector2d centre = *c.project(c.target, 160, 120);
+  CHECK(centre.x() == doctest::Approx(80));
+  CHECK(centre.y() == doctest::Approx(60));
+  CHECK_FALSE(c.project(c.eye + (c.eye - c.target), 160, 120).has_value());  // behind
+  // Higher in the world is higher in the image (smaller y).
+  CHECK(c.project(c.target + Vector3d(0, 0, 0.1), 160, 120)->y() < 60);
+
+  const Eigen::AlignedBox3d frame(Vector3d(-0.2, -0.3, -0.25), Vector3d(0.8, 0.3, 0.4));
+  for (CameraPreset preset :
+       {CameraPreset::front, CameraPreset::side, CameraPreset::top, CameraPreset::three_quarter}) {
+    const std::string name = to_string(preset);
+    CAPTURE(name);
+    CameraSettings settings;
+    settings.preset = preset;
+    const Camera cam = make_camera(settings, frame, frame, 16.0 / 9.0);
+    double min_x = 1e9, max_x = -1e9, min_y = 1e9, max_y = -1e9;
+    for (int k = 0; k < 8; ++k) {
+      const Eigen::Vector2d p =
+          *cam.project(frame.corner(Eigen::AlignedBox3d::CornerType(k)), 1280, 720);
+      min_x = std::min(min_x, p.x()), max_x = std::max(max_x, p.x());
+      min_y = std::min(min_y, p.y()), max_y = std::max(max_y, p.y());
+    }
+    CHECK(min_x >= 0);
+    CHECK(max_x <= 1280);
+    CHECK(min_y >= 0);
+    CHECK(max_y <= 720);
+    CHECK(std::max(max_x - min_x, (max_y - min_y) * 16 / 9) > 0.8 * 1280);  // and fills it
+    // Everything lies between the clip planes.
+    for (int k = 0; k < 8; ++k) {
+      const double depth = (frame.corner(Eigen::AlignedBox3d::CornerType(k)) - cam.eye)
+                               .dot((cam.target - cam.eye).normalized());
+      CHECK(depth > cam.near);
+      CHECK(depth < cam.far);
+    }
+  }
+}
+
+TEST_CASE("render frame source: the automatic frame holds the swept arm and the table near it") {
+  const Model model = render_fixture::arm();
+  const Recording rec = render_fixture::recording();
+  const FrameSource source(model, rec, RenderSettings{}, "fixture");
+  const Eigen::AlignedBox3d& frame = source.frame_bounds();
+  CHECK(frame.contains(Vector3d(0.4, 0, 0.35)));             // link 1 tip when up
+  CHECK(frame.contains(Vector3d(0.75, 0, 0)));               // link 1 tip when straight
+  CHECK(frame.min().z() <= model.table[0].center.z());       // the table top and some of it
+  CHECK(source.scene_options().floor_z == frame.min().z());  // the table's bottom
+  CHECK(source.scene(0.5).grid.points.size() > 4);
+}
+
+TEST_CASE("render overlay: time, scenario, energy so far and elbow forces") {
+  const Model model = render_fixture::arm();
+  const Playback playback(model, render_fixture::recording());
+  const std::vector<std::string> lines = overlay_lines("elbow_rest", model, playback.at(0.75));
+  REQUIRE(lines.size() == 4);
+  CHECK(lines[0] == "elbow_rest");
+  CHECK(lines[1] == "t = 0.750 s");
+  CHECK(lines[2] == "E_in = 0.750 J");
+  CHECK(lines[3] == "elbow: 10.00 N resting");
+  CHECK(overlay_lines("x", model, playback.at(0.3))[3] == "elbow: free");
+}
+
+TEST_CASE("render meshes: closed, outward-facing (signed volume) unit shapes") {
+  auto volume = [](const Mesh& m) {
+    double v = 0;
+    auto p = [&](std::uint32_t i) {
+      return Vector3d(m.vertices[6 * i], m.vertices[6 * i + 1], m.vertices[6 * i + 2]);
+    };
+    for (std::size_t k = 0; k < m.indices.size(); k += 3)
+      v += p(m.indices[k]).dot(p(m.indices[k + 1]).cross(p(m.indices[k + 2]))) / 6;
+    return v;
+  };
+  const double pi = std::numbers::pi;
+  CHECK(volume(unit_box()) == doctest::Approx(1.0));
+  CHECK(volume(unit_sphere(64, 32)) == doctest::Approx(4 * pi / 3).epsilon(0.01));
+  CHECK(volume(unit_cylinder(64)) == doctest::Approx(pi).epsilon(0.01));
+  CHECK(volume(unit_cone(64)) == doctest::Approx(pi / 3).epsilon(0.01));
+}
+
+TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
+  const std::string base = render_fixture::scenario_yaml();
+  const Scenario plain = load_scenario_text(base, "x.yaml");
+  CHECK(plain.render.width == 1280);
+  CHECK(plain.render.height == 720);
+  CHECK(plain.render.fps == 30);
+  CHECK(plain.render.msaa == 4);
+  CHECK_FALSE(plain.render.supersample);
+  CHECK(plain.render.force_scale == 0.01);
+  CHECK_FALSE(plain.render.camera.explicit_pose);
+  CHECK_FALSE(plain.output.video);
+  CHECK_FALSE(plain.output.frames);
+
+  const Scenario s = load_scenario_text(base + R"(render:
+  camera: {eye: [1, -2, 1], target: [0.3, 0, 0], fov_deg: 30}
+  size: [640, 480]
+  fps: 25
+  msaa: 2
+  supersample: true
+  force_scale: 0.02
+)",
+                                        "x.yaml", {"output.video=true", "output.frames=true"});
+  CHECK(s.render.camera.explicit_pose);
+  CHECK(s.render.camera.eye == Vector3d(1, -2, 1));
+  CHECK(s.render.camera.fov_deg == 30);
+  CHECK(s.render.width == 640);
+  CHECK(s.render.fps == 25);
+  CHECK(s.render.msaa == 2);
+  CHECK(s.render.supersample);
+  CHECK(s.render.force_scale == 0.02);
+  CHECK(s.output.video);
+  CHECK(s.output.frames);
+  CHECK(load_scenario_text(base + "render: {camera: {preset: top}}\n", "x.yaml")
+            .render.camera.preset == CameraPreset::top);
+
+  const int line = render_fixture::scenario_lines() + 1;  // the line of "render:"
+  auto error = [&](const std::string& render) {
+    try {
+      load_scenario_text(base + render, "x.yaml");
+    } catch (const ScenarioError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  const std::string l = "x.yaml:" + std::to_string(line);
+  CHECK(error("render: {msaa: 3}\n") == l + ":16: render.msaa: must be 1 (off), 2 or 4 (got 3)");
+  CHECK(error("render: {size: [641, 480]}\n").find(l + ":17: render.size[0]: must be even") == 0);
+  CHECK(error("render: {camera: {preset: diagonal}}\n")
+            .find("render.camera.preset: must be one of front, side, top, three_quarter") !=
+        std::string::npos);
+  CHECK(error("render: {camera: {preset: top, eye: [1, 1, 1]}}\n")
+            .find("render.camera.eye: give either preset or eye and target") != std::string::npos);
+  CHECK(error("render: {camera: {eye: [1, 1, 1]}}\n")
+            .find("render.camera.target: required key is missing") != std::string::npos);
+  CHECK(error("render: {camera: {eye: [0, 0, 1], target: [0, 0, 0]}}\n")
+            .find("render.camera.target: up [0, 0, 1] must not be zero or parallel") !=
+        std::string::npos);
+  CHECK(error("render: {fps: 0}\n").find("render.fps: must be > 0") != std::string::npos);
+  CHECK(error("render: {force_scale: -1}\n").find("render.force_scale: must be >= 0") !=
+        std::string::npos);
+  CHECK(error("render: {fsp: 3}\n").find("did you mean \"fps\"") != std::string::npos);
+}

@@ -1,0 +1,290 @@
+// Run reports and comparisons: derived series and metrics, the verdict, and
+// the files elbowsim writes (run as a process): report.html's metrics equal
+// summary.json, every image and video it names exists and decodes, failures
+// are in plain sight, a comparison names every run.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <map>
+#include <regex>
+#include <set>
+
+#include "report/columns.hpp"
+#include "report/comparison.hpp"
+#include "report/metrics.hpp"
+#include "report_test_helpers.hpp"
+#include "support/approx.hpp"
+
+using elbowsim::Recording;
+using elbowsim::testing::approx;
+using Json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+namespace r = elbowsim::report;
+namespace t = elbowsim::testing;
+
+namespace {
+
+// time, v0, i0, rest_elbow, d_elbow: 1 V into 2 A for 1 s; the elbow rests on [0.5, 1].
+Recording small_recording() {
+  Recording rec;
+  rec.columns = {{"time", "s"}, {"v0", "V"}, {"i0", "A"}, {"rest_elbow", "1"}, {"d_elbow", "m"}};
+  for (int k = 0; k <= 10; ++k)
+    rec.values.insert(rec.values.end(), {0.1 * k, 1.0, 2.0, k >= 5 ? 1.0 : 0.0, k >= 5 ? -1e-9 * k : 0.2});
+  return rec;
+}
+
+r::RunData run_with(const std::string& label, double e_in, bool completed = true) {
+  r::RunData run;
+  run.label = label;
+  run.summary = {{"completed", completed},
+                 {"failure", completed ? "" : "diverged"},
+                 {"final_time", 1.0},
+                 {"energy_final", {{"electrical_in", e_in}, {"joule", e_in / 2}}}};
+  return run;
+}
+
+}  // namespace
+
+TEST_CASE("columns: indexed names, power, running integral, resting intervals") {
+  const Recording rec = small_recording();
+  CHECK(r::indexed_columns(rec, "i") == std::vector<std::string>{"i0"});
+  CHECK(r::indexed_columns(rec, "q").empty());
+  CHECK(r::elbow_names(rec) == std::vector<std::string>{"elbow"});
+  const auto power = r::electrical_power(rec);
+  REQUIRE(power.size() == 11);
+  CHECK(power[3] == 2.0);
+  CHECK(approx(r::running_integral(r::column(rec, "time"), power).back(), 2.0, 1e-12));
+  const auto on = r::intervals_on(r::column(rec, "time"), r::column(rec, "rest_elbow"));
+  REQUIRE(on.size() == 1);
+  CHECK(approx(on[0].begin, 0.5, 1e-12));
+  CHECK(approx(on[0].end, 1.0, 1e-12));
+}
+
+TEST_CASE("metrics: summary.json leaves in file order with units; trajectory figures") {
+  const Json summary = Json::parse(R"({"steps": 5, "energy_final": {"joule": 1.5, "friction": null},
+                                       "completed": false, "scenario": "x", "effects": ["a"]})");
+  const auto metrics = r::summary_metrics(summary);
+  REQUIRE(metrics.size() == 4);
+  CHECK(metrics[0].path == "steps");
+  CHECK(metrics[1].path == "energy_final.joule");
+  CHECK(metrics[1].unit == "J");
+  CHECK(metrics[2].value.is_null());
+  CHECK(metrics[3].path == "completed");
+
+  const auto derived = r::trajectory_metrics(small_recording());
+  const auto value = [&](const std::string& path) {
+    const r::Metric* m = r::find_metric(derived, path);
+    REQUIRE_MESSAGE(m != nullptr, path);
+    return m->value.get<double>();
+  };
+  CHECK(approx(value("trajectory.rms_current.i0"), 2.0, 1e-12));
+  CHECK(approx(value("trajectory.electrical_energy_from_samples"), 2.0, 1e-12));
+  CHECK(approx(value("trajectory.rest_fraction.elbow"), 0.5, 1e-12));
+  CHECK(approx(value("trajectory.max_abs_d_resting.elbow"), 1e-8, 1e-20));
+}
+
+TEST_CASE("verdict: computed from the numbers") {
+  SUBCASE("less energy, with the percentage of the other run's") {
+    const auto c = r::compare_runs({run_with("on", 4.0), run_with("off", 5.0)});
+    REQUIRE(c.verdict.size() == 2);
+    CHECK(c.verdict[0] == "on: 20 % less electrical energy than off (4 J vs 5 J).");
+    CHECK(c.verdict[1].find("not compared") != std::string::npos);
+  }
+  SUBCASE("the lower run is named whichever comes first") {
+    const auto c = r::compare_runs({run_with("a", 9.0), run_with("b", 3.0)});
+    CHECK(c.verdict[0] == "b: 67 % less electrical energy than a (3 J vs 9 J).");
+  }
+  SUBCASE("within 0.5 % is the same") {
+    const auto c = r::compare_runs({run_with("a", 10.0), run_with("b", 10.01)});
+    CHECK(c.verdict[0].find("the same electrical energy within 0.5 %") != std::string::npos);
+  }
+  SUBCASE("no energy at all") {
+    const auto c = r::compare_runs({run_with("a", 0.0), run_with("b", 0.0)});
+    CHECK(c.verdict[0].find("No run drew electrical energy") == 0);
+  }
+  SUBCASE("a failed run is named first") {
+    const auto c = r::compare_runs({run_with("a", 1.0), run_with("b", 2.0, false)});
+    CHECK(c.verdict[0].find("b did not complete (diverged)") == 0);
+  }
+  SUBCASE("relative differences are to the first run") {
+    const auto c = r::compare_runs({run_with("a", 4.0), run_with("b", 5.0)});
+    const auto& row = c.metrics[2];  // completed, final_time, then energy_final.electrical_in
+    REQUIRE(row.path == "energy_final.electrical_in");
+    CHECK(approx(*row.relative[1], 0.25, 1e-12));
+    CHECK(r::comparison_json(c)["metrics"][2]["relative"]["b"] == 0.25);
+  }
+  CHECK(r::unique_labels({"run", "x", "run"}) == std::vector<std::string>{"run", "x", "run_2"});
+}
+
+// ---- run folders and the HTML ----------------------------------------------
+
+namespace {
+
+const std::string kScenes = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/";
+
+struct Cell {
+  std::string metric, value, shown;
+};
+
+// The metrics table's cells: data-metric, data-value and the text shown.
+std::vector<Cell> table_cells(const std::string& html, const std::string& id) {
+  const auto start = html.find("<table id=\"" + id + "\"");
+  REQUIRE(start != std::string::npos);
+  const std::string table = html.substr(start, html.find("</table>", start) - start);
+  static const std::regex cell("data-metric=\"([^\"]*)\" data-value=\"([^\"]*)\">([^<]*)</td>");
+  std::vector<Cell> cells;
+  for (auto it = std::sregex_iterator(table.begin(), table.end(), cell); it != std::sregex_iterator(); ++it)
+    cells.push_back({(*it)[1], (*it)[2], (*it)[3]});
+  return cells;
+}
+
+// Every src="..." of <img> and <video>, relative to the page.
+std::vector<std::string> sources(const std::string& html, const std::string& tag) {
+  static const std::regex src("<(img|video)[^>]* src=\"([^\"]*)\"");
+  std::vector<std::string> out;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), src); it != std::sregex_iterator(); ++it)
+    if ((*it)[1] == tag) out.push_back((*it)[2]);
+  return out;
+}
+
+void flatten(const Json& node, const std::string& path, std::map<std::string, Json>& out) {
+  if (node.is_object())
+    for (const auto& [key, value] : node.items()) flatten(value, path.empty() ? key : path + "." + key, out);
+  else if (node.is_number() || node.is_boolean() || node.is_null())
+    out[path] = node;
+}
+
+// Every <img> names a PNG in the folder that decodes, at its declared size, not blank.
+void check_images(const fs::path& folder, const std::string& html, std::size_t at_least) {
+  const auto images = sources(html, "img");
+  CHECK(images.size() >= at_least);
+  for (const std::string& src : images) {
+    INFO(src);
+    REQUIRE(fs::exists(folder / src));
+    std::smatch m;
+    REQUIRE(std::regex_search(html, m, std::regex("src=\"" + src + "\"[^>]* width=\"(\\d+)\" height=\"(\\d+)\"")));
+    t::check_plot_png(folder / src, std::stoi(m[1]), std::stoi(m[2]));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("report.html: metrics equal summary.json; every image resolves and decodes") {
+  const auto dir = t::scratch("run");
+  const auto run = dir / "elbow_rest";
+  const auto out = t::run_elbowsim("run " + kScenes + "elbow_rest.yaml --out " + run.string() +
+                                   " --no-render --set simulation.duration=0.5");
+  REQUIRE(out.exit_code == 0);
+  CHECK(out.output.find("report: ") != std::string::npos);
+  const std::string html = t::slurp(run / "report.html");
+  REQUIRE(html.rfind("<!DOCTYPE html>", 0) == 0);
+  CHECK(html.find("<h1>elbow_rest</h1>") != std::string::npos);
+  CHECK(html.find("rk4, step 0.001 s, duration 0.5 s") != std::string::npos);
+  CHECK(html.find("stabilization:baumgarte") != std::string::npos);
+
+  // The metrics table: exactly summary.json's numbers and flags, in its order.
+  std::map<std::string, Json> expected;
+  flatten(Json::parse(t::slurp(run / "summary.json")), "", expected);
+  const auto cells = table_cells(html, "metrics");
+  CHECK(cells.size() == expected.size());
+  std::set<std::string> seen;
+  for (const Cell& c : cells) {
+    INFO(c.metric);
+    REQUIRE(expected.count(c.metric));
+    seen.insert(c.metric);
+    const Json& want = expected[c.metric];
+    if (want.is_boolean()) {
+      CHECK(c.value == (want.get<bool>() ? "true" : "false"));
+    } else if (want.is_number()) {
+      CHECK(std::stod(c.value) == want.get<double>());  // exact: round-trip digits
+      CHECK(approx(std::stod(c.shown), want.get<double>(), 1e-300, 5e-6));
+    }
+  }
+  CHECK(seen.size() == expected.size());
+  // Plots: joint angles, hand, motors, power, energy, contact, residuals.
+  check_images(run, html, 10);
+  for (const char* name : {"joint_angles", "contact_forces", "constraint_residual", "energy_balance"})
+    CHECK(html.find(std::string("plots/") + name + ".png") != std::string::npos);
+  CHECK(sources(html, "video").empty());  // no video.mp4 in this folder
+}
+
+TEST_CASE("report: rebuilt from the folder alone; the video is embedded when present") {
+  const auto dir = t::scratch("rebuild");
+  const auto run = dir / "r";
+  REQUIRE(t::run_elbowsim("run " + kScenes + "default.yaml --out " + run.string() +
+                          " --no-render --no-report --set simulation.duration=0.3").exit_code == 0);
+  CHECK_FALSE(fs::exists(run / "report.html"));  // --no-report
+  std::ofstream(run / "video.mp4") << "not really a video";
+  const auto out = t::run_elbowsim("report " + run.string());
+  REQUIRE(out.exit_code == 0);
+  const std::string html = t::slurp(run / "report.html");
+  REQUIRE(sources(html, "video") == std::vector<std::string>{"video.mp4"});
+  check_images(run, html, 8);
+  // No contact in this scene: the contact plots are listed as not plotted, not drawn.
+  CHECK(html.find("plots/contact_forces.png") == std::string::npos);
+  CHECK(html.find("contact_forces: no elbow columns") != std::string::npos);
+}
+
+TEST_CASE("report: a run that failed says why, at the top") {
+  const auto dir = t::scratch("failed");
+  const auto run = dir / "diverged";
+  const auto out = t::run_elbowsim("run " + kScenes + "default.yaml --out " + run.string() +
+                                   " --no-render --set simulation.step=0.05 --set simulation.integrator=euler");
+  REQUIRE(out.exit_code == 3);
+  const std::string html = t::slurp(run / "report.html");
+  const auto failure = html.find("<div class=\"failure\" id=\"failure\"");
+  REQUIRE(failure != std::string::npos);
+  CHECK(failure < html.find("<section id=\"run\">"));
+  const Json summary = Json::parse(t::slurp(run / "summary.json"));
+  CHECK(html.find(summary["failure"].get<std::string>().substr(0, 40)) != std::string::npos);
+  CHECK(html.find("STOPPED EARLY") != std::string::npos);
+  check_images(run, html, 1);
+}
+
+TEST_CASE("report: missing files are reported, a non-folder is bad input") {
+  const auto dir = t::scratch("missing");
+  CHECK(t::run_elbowsim("report " + (dir / "nothing").string()).exit_code == 2);
+  CHECK(t::run_elbowsim("report " + dir.string()).exit_code == 2);  // no summary, no trajectory
+  REQUIRE(t::run_elbowsim("run " + kScenes + "default.yaml --out " + (dir / "r").string() +
+                          " --no-render --no-report --set simulation.duration=0.1").exit_code == 0);
+  fs::remove(dir / "r" / "trajectory.csv");
+  REQUIRE(t::run_elbowsim("report " + (dir / "r").string()).exit_code == 0);
+  const std::string html = t::slurp(dir / "r" / "report.html");
+  CHECK(html.find("trajectory.csv: not in the run folder") != std::string::npos);
+  CHECK(table_cells(html, "metrics").size() > 10);
+}
+
+TEST_CASE("compare: names every run, a computed verdict, overlays and totals") {
+  const auto dir = t::scratch("compare");
+  const std::string args = " --no-render --no-report --set simulation.duration=0.5";
+  REQUIRE(t::run_elbowsim("run " + kScenes + "elbow_rest.yaml --out " + (dir / "elbow-on").string() + args).exit_code == 0);
+  REQUIRE(t::run_elbowsim("run " + kScenes + "elbow_rest.yaml --out " + (dir / "elbow-off").string() + args +
+                          " --set effects.contact=false").exit_code == 0);
+  const auto out = t::run_elbowsim("compare " + (dir / "elbow-on").string() + " " +
+                                   (dir / "elbow-off").string());
+  REQUIRE(out.exit_code == 0);
+  const auto folder = dir / "compare";  // default: beside the first run
+  const std::string html = t::slurp(folder / "report.html");
+  for (const char* label : {"elbow-on", "elbow-off"}) {
+    CHECK(html.find(std::string("<th>") + label + "</th>") != std::string::npos);
+    CHECK(html.find(std::string("data-run=\"") + label + "\"") != std::string::npos);
+  }
+  // The verdict's percentage follows from the two summaries.
+  const auto e_in = [&](const char* run) {
+    return Json::parse(t::slurp(dir / run / "summary.json"))["energy_final"]["electrical_in"].get<double>();
+  };
+  const double on = e_in("elbow-on"), off = e_in("elbow-off");
+  REQUIRE(on < off);
+  char sentence[128];
+  std::snprintf(sentence, sizeof sentence, "elbow-on: %.0f %% less electrical energy than elbow-off",
+                100 * (off - on) / off);
+  CHECK(out.output.find(sentence) != std::string::npos);
+  CHECK(html.find(sentence) != std::string::npos);
+  const Json json = Json::parse(t::slurp(folder / "comparison.json"));
+  CHECK(json["runs"] == Json::array({"elbow-on", "elbow-off"}));
+  CHECK(json["verdict"][0].get<std::string>().find(sentence) == 0);
+  check_images(folder, html, 4);
+  CHECK(html.find("plots/totals.png") != std::string::npos);
+  // Comparing one folder is a usage error.
+  CHECK(t::run_elbowsim("compare " + (dir / "elbow-on").string()).exit_code == 2);
+}

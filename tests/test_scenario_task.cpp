@@ -1,0 +1,230 @@
+// Scenario loader: task, controller and hand_load (the paper's experiment),
+// the Model members they fill (Model::task / controller / hand_load), and
+// their errors. Fixtures and CHECK_ERROR are in test_scenario_helpers.hpp;
+// kTwoLink has 8 lines, so sections appended with two_link_with() start at
+// line 9 (kScene below: at line 12).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+#include "app/scenario/scenario.hpp"
+#include "test_scenario_helpers.hpp"
+
+using elbowsim::ControllerSpec;
+using elbowsim::HandTask;
+using elbowsim::Model;
+using namespace scenario_test;
+
+namespace {
+
+// The two-link arm with an elbow at the end of link 0 and a table 0.15 m
+// below the arm (q = 0: the arm lies along x at z = 0). Lines 9-11.
+const std::string kScene = two_link_with(R"(
+effects: {contact: true}
+elbows: [{name: elbow, link: 0, at: 0.3}]
+table: {boxes: [{center: [0.4, 0, -0.2], size: [1.0, 0.6, 0.1]}]}
+)");
+
+std::string scene_with(const char* lines) { return kScene + yaml(lines); }
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Valid scenes
+
+TEST_CASE("task: defaults without the sections") {
+  const Model m = load(kTwoLink).model;
+  CHECK(m.task.path == HandTask::Path::none);
+  CHECK(m.controller.kind == ControllerSpec::Kind::open_loop);
+  CHECK(approx(m.controller.kp, Eigen::Vector2d(50, 50)));  // expanded to one per joint
+  CHECK(approx(m.controller.kd, Eigen::Vector2d(2, 2)));
+  CHECK(m.controller.desired_force == 5.0);
+  CHECK(m.hand_load.mass == 0.0);
+  CHECK(approx(m.hand_load.force, Eigen::Vector3d::Zero()));
+}
+
+TEST_CASE("task: a line from the start pose, kept elbow, posture, limits, pd_feedforward") {
+  const Model m = load(scene_with(R"(
+initial: {q: [0.1, 0.2]}
+task:
+  path: line
+  timing: minimum_jerk
+  start_delay: 0.5
+  duration: 2.0
+  points: [start, [0.45, 0, 0.05]]
+  elbows: [elbow]
+  elbow_clearance: 0.02
+  posture_weight: 0.1
+  joint_limits: {min: [-1, -2], max: [1, 2]}
+controller: {type: pd_feedforward, kp: [40, 30], kd: 1.5}
+hand_load: {mass: 0.2, force: [0, 0, -1]}
+)"))
+                      .model;
+  const HandTask& t = m.task;
+  CHECK(t.path == HandTask::Path::line);
+  CHECK(t.timing == HandTask::Timing::minimum_jerk);
+  CHECK(t.start_delay == 0.5);
+  CHECK(t.duration == 2.0);
+  REQUIRE(t.points.size() == 2);
+  CHECK(t.points[0].array().isNaN().all());  // `start`: the engine puts the initial hand there
+  CHECK(approx(t.points[1], Eigen::Vector3d(0.45, 0, 0.05)));
+  REQUIRE(t.elbows.size() == 1);
+  CHECK(t.elbows[0] == "elbow");
+  CHECK(t.elbow_clearance == 0.02);
+  CHECK(approx(t.posture, Eigen::Vector2d(0.1, 0.2)));  // default: initial q
+  CHECK(t.posture_weight == 0.1);
+  CHECK(approx(t.q_min, Eigen::Vector2d(-1, -2)));
+  CHECK(approx(t.q_max, Eigen::Vector2d(1, 2)));
+  CHECK(m.controller.kind == ControllerSpec::Kind::pd_feedforward);
+  CHECK(approx(m.controller.kp, Eigen::Vector2d(40, 30)));
+  CHECK(approx(m.controller.kd, Eigen::Vector2d(1.5, 1.5)));
+  CHECK(m.hand_load.mass == 0.2);
+  CHECK(approx(m.hand_load.force, Eigen::Vector3d(0, 0, -1)));
+}
+
+TEST_CASE("task: circle, waypoints, hold; force control") {
+  const Model c = load(scene_with(R"(
+task: {path: circle, center: [0.4, 0, 0.1], radius: 0.03, normal: [0, 2, 0], start_angle: 1.0,
+       elbows: [elbow], posture: [0.3, -0.3]}
+controller: {type: force, desired_force: 8}
+)"))
+                      .model;
+  CHECK(c.task.path == HandTask::Path::circle);
+  CHECK(c.task.points.empty());
+  CHECK(approx(c.task.center, Eigen::Vector3d(0.4, 0, 0.1)));
+  CHECK(c.task.radius == 0.03);
+  CHECK(approx(c.task.normal, Eigen::Vector3d(0, 1, 0)));  // normalized
+  CHECK(c.task.start_angle == 1.0);
+  CHECK(approx(c.task.posture, Eigen::Vector2d(0.3, -0.3)));
+  CHECK(c.controller.kind == ControllerSpec::Kind::force);
+  CHECK(c.controller.desired_force == 8.0);
+
+  const Model w = load(two_link_with("task: {path: waypoints, points: [[0.4, 0, 0], [0.4, 0, 0.1], "
+                                     "[0.3, 0, 0.1]]}\n"))
+                      .model;
+  CHECK(w.task.points.size() == 3);
+  CHECK(w.task.q_min.size() == 0);  // no limits
+
+  const Model h = load(two_link_with("task: {path: hold}\ncontroller: {type: pd}\n")).model;
+  CHECK(h.task.path == HandTask::Path::hold);
+  CHECK(h.task.points.empty());  // hold the start
+  CHECK(h.controller.kind == ControllerSpec::Kind::pd);
+}
+
+TEST_CASE("task: elbow kept above the table with contact on; keys set from the command line") {
+  const Model m =
+      load(scene_with("task: {path: hold, elbows: [elbow], elbow_clearance: 0.05}\n")).model;
+  CHECK(m.effects.contact);
+  CHECK(m.task.elbow_clearance == 0.05);
+  const Model o = load(scene_with("task: {path: hold}\n"),
+                       {"task.duration=3", "controller.type=pd", "controller.kp=7"})
+                      .model;
+  CHECK(o.task.duration == 3.0);
+  CHECK(approx(o.controller.kp, Eigen::Vector2d(7, 7)));
+}
+
+// ---------------------------------------------------------------------------
+// Errors: each names line, column and key path.
+
+TEST_CASE("task error: keys, path and timing") {
+  CHECK_ERROR(two_link_with("task:\n  path: line\n  pionts: []\n"), "x.yaml:11:3:", "task.pionts",
+              "unknown key \"pionts\" (did you mean \"points\"?)");
+  CHECK_ERROR(two_link_with("task:\n  duration: 1\n"), "x.yaml:10:3:", "task.path",
+              "required key is missing");
+  CHECK_ERROR(two_link_with("task: {path: spiral}\n"), "x.yaml:9:14:", "task.path",
+              "must be one of hold, line, circle, waypoints");
+  CHECK_ERROR(two_link_with("task: {path: hold, timing: cubic}\n"), "x.yaml:9:28:", "task.timing",
+              "must be one of quintic, minimum_jerk");
+  CHECK_ERROR(two_link_with("task: {path: hold, duration: 0}\n"), "x.yaml:9:30:", "task.duration",
+              "must be > 0 (got 0)");
+  CHECK_ERROR(two_link_with("task: {path: hold, start_delay: -1}\n"),
+              "x.yaml:9:33:", "task.start_delay", "must be >= 0");
+}
+
+TEST_CASE("task error: points by path") {
+  CHECK_ERROR(two_link_with("task:\n  path: line\n  points: [[0, 0, 0]]\n"),
+              "x.yaml:11:11:", "task.points", "a line needs exactly 2 points (got 1)");
+  CHECK_ERROR(two_link_with("task: {path: waypoints, points: [start]}\n"),
+              "x.yaml:9:33:", "task.points", "waypoints need at least 2 points (got 1)");
+  CHECK_ERROR(two_link_with("task: {path: hold, points: [start, start]}\n"),
+              "x.yaml:9:36:", "task.points[1]", "only the first point may be `start`");
+  CHECK_ERROR(two_link_with("task: {path: line, points: [start, [1, 2]]}\n"),
+              "x.yaml:9:36:", "task.points[1]", "expected a list of 3 numbers");
+  CHECK_ERROR(two_link_with("task: {path: line}\n"), "x.yaml:9:7:", "task.points",
+              "required key is missing");
+}
+
+TEST_CASE("task error: circle keys") {
+  CHECK_ERROR(two_link_with("task: {path: line, points: [start, start], radius: 0.1}\n"),
+              "x.yaml:9:", "task.radius", "is only for path: circle (this path is line)");
+  CHECK_ERROR(two_link_with("task: {path: circle, center: [0, 0, 0], radius: 1, points: []}\n"),
+              "x.yaml:9:", "task.points", "is not used by path: circle");
+  CHECK_ERROR(two_link_with("task: {path: circle, center: [0, 0, 0], radius: 0}\n"),
+              "x.yaml:9:", "task.radius", "must be > 0");
+  CHECK_ERROR(two_link_with("task: {path: circle, radius: 0.1}\n"), "x.yaml:9:7:", "task.center",
+              "required key is missing");
+  CHECK_ERROR(
+      two_link_with("task: {path: circle, center: [0, 0, 0], radius: 1, normal: [0, 0, 0]}\n"),
+      "x.yaml:9:", "task.normal", "must be non-zero");
+}
+
+TEST_CASE("task error: elbows, clearance, posture, joint limits") {
+  CHECK_ERROR(scene_with("task:\n  path: hold\n  elbows: [wrist]\n"),
+              "x.yaml:14:12:", "task.elbows[0]", "no elbow named \"wrist\" in elbows: elbow");
+  CHECK_ERROR(scene_with("task: {path: hold, elbows: [elbow, elbow]}\n"),
+              "x.yaml:12:", "task.elbows[1]", "is listed twice");
+  CHECK_ERROR(two_link_with("elbows: [{link: 0, at: 0.1}]\ntask: {path: hold, elbows: [elbow0]}\n"),
+              "x.yaml:10:", "task.elbows", "needs a table");
+  CHECK_ERROR(scene_with("task: {path: hold, elbow_clearance: -0.01}\n"),
+              "x.yaml:12:", "task.elbow_clearance", "must be >= 0");
+  CHECK_ERROR(two_link_with("task: {path: hold, posture: [0, 0, 0]}\n"),
+              "x.yaml:9:", "task.posture", "expected a list of 2 numbers (one per joint) (got 3)");
+  CHECK_ERROR(two_link_with("task: {path: hold, posture_weight: 0}\n"),
+              "x.yaml:9:", "task.posture_weight", "must be > 0");
+  CHECK_ERROR(two_link_with(R"(
+task:
+  path: hold
+  joint_limits:
+    min: [-1, 1]
+    max: [1, 1]
+)"),
+              "x.yaml:13:14:", "task.joint_limits.max[1]", "must be > min[1] (min 1, max 1)");
+  CHECK_ERROR(two_link_with("task: {path: hold, joint_limits: {min: [0, 0]}}\n"),
+              "x.yaml:9:", "task.joint_limits.max", "required key is missing");
+}
+
+TEST_CASE("controller error: what a closed loop needs") {
+  CHECK_ERROR(two_link_with("controller:\n  type: pd\n"), "x.yaml:10:9:", "controller.type",
+              "controller pd needs a task");
+  CHECK_ERROR(two_link_with("effects: {motor: none}\ntask: {path: hold}\ncontroller: {type: pd}\n"),
+              "x.yaml:11:", "controller.type", "needs effects.motor quasi_static or full");
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: force}\n"),
+              "x.yaml:13:", "controller.type", "needs task.elbows");
+  CHECK_ERROR(two_link_with(R"(
+elbows: [{name: elbow, link: 0, at: 0.3}]
+table: {boxes: [{center: [0.4, 0, -0.2], size: [1.0, 0.6, 0.1]}]}
+task: {path: hold, elbows: [elbow]}
+controller: {type: force}
+)"),
+              "x.yaml:12:", "controller.type", "needs effects.contact: true");
+  CHECK_ERROR(two_link_with("controller: {type: pid}\n"), "x.yaml:9:", "controller.type",
+              "must be one of open_loop, pd, pd_feedforward, force");
+}
+
+TEST_CASE("controller and hand_load error: values") {
+  CHECK_ERROR(two_link_with("controller:\n  kp: [1, -2]\n"), "x.yaml:10:", "controller.kp[1]",
+              "must be >= 0 (got -2)");
+  CHECK_ERROR(two_link_with("controller: {kd: [1, 2, 3]}\n"), "x.yaml:9:", "controller.kd",
+              "one per joint");
+  CHECK_ERROR(two_link_with("controller: {kd: -1}\n"), "x.yaml:9:", "controller.kd",
+              "must be >= 0");
+  CHECK_ERROR(two_link_with("controller: {desired_force: 0}\n"),
+              "x.yaml:9:", "controller.desired_force", "must be > 0");
+  CHECK_ERROR(two_link_with("controller: {type: pd, gain: 1}\n"), "x.yaml:9:", "controller.gain",
+              "unknown key");
+  CHECK_ERROR(two_link_with("hand_load:\n  mass: -1\n"), "x.yaml:10:9:", "hand_load.mass",
+              "must be >= 0 (got -1)");
+  CHECK_ERROR(two_link_with("hand_load: {force: [0, 1]}\n"), "x.yaml:9:", "hand_load.force",
+              "expected a list of 3 numbers");
+}
