@@ -98,7 +98,8 @@ int dispatch(const cxxopts::ParseResult& parsed) {
   if (command == "report" && words.size() == 2)
     return report_command({words[1], strings(parsed, "expect")});
   if (command == "compare" && words.size() >= 3) {
-    CompareArguments args{{words.begin() + 1, words.end()}, std::nullopt, strings(parsed, "expect")};
+    CompareArguments args{
+        {words.begin() + 1, words.end()}, std::nullopt, strings(parsed, "expect")};
     if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
     return compare_command(args);
   }

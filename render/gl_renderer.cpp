@@ -230,6 +230,19 @@ void check_framebuffer(const char* what) {
 
 }  // namespace
 
+namespace {
+
+// GL_LINES of 3-float positions (the grid), refilled per frame.
+void make_line_buffer(GlRenderer::Gl& g);
+
+// Single-sample colour target `resolve_fbo`, read back; with samples > 1 a
+// multisampled colour + depth target `draw_fbo` drawn into and resolved into
+// it (otherwise draw_fbo is resolve_fbo, with a depth buffer); two pixel-buffer
+// objects for the read-back.
+void make_framebuffers(GlRenderer::Gl& g, int width, int height, int samples);
+
+}  // namespace
+
 GlRenderer::GlRenderer(int width, int height, int msaa)
     : gl_(std::make_unique<Gl>()), width_(width), height_(height) {
   Gl& g = *gl_;
@@ -240,6 +253,21 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
   g.meshes[tube] = upload(unit_cylinder(8));
   g.meshes[cone] = upload(unit_cone(32));
   g.meshes[box] = upload(unit_box());
+  make_line_buffer(g);
+  GLint max_samples = 1;
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  samples_ = std::clamp(msaa, 1, std::max(1, int(max_samples)));
+  make_framebuffers(g, width, height, samples_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_CULL_FACE);
+  if (glGetError() != GL_NO_ERROR)
+    throw std::runtime_error("GL error while setting up the renderer");
+}
+
+namespace {
+
+void make_line_buffer(GlRenderer::Gl& g) {
   glGenVertexArrays(1, &g.line_vao);
   glBindVertexArray(g.line_vao);
   glGenBuffers(1, &g.line_vbo);
@@ -247,41 +275,34 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
   glBindVertexArray(0);
+}
 
-  // Single-sample colour target, read back; with MSAA a multisampled colour +
-  // depth target drawn into and resolved into it.
-  GLint max_samples = 1;
-  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  samples_ = std::clamp(msaa, 1, std::max(1, int(max_samples)));
+void make_framebuffers(GlRenderer::Gl& g, int width, int height, int samples) {
   glGenFramebuffers(1, &g.resolve_fbo);
   glBindFramebuffer(GL_FRAMEBUFFER, g.resolve_fbo);
   g.resolve_color = renderbuffer(1, GL_RGBA8, width, height);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, g.resolve_color);
-  if (samples_ > 1) {
+  if (samples > 1) {
     check_framebuffer("resolve");
     glGenFramebuffers(1, &g.draw_fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, g.draw_fbo);
-    g.draw_color = renderbuffer(samples_, GL_RGBA8, width, height);
+    g.draw_color = renderbuffer(samples, GL_RGBA8, width, height);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, g.draw_color);
   } else {
     g.draw_fbo = g.resolve_fbo;
   }
-  g.draw_depth = renderbuffer(samples_, GL_DEPTH_COMPONENT24, width, height);
+  g.draw_depth = renderbuffer(samples, GL_DEPTH_COMPONENT24, width, height);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, g.draw_depth);
   check_framebuffer("draw");
-
   glGenBuffers(2, g.pbo.data());
   for (GLuint pbo : g.pbo) {
     glBindBuffer(GL_PIXEL_PACK_BUFFER, pbo);
     glBufferData(GL_PIXEL_PACK_BUFFER, GLsizeiptr(width) * height * 4, nullptr, GL_STREAM_READ);
   }
   glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glEnable(GL_DEPTH_TEST);
-  glEnable(GL_CULL_FACE);
-  if (glGetError() != GL_NO_ERROR)
-    throw std::runtime_error("GL error while setting up the renderer");
 }
+
+}  // namespace
 
 GlRenderer::~GlRenderer() {
   Gl& g = *gl_;

@@ -47,8 +47,9 @@ class GlRenderer {
   bool fetch(std::uint8_t* rgba);
   int pending() const { return int(pending_.size()); }
 
+  struct Gl;  // GL object names and per-shape instance lists (opaque: gl_renderer.cpp)
+
  private:
-  struct Gl;  // GL object names and per-shape instance lists (gl_renderer.cpp)
   std::unique_ptr<Gl> gl_;
   int width_, height_, samples_ = 1;
   std::deque<int> pending_;  // pixel-buffer objects holding frames not yet fetched

@@ -68,8 +68,10 @@ std::vector<plot::Interval> intervals_on(const std::vector<double>& t,
   for (std::size_t k = 0; k < n; ++k) {
     if (!(state[k] >= 0.5)) continue;
     const double end = k + 1 < n ? t[k + 1] : t[k];
-    if (k > 0 && state[k - 1] >= 0.5 && !on.empty()) on.back().end = end;
-    else on.push_back({t[k], end});
+    if (k > 0 && state[k - 1] >= 0.5 && !on.empty())
+      on.back().end = end;
+    else
+      on.push_back({t[k], end});
   }
   return on;
 }

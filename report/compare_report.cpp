@@ -31,19 +31,24 @@ std::string field(const RunData& run, const nlohmann::ordered_json::json_pointer
 // One column per run: where each came from and how it ran.
 std::string runs_table(const std::vector<RunData>& runs, const fs::path& out) {
   using P = nlohmann::ordered_json::json_pointer;
-  const std::pair<const char*, const char*> rows[] = {
-      {"scenario", "/scenario"},         {"description", "/description"},
-      {"completed", "/completed"},       {"failure", "/failure"},
-      {"active effects", "/effects"},    {"integrator", "/settings/integrator"},
-      {"dynamics", "/settings/dynamics"}, {"step [s]", "/settings/step"},
-      {"duration [s]", "/settings/duration"}, {"steps", "/steps"},
-      {"wall time [s]", "/wall_seconds"}};
+  const std::pair<const char*, const char*> rows[] = {{"scenario", "/scenario"},
+                                                      {"description", "/description"},
+                                                      {"completed", "/completed"},
+                                                      {"failure", "/failure"},
+                                                      {"active effects", "/effects"},
+                                                      {"integrator", "/settings/integrator"},
+                                                      {"dynamics", "/settings/dynamics"},
+                                                      {"step [s]", "/settings/step"},
+                                                      {"duration [s]", "/settings/duration"},
+                                                      {"steps", "/steps"},
+                                                      {"wall time [s]", "/wall_seconds"}};
   std::string t = "<table id=\"runs\">\n<tr><th>run</th>";
   for (const RunData& run : runs) {
     std::string name = html::escape(run.label);
     if (fs::exists(run.folder / "report.html"))
-      name = "<a href=\"" + html::escape(fs::relative(run.folder / "report.html", out).generic_string()) +
-             "\">" + name + "</a>";
+      name = "<a href=\"" +
+             html::escape(fs::relative(run.folder / "report.html", out).generic_string()) + "\">" +
+             name + "</a>";
     t += "<th>" + name + "</th>";
   }
   t += "</tr>\n";
@@ -58,9 +63,10 @@ std::string runs_table(const std::vector<RunData>& runs, const fs::path& out) {
 // "+12.3 %", "same"; for flags and missing values "same", "differs" or "—".
 std::string relative_text(const ComparedMetric& m, std::size_t run) {
   const std::optional<double>& r = m.relative[run];
-  if (!r) return m.values[run].is_null() || m.values[0].is_null() ? "—"
-                 : m.values[run] == m.values[0]                  ? "same"
-                                                                 : "differs";
+  if (!r)
+    return m.values[run].is_null() || m.values[0].is_null() ? "—"
+           : m.values[run] == m.values[0]                   ? "same"
+                                                            : "differs";
   if (*r == 0) return "same";
   char text[32];
   std::snprintf(text, sizeof text, "%+.3g %%", 100 * *r);
@@ -88,7 +94,8 @@ std::string metrics_table(const Comparison& c) {
            html::exact_value(m.values[r]) + "\">" +
            html::escape(m.values[r].is_null() ? "—" : html::display_value(m.values[r])) + "</td>";
     for (std::size_t r = 1; r < m.values.size(); ++r)
-      t += cell(relative_text(m, r), m.relative[r] && std::abs(*m.relative[r]) >= 0.005 ? "num differs" : "num");
+      t += cell(relative_text(m, r),
+                m.relative[r] && std::abs(*m.relative[r]) >= 0.005 ? "num differs" : "num");
     t += "</tr>\n";
   }
   return t + "</table>\n";
@@ -106,7 +113,8 @@ std::string notices(const std::vector<RunData>& runs) {
     std::vector<std::string> warnings;
     if (run.has_summary() && run.summary.contains("warnings"))
       for (const auto& w : run.summary["warnings"]) warnings.push_back(w.get<std::string>());
-    if (!warnings.empty()) out += html::notice("warnings", run.label + ": warnings", warnings, "warnings-" + id);
+    if (!warnings.empty())
+      out += html::notice("warnings", run.label + ": warnings", warnings, "warnings-" + id);
     if (!run.problems.empty())
       out += html::notice("problems", run.label + ": missing or unreadable files", run.problems,
                           "problems-" + id);

@@ -34,7 +34,8 @@ void add_rows(const std::vector<std::vector<Metric>>& per_run, std::vector<Compa
       const Metric* found = find_metric(metrics, m.path);
       row.values.push_back(found ? found->value : nlohmann::ordered_json());
     }
-    for (const auto& value : row.values) row.relative.push_back(relative_difference(value, row.values[0]));
+    for (const auto& value : row.values)
+      row.relative.push_back(relative_difference(value, row.values[0]));
     out.push_back(std::move(row));
   }
 }
@@ -132,14 +133,17 @@ std::vector<std::string> verdict(const std::vector<RunData>& runs, const Compari
   if (all_zero(table, "energy_final.electrical_in"))
     sentences.push_back("No run drew electrical energy (energy_final.electrical_in is 0 in all).");
   else
-    for (auto& s : smaller_is_better(table, "energy_final.electrical_in", "less", "electrical energy"))
+    for (auto& s :
+         smaller_is_better(table, "energy_final.electrical_in", "less", "electrical energy"))
       sentences.push_back(std::move(s));
   bool any_error = false;
-  for (const ComparedMetric& m : table.metrics) any_error = any_error || m.path == "trajectory.rms_hand_error";
+  for (const ComparedMetric& m : table.metrics)
+    any_error = any_error || m.path == "trajectory.rms_hand_error";
   if (!any_error)
     sentences.push_back("Hand accuracy is not compared: no run recorded a hand_error column.");
   else
-    for (auto& s : smaller_is_better(table, "trajectory.rms_hand_error", "smaller", "RMS hand error"))
+    for (auto& s :
+         smaller_is_better(table, "trajectory.rms_hand_error", "smaller", "RMS hand error"))
       sentences.push_back(std::move(s));
   return sentences;
 }

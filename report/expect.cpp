@@ -43,7 +43,8 @@ class Lexer {
     const char c = s_[i_];
     if (std::isdigit(static_cast<unsigned char>(c))) return number(start);
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
-      while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_')) ++i_;
+      while (i_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[i_])) || s_[i_] == '_'))
+        ++i_;
       return {Tok::name, s_.substr(start, i_ - start), start + 1};
     }
     if (c == '\'' || c == '"') return quoted(start);
@@ -89,9 +90,9 @@ class Lexer {
 
 struct Expectation::Node {
   enum Kind { literal, path, unary, binary, call } kind;
-  nlohmann::ordered_json value;                  // literal
-  std::vector<std::string> segments;     // path
-  std::string text;                      // path as written; operator; function name
+  nlohmann::ordered_json value;       // literal
+  std::vector<std::string> segments;  // path
+  std::string text;                   // path as written; operator; function name
   std::vector<std::unique_ptr<Node>> operands;
   std::size_t column = 0;
 };
@@ -136,7 +137,8 @@ class Parser {
 
   NodePtr parse() {
     NodePtr root = parse_or();
-    if (peek().kind != Tok::end) fail(peek(), "expected an operator or the end, found " + describe_token(peek()));
+    if (peek().kind != Tok::end)
+      fail(peek(), "expected an operator or the end, found " + describe_token(peek()));
     return root;
   }
 
@@ -194,8 +196,7 @@ class Parser {
     if (!is_comparison(peek())) return left;
     const Token op = take();
     left = binary(op.text, op.column, std::move(left), parse_sum());
-    if (is_comparison(peek()))
-      fail(peek(), "comparisons do not chain: write a < b and b < c");
+    if (is_comparison(peek())) fail(peek(), "comparisons do not chain: write a < b and b < c");
     return left;
   }
 
@@ -236,7 +237,9 @@ class Parser {
     if (t.kind == Tok::number) return literal(t, std::strtod(t.text.c_str(), nullptr));
     if (t.kind == Tok::op && t.text == "(") {
       NodePtr inner = parse_or();
-      if (!at(")")) fail(peek(), "expected \")\" to close the \"(\" at column " + std::to_string(t.column) + ", found " + describe_token(peek()));
+      if (!at(")"))
+        fail(peek(), "expected \")\" to close the \"(\" at column " + std::to_string(t.column) +
+                         ", found " + describe_token(peek()));
       take();
       return inner;
     }
@@ -256,7 +259,9 @@ class Parser {
     NodePtr n = make(Node::call, name.column, name.text);
     n->operands.push_back(parse_or());
     while (at(",")) take(), n->operands.push_back(parse_or());
-    if (!at(")")) fail(peek(), "expected \",\" or \")\" in " + name.text + "(...), found " + describe_token(peek()));
+    if (!at(")"))
+      fail(peek(),
+           "expected \",\" or \")\" in " + name.text + "(...), found " + describe_token(peek()));
     take();
     const std::size_t args = n->operands.size();
     if ((name.text == "abs" || name.text == "len") && args != 1)
@@ -271,16 +276,18 @@ class Parser {
     while (at(".")) {
       take();
       const Token s = take();
-      const bool index = s.kind == Tok::number &&
-                         s.text.find_first_not_of("0123456789") == std::string::npos;
+      const bool index =
+          s.kind == Tok::number && s.text.find_first_not_of("0123456789") == std::string::npos;
       if (s.kind != Tok::name && s.kind != Tok::text && !index)
         fail(s, "expected a key after \".\", found " + describe_token(s));
       n->segments.push_back(s.text);
     }
     for (std::size_t k = 0; k < n->segments.size(); ++k) {
       const std::string& s = n->segments[k];
-      const bool plain = !s.empty() && s.find_first_not_of(
-          "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") == std::string::npos;
+      const bool plain =
+          !s.empty() &&
+          s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") ==
+              std::string::npos;
       n->text += (k ? "." : "") + (plain ? s : "'" + s + "'");
     }
     return n;
@@ -319,11 +326,16 @@ class Evaluator {
 
   nlohmann::ordered_json eval(const Node& n) {
     switch (n.kind) {
-      case Node::literal: return n.value;
-      case Node::path: return lookup(n);
-      case Node::unary: return unary(n);
-      case Node::binary: return binary(n);
-      case Node::call: return call(n);
+      case Node::literal:
+        return n.value;
+      case Node::path:
+        return lookup(n);
+      case Node::unary:
+        return unary(n);
+      case Node::binary:
+        return binary(n);
+      case Node::call:
+        return call(n);
     }
     return nullptr;
   }
@@ -355,9 +367,12 @@ class Evaluator {
           std::stoul(s) < node->size())
         next = &(*node)[std::stoul(s)];
       if (!next) {
-        std::string hint = node->is_object() ? " (" + std::string(walked.empty() ? "top level" : walked) + " has: " + keys_of(*node) + ")"
-                           : node->is_array() ? " (" + walked + " is a list of " + std::to_string(node->size()) + ")"
-                                              : " (" + walked + " is " + type_name(*node) + ")";
+        std::string hint =
+            node->is_object() ? " (" + std::string(walked.empty() ? "top level" : walked) +
+                                    " has: " + keys_of(*node) + ")"
+            : node->is_array()
+                ? " (" + walked + " is a list of " + std::to_string(node->size()) + ")"
+                : " (" + walked + " is " + type_name(*node) + ")";
         fail(n, "no metric \"" + n.text + "\": nothing at \"" + s + "\"" + hint);
       }
       walked += (walked.empty() ? "" : ".") + s;
@@ -408,14 +423,17 @@ class Evaluator {
   }
 
   // Numbers (null = NaN) compare as IEEE doubles; strings and booleans by value.
-  nlohmann::ordered_json equality(const Node& n, const nlohmann::ordered_json& a, const nlohmann::ordered_json& b) const {
+  nlohmann::ordered_json equality(const Node& n, const nlohmann::ordered_json& a,
+                                  const nlohmann::ordered_json& b) const {
     const bool numeric = (a.is_number() || a.is_null()) && (b.is_number() || b.is_null());
     bool equal;
-    if (numeric) equal = number(n, a, "==") == number(n, b, "==");
+    if (numeric)
+      equal = number(n, a, "==") == number(n, b, "==");
     else if (std::string(type_name(a)) != type_name(b))
       fail(n, std::string("cannot compare ") + type_name(a) + " " + value_text(a) + " with " +
                   type_name(b) + " " + value_text(b));
-    else equal = a == b;
+    else
+      equal = a == b;
     return n.text == "==" ? equal : !equal;
   }
 
@@ -464,9 +482,9 @@ Expectation::Outcome Expectation::evaluate(const nlohmann::ordered_json& metrics
   Evaluator evaluator(text_, metrics);
   const nlohmann::ordered_json result = evaluator.eval(*root_);
   if (!result.is_boolean())
-    throw ExpectError(text_, 1, "the expression gives " + std::string(type_name(result)) + " (" +
-                                    value_text(result) + "), not true/false: compare it, e.g. " +
-                                    "... < 1");
+    throw ExpectError(text_, 1,
+                      "the expression gives " + std::string(type_name(result)) + " (" +
+                          value_text(result) + "), not true/false: compare it, e.g. " + "... < 1");
   return {result.get<bool>(), std::move(evaluator.values)};
 }
 

@@ -32,7 +32,7 @@ class ExpectError : public std::runtime_error {
  public:
   ExpectError(const std::string& expression, std::size_t column, const std::string& message);
   std::string expression;
-  std::size_t column;  // 1-based character position in the expression
+  std::size_t column;   // 1-based character position in the expression
   std::string message;  // without the expression and position
 };
 

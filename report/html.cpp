@@ -43,12 +43,23 @@ std::string escape(const std::string& text) {
   out.reserve(text.size());
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -100,7 +111,8 @@ std::string info_table(const std::vector<std::pair<std::string, std::string>>& r
 }
 
 std::string metrics_table(const std::vector<Metric>& metrics, const std::string& id) {
-  std::string out = "<table id=\"" + id + "\" class=\"metrics\">\n"
+  std::string out = "<table id=\"" + id +
+                    "\" class=\"metrics\">\n"
                     "<tr><th>metric</th><th>value</th><th>unit</th></tr>\n";
   for (const Metric& m : metrics)
     out += "<tr><td><code>" + escape(m.path) + "</code></td><td class=\"num\" data-metric=\"" +
@@ -110,9 +122,9 @@ std::string metrics_table(const std::vector<Metric>& metrics, const std::string&
 }
 
 std::string figure(const Figure& f) {
-  return "<figure>\n<img src=\"" + escape(f.file) + "\" alt=\"" + escape(f.title) +
-         "\" width=\"" + std::to_string(f.width) + "\" height=\"" + std::to_string(f.height) +
-         "\">\n<figcaption>" + escape(f.caption) + "</figcaption>\n</figure>\n";
+  return "<figure>\n<img src=\"" + escape(f.file) + "\" alt=\"" + escape(f.title) + "\" width=\"" +
+         std::to_string(f.width) + "\" height=\"" + std::to_string(f.height) + "\">\n<figcaption>" +
+         escape(f.caption) + "</figcaption>\n</figure>\n";
 }
 
 void write_file(const std::filesystem::path& path, const std::string& text) {

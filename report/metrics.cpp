@@ -9,7 +9,8 @@ namespace elbowsim::report {
 
 namespace {
 
-void flatten(const nlohmann::ordered_json& node, const std::string& path, std::vector<Metric>& out) {
+void flatten(const nlohmann::ordered_json& node, const std::string& path,
+             std::vector<Metric>& out) {
   if (node.is_object()) {
     for (const auto& [key, value] : node.items())
       flatten(value, path.empty() ? key : path + "." + key, out);

@@ -12,9 +12,10 @@
 namespace elbowsim::report {
 
 struct Metric {
-  std::string path;      // "energy_final.electrical_in"
-  nlohmann::ordered_json value;  // a number or a boolean (null: a NaN that summary.json wrote as null)
-  std::string unit;      // "J"; empty when dimensionless or unknown
+  std::string path;  // "energy_final.electrical_in"
+  nlohmann::ordered_json
+      value;         // a number or a boolean (null: a NaN that summary.json wrote as null)
+  std::string unit;  // "J"; empty when dimensionless or unknown
 };
 
 // Every number, boolean and null leaf of summary.json in file order, with

@@ -16,21 +16,21 @@ namespace elbowsim::report {
 
 // One row of events.csv.
 struct EventRow {
-  double t = 0;          // [s]
-  std::string elbow;     // elbow name
-  std::string kind;      // "landing" or "release"
-  double speed = 0;      // [m/s] normal speed at touchdown
-  double impulse = 0;    // [N s]
+  double t = 0;            // [s]
+  std::string elbow;       // elbow name
+  std::string kind;        // "landing" or "release"
+  double speed = 0;        // [m/s] normal speed at touchdown
+  double impulse = 0;      // [N s]
   double energy_lost = 0;  // [J]
 };
 
 struct RunData {
   std::filesystem::path folder;
-  std::string label;       // the folder's name: names the run in comparisons and --expect
+  std::string label;               // the folder's name: names the run in comparisons and --expect
   nlohmann::ordered_json summary;  // summary.json; null when the folder has none
-  Recording trajectory;    // trajectory.csv; no columns when the folder has none
-  std::vector<EventRow> events;  // events.csv (contact scenes)
-  std::string scenario_yaml;     // scenario.yaml, the scenario as run; empty if absent
+  Recording trajectory;            // trajectory.csv; no columns when the folder has none
+  std::vector<EventRow> events;    // events.csv (contact scenes)
+  std::string scenario_yaml;       // scenario.yaml, the scenario as run; empty if absent
   // The model described from scenario.yaml ("links", "2: 0.4 m 1.3 kg, ..."),
   // empty when it could not be rebuilt.
   std::vector<std::pair<std::string, std::string>> model_rows;

@@ -28,7 +28,9 @@ struct Planned {
   std::string skipped;  // why there is no plot (when plot is empty)
 };
 
-Planned skip(std::string name, std::string why) { return {std::move(name), {}, "", std::move(why)}; }
+Planned skip(std::string name, std::string why) {
+  return {std::move(name), {}, "", std::move(why)};
+}
 
 Series series(std::string label, std::vector<double> x, std::vector<double> y) {
   Series s;
@@ -53,12 +55,12 @@ LinePlot time_plot(const RunData& run, const std::string& title, Axis y) {
 
 // One line per column named prefix + j, against time.
 Planned per_joint(const RunData& run, const std::string& name, const std::string& prefix,
-                  const std::string& title, const std::string& quantity,
-                  const std::string& caption, const std::string& why_missing) {
+                  const std::string& title, const std::string& quantity, const std::string& caption,
+                  const std::string& why_missing) {
   const auto names = indexed_columns(run.trajectory, prefix);
   if (names.empty()) return skip(name, why_missing);
-  LinePlot p = time_plot(run, title,
-                         plot::linear_axis(quantity, column_unit(run.trajectory, names[0])));
+  LinePlot p =
+      time_plot(run, title, plot::linear_axis(quantity, column_unit(run.trajectory, names[0])));
   const auto t = column(run.trajectory, "time");
   for (const std::string& c : names) p.series.push_back(series(c, t, column(run.trajectory, c)));
   return {name, std::move(p), caption, ""};
@@ -100,8 +102,7 @@ Planned hand_error(const RunData& run) {
   for (std::size_t k = 0; k < e.size(); ++k) magnitude[k] = std::abs(e[k]);
   p.series.push_back(series("|hand_error|", column(run.trajectory, "time"), magnitude));
   p.empty_message = "no data: the hand error is 0 at every sample";
-  return {"hand_error", std::move(p), "Distance from the hand to its desired path (log axis).",
-          ""};
+  return {"hand_error", std::move(p), "Distance from the hand to its desired path (log axis).", ""};
 }
 
 Planned power(const RunData& run) {
@@ -212,12 +213,14 @@ Planned balance(const RunData& run) {
 
 std::vector<Planned> plan_run(const RunData& run) {
   return {
-      per_joint(run, "joint_angles", "q", "Joint angles", "angle", "Joint angles q, relative to "
-                "the previous link.", "no q columns"),
+      per_joint(run, "joint_angles", "q", "Joint angles", "angle",
+                "Joint angles q, relative to "
+                "the previous link.",
+                "no q columns"),
       hand_position(run),
       hand_error(run),
-      per_joint(run, "motor_currents", "i", "Motor currents", "current",
-                "Motor winding currents.", "no current columns (effects.motor: none)"),
+      per_joint(run, "motor_currents", "i", "Motor currents", "current", "Motor winding currents.",
+                "no current columns (effects.motor: none)"),
       per_joint(run, "motor_voltages", "v", "Motor voltages", "voltage",
                 "Voltages applied to the motors (after the voltage limit).",
                 "no voltage columns (effects.motor: none)"),
@@ -265,9 +268,8 @@ namespace {
 const Dash kDashes[] = {Dash::solid, Dash::dashed, Dash::dotted};
 
 // One line per (run, column): colour by run, dash by column.
-Planned overlay(const std::vector<RunData>& runs, const std::string& name,
-                const std::string& title, Axis y, const std::vector<std::string>& columns,
-                const std::string& caption) {
+Planned overlay(const std::vector<RunData>& runs, const std::string& name, const std::string& title,
+                Axis y, const std::vector<std::string>& columns, const std::string& caption) {
   if (columns.empty()) return skip(name, "no run has these columns");
   LinePlot p;
   p.title = title;
@@ -276,7 +278,8 @@ Planned overlay(const std::vector<RunData>& runs, const std::string& name,
     const auto t = column(runs[r].trajectory, "time");
     for (std::size_t c = 0; c < columns.size(); ++c) {
       if (runs[r].trajectory.column(columns[c]) < 0) continue;
-      Series s = series(runs[r].label + " " + columns[c], t, column(runs[r].trajectory, columns[c]));
+      Series s =
+          series(runs[r].label + " " + columns[c], t, column(runs[r].trajectory, columns[c]));
       s.color = plot::palette(static_cast<int>(r));
       s.dash = kDashes[c % 3];
       p.series.push_back(std::move(s));
@@ -318,8 +321,7 @@ plot::BarChart totals(const std::vector<RunData>& runs) {
 
 }  // namespace
 
-FigureSet write_comparison_plots(const std::vector<RunData>& runs,
-                                 const fs::path& report_folder) {
+FigureSet write_comparison_plots(const std::vector<RunData>& runs, const fs::path& report_folder) {
   std::vector<Planned> planned;
   planned.push_back(overlay(runs, "energy", "Cumulative energy", plot::linear_axis("energy", "J"),
                             {"E_in", "E_joule"},
@@ -327,11 +329,10 @@ FigureSet write_comparison_plots(const std::vector<RunData>& runs,
   std::vector<const Recording*> recordings;
   for (const RunData& run : runs) recordings.push_back(&run.trajectory);
   const auto hand = hand_columns(recordings);
-  planned.push_back(overlay(runs, "hand_position", "Hand position",
-                            plot::linear_axis("position", "m"), hand,
-                            hand.size() == 2
-                                ? "Hand x (solid) and z (dashed), per run (y is 0 throughout)."
-                                : "Hand x (solid), z (dashed) and y (dotted), per run."));
+  planned.push_back(
+      overlay(runs, "hand_position", "Hand position", plot::linear_axis("position", "m"), hand,
+              hand.size() == 2 ? "Hand x (solid) and z (dashed), per run (y is 0 throughout)."
+                               : "Hand x (solid), z (dashed) and y (dotted), per run."));
   planned.push_back(overlay(runs, "motor_currents", "Motor currents",
                             plot::linear_axis("current", "A"), all_indexed(runs, "i"),
                             "Winding currents; colour by run, dash by motor (i0 solid, i1 "

@@ -11,9 +11,9 @@
 namespace elbowsim::report {
 
 struct Figure {
-  std::string file;     // relative to the report folder, "plots/joint_angles.png"
+  std::string file;  // relative to the report folder, "plots/joint_angles.png"
   std::string title;
-  std::string caption;  // what it shows, one sentence
+  std::string caption;        // what it shows, one sentence
   int width = 0, height = 0;  // [px]
 };
 

@@ -29,15 +29,16 @@ std::string joined(const nlohmann::ordered_json& list) {
 }
 
 std::string dynamics_name(const std::string& method) {
-  if (method == "walker_orin") return "walker_orin: mass matrix by Walker-Orin method 1 (the paper's) + Cholesky";
+  if (method == "walker_orin")
+    return "walker_orin: mass matrix by Walker-Orin method 1 (the paper's) + Cholesky";
   if (method == "crba") return "crba: mass matrix by the composite-rigid-body algorithm + Cholesky";
   if (method == "aba") return "aba: articulated-body algorithm";
   return method;
 }
 
 std::string status(const nlohmann::ordered_json& s) {
-  const std::string steps = std::to_string(s.value("steps", 0L)) + " steps to t = " +
-                            number(s.value("final_time", 0.0), "s");
+  const std::string steps = std::to_string(s.value("steps", 0L)) +
+                            " steps to t = " + number(s.value("final_time", 0.0), "s");
   return s.value("completed", false) ? "completed: " + steps : "STOPPED EARLY after " + steps;
 }
 
@@ -61,12 +62,14 @@ Rows run_rows(const RunData& run) {
   rows.push_back({"dynamics", dynamics_name(settings.value("dynamics", ""))});
   const auto& contact = s.value("contact", nlohmann::ordered_json::object());
   if (contact.value("enabled", false))
-    rows.push_back({"contact", "events: " + contact.value("events", "") + ", stabilization: " +
-                                   contact.value("stabilization", "") + ", " +
+    rows.push_back({"contact", "events: " + contact.value("events", "") +
+                                   ", stabilization: " + contact.value("stabilization", "") + ", " +
                                    std::to_string(contact.value("landings", 0)) + " landings, " +
                                    std::to_string(contact.value("releases", 0)) + " releases"});
   const long steps_per_second = wall > 0 ? std::lround(s.value("steps", 0L) / wall) : 0;
-  rows.push_back({"wall time", number(wall, "s") + (wall > 0 ? " (" + std::to_string(steps_per_second) + " steps/s)" : "")});
+  rows.push_back(
+      {"wall time", number(wall, "s") +
+                        (wall > 0 ? " (" + std::to_string(steps_per_second) + " steps/s)" : "")});
   rows.push_back({"recorded samples", std::to_string(run.trajectory.rows())});
   return rows;
 }
@@ -75,8 +78,10 @@ std::string header(const RunData& run) {
   const std::string name = run.has_summary() ? run.summary.value("scenario", run.label) : run.label;
   std::string out = "<header>\n<h1>" + html::escape(name) + "</h1>\n";
   if (run.has_summary() && !run.summary.value("description", "").empty())
-    out += "<p class=\"description\">" + html::escape(run.summary["description"].get<std::string>()) + "</p>\n";
-  return out + "<p class=\"meta\">elbowsim run report, rebuilt from the files in run folder <code>" +
+    out += "<p class=\"description\">" +
+           html::escape(run.summary["description"].get<std::string>()) + "</p>\n";
+  return out +
+         "<p class=\"meta\">elbowsim run report, rebuilt from the files in run folder <code>" +
          html::escape(run.label) + "</code> (<code>elbowsim report " + html::escape(run.label) +
          "</code> rebuilds it).</p>\n</header>\n";
 }
@@ -86,17 +91,19 @@ std::string notices(const RunData& run) {
   std::string out;
   const nlohmann::ordered_json& s = run.summary;
   if (run.has_summary() && !s.value("completed", true))
-    out += html::notice("failure", "This run did not complete.",
-                        {"Failure: " + s.value("failure", std::string("(no reason recorded)")),
-                         "What it recorded is kept: t = 0 to " + number(s.value("final_time", 0.0), "s") +
-                             ", " + std::to_string(run.trajectory.rows()) +
-                             " samples; the plots and totals cover that span only."},
-                        "failure");
+    out += html::notice(
+        "failure", "This run did not complete.",
+        {"Failure: " + s.value("failure", std::string("(no reason recorded)")),
+         "What it recorded is kept: t = 0 to " + number(s.value("final_time", 0.0), "s") + ", " +
+             std::to_string(run.trajectory.rows()) +
+             " samples; the plots and totals cover that span only."},
+        "failure");
   std::vector<std::string> warnings;
   if (run.has_summary() && s.contains("warnings"))
     for (const auto& w : s["warnings"]) warnings.push_back(w.get<std::string>());
   if (!warnings.empty())
-    out += html::notice("warnings", std::to_string(warnings.size()) + " warning(s)", warnings, "warnings");
+    out += html::notice("warnings", std::to_string(warnings.size()) + " warning(s)", warnings,
+                        "warnings");
   if (!run.problems.empty())
     out += html::notice("problems", "Missing or unreadable files", run.problems, "problems");
   return out;
@@ -115,9 +122,10 @@ std::string plots_section(const FigureSet& figures) {
 
 std::string events_section(const RunData& run) {
   if (run.events.empty()) return "";
-  std::string out = "<section id=\"events\">\n<h2>Contact events</h2>\n<table>\n<tr><th>time [s]</th>"
-                    "<th>elbow</th><th>kind</th><th>speed [m/s]</th><th>impulse [N s]</th>"
-                    "<th>energy lost [J]</th></tr>\n";
+  std::string out =
+      "<section id=\"events\">\n<h2>Contact events</h2>\n<table>\n<tr><th>time [s]</th>"
+      "<th>elbow</th><th>kind</th><th>speed [m/s]</th><th>impulse [N s]</th>"
+      "<th>energy lost [J]</th></tr>\n";
   for (std::size_t k = 0; k < std::min(run.events.size(), kMaxEventRows); ++k) {
     const EventRow& e = run.events[k];
     out += "<tr><td class=\"num\">" + number(e.t) + "</td><td>" + html::escape(e.elbow) +
@@ -142,7 +150,8 @@ std::string contents(const RunData& run) {
 
 std::string files_section(const RunData& run) {
   std::string out = "<section id=\"files\">\n<h2>Files</h2>\n<ul>\n";
-  for (const char* name : {"trajectory.csv", "summary.json", "events.csv", "scenario.yaml", "video.mp4"})
+  for (const char* name :
+       {"trajectory.csv", "summary.json", "events.csv", "scenario.yaml", "video.mp4"})
     if (fs::exists(run.folder / name))
       out += "<li><a href=\"" + std::string(name) + "\">" + name + "</a></li>\n";
   out += "</ul>\n";
@@ -160,13 +169,15 @@ std::string run_report_html(const RunData& run, const FigureSet& figures) {
   page += contents(run);
   page += "<section id=\"run\">\n<h2>Run</h2>\n" + html::info_table(run_rows(run)) + "</section>\n";
   if (run.has_video)
-    page += "<section id=\"video\">\n<h2>Video</h2>\n<video src=\"video.mp4\" controls "
-            "preload=\"metadata\" width=\"960\">video.mp4</video>\n</section>\n";
+    page +=
+        "<section id=\"video\">\n<h2>Video</h2>\n<video src=\"video.mp4\" controls "
+        "preload=\"metadata\" width=\"960\">video.mp4</video>\n</section>\n";
   page += plots_section(figures);
   page += "<section id=\"summary-metrics\">\n<h2>Metrics (summary.json)</h2>\n";
   page += run.has_summary()
               ? "<p class=\"meta\">In summary.json's order, named as <code>--expect</code> "
-                "names them.</p>\n" + html::metrics_table(summary_metrics(run.summary), "metrics")
+                "names them.</p>\n" +
+                    html::metrics_table(summary_metrics(run.summary), "metrics")
               : "<p>No summary.json in this run folder.</p>\n";
   const auto derived = trajectory_metrics(run.trajectory);
   if (!derived.empty())

@@ -60,7 +60,7 @@ inline void check_plot_png(const std::filesystem::path& png, int width, int heig
   REQUIRE(image.width == width);
   REQUIRE(image.height == height);
   CHECK(luminance_variance(image) > 50);
-  CHECK(dark_pixels(image, 0, height / 4, 40, 3 * height / 4) > 20);          // y label
+  CHECK(dark_pixels(image, 0, height / 4, 40, 3 * height / 4) > 20);              // y label
   CHECK(dark_pixels(image, width / 4, height - 50, 3 * width / 4, height) > 40);  // x ticks, label
 }
 

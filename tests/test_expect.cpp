@@ -9,8 +9,8 @@
 #include "report_test_helpers.hpp"
 
 using elbowsim::report::check_expectations;
-using elbowsim::report::ExpectError;
 using elbowsim::report::Expectation;
+using elbowsim::report::ExpectError;
 using elbowsim::report::ExpectStatus;
 using Json = nlohmann::ordered_json;
 namespace t = elbowsim::testing;
@@ -83,7 +83,7 @@ TEST_CASE("expect: and/&&, or/||, not/!, booleans") {
   CHECK_FALSE(holds("not completed"));
   CHECK(holds("completed == true"));
   CHECK(holds("steps > 1 and steps < 3000 or false"));  // and binds tighter than or
-  CHECK(holds("true or false and false"));   // true or (false and false)
+  CHECK(holds("true or false and false"));              // true or (false and false)
   CHECK_FALSE(holds("(true or false) and false"));
 }
 
@@ -106,19 +106,23 @@ TEST_CASE("expect: a NaN metric (null) fails every comparison but !=") {
 }
 
 TEST_CASE("expect: compare paths start with a run label; odd labels are quoted") {
-  const Json runs = {{"elbow-on", kSummary}, {"elbow_off", Json::parse(R"({"energy_final": {"electrical_in": 10.5}})")}};
-  CHECK(holds("'elbow-on'.energy_final.electrical_in < elbow_off.energy_final.electrical_in", runs));
-  CHECK_FALSE(holds("\"elbow-on\".energy_final.electrical_in > elbow_off.energy_final.electrical_in", runs));
+  const Json runs = {{"elbow-on", kSummary},
+                     {"elbow_off", Json::parse(R"({"energy_final": {"electrical_in": 10.5}})")}};
+  CHECK(
+      holds("'elbow-on'.energy_final.electrical_in < elbow_off.energy_final.electrical_in", runs));
+  CHECK_FALSE(holds(
+      "\"elbow-on\".energy_final.electrical_in > elbow_off.energy_final.electrical_in", runs));
   // Unquoted, the label reads as elbow minus on: there is no run "elbow".
   CHECK(error_message("elbow-on.steps > 0", runs).find("elbow-on, elbow_off") != std::string::npos);
 }
 
 TEST_CASE("expect: the outcome lists every metric read, with its value") {
-  const auto outcome =
-      Expectation("energy_final.electrical_in < energy_final.joule and steps > 1").evaluate(kSummary);
+  const auto outcome = Expectation("energy_final.electrical_in < energy_final.joule and steps > 1")
+                           .evaluate(kSummary);
   CHECK(outcome.passed);
   REQUIRE(outcome.values.size() == 3);
-  CHECK(outcome.values[0] == std::pair<std::string, std::string>{"energy_final.electrical_in", "7.37"});
+  CHECK(outcome.values[0] ==
+        std::pair<std::string, std::string>{"energy_final.electrical_in", "7.37"});
   CHECK(outcome.values[2] == std::pair<std::string, std::string>{"steps", "2000"});
 }
 
@@ -196,10 +200,12 @@ TEST_CASE("cli --expect: run exits 0 when met, 4 when not (naming it), 2 when ma
   CHECK(ok.exit_code == 0);
   CHECK(ok.output.find("expect: ok     energy_final.electrical_in < 120") != std::string::npos);
 
-  const auto failed = t::run_elbowsim("run " + kScene + " --out " + (dir / "b").string() + kShort +
-                                      " --expect \"steps > 0\" --expect \"energy_final.electrical_in < 1e-9\"");
+  const auto failed =
+      t::run_elbowsim("run " + kScene + " --out " + (dir / "b").string() + kShort +
+                      " --expect \"steps > 0\" --expect \"energy_final.electrical_in < 1e-9\"");
   CHECK(failed.exit_code == 4);
-  CHECK(failed.output.find("expect: FAILED energy_final.electrical_in < 1e-9") != std::string::npos);
+  CHECK(failed.output.find("expect: FAILED energy_final.electrical_in < 1e-9") !=
+        std::string::npos);
   CHECK(failed.output.find("energy_final.electrical_in = ") != std::string::npos);
 
   // Malformed: exit 2 before simulating (nothing written), naming the column.
@@ -218,15 +224,20 @@ TEST_CASE("cli --expect: run exits 0 when met, 4 when not (naming it), 2 when ma
 
 TEST_CASE("cli --expect: compare addresses runs by folder name") {
   const auto dir = t::scratch("expect_compare");
-  REQUIRE(t::run_elbowsim("run " + kScene + " --out " + (dir / "on").string() + kShort).exit_code == 0);
+  REQUIRE(t::run_elbowsim("run " + kScene + " --out " + (dir / "on").string() + kShort).exit_code ==
+          0);
   REQUIRE(t::run_elbowsim("run " + kScene + " --out " + (dir / "off").string() + kShort +
-                          " --set effects.contact=false").exit_code == 0);
-  const std::string runs = (dir / "on").string() + " " + (dir / "off").string() + " --out " + (dir / "cmp").string();
-  const auto met = t::run_elbowsim("compare " + runs +
-                                   " --expect \"on.energy_final.electrical_in < off.energy_final.electrical_in\"");
+                          " --set effects.contact=false")
+              .exit_code == 0);
+  const std::string runs =
+      (dir / "on").string() + " " + (dir / "off").string() + " --out " + (dir / "cmp").string();
+  const auto met = t::run_elbowsim(
+      "compare " + runs +
+      " --expect \"on.energy_final.electrical_in < off.energy_final.electrical_in\"");
   CHECK(met.exit_code == 0);
-  const auto failed = t::run_elbowsim("compare " + runs +
-                                      " --expect \"on.energy_final.electrical_in > off.energy_final.electrical_in\"");
+  const auto failed = t::run_elbowsim(
+      "compare " + runs +
+      " --expect \"on.energy_final.electrical_in > off.energy_final.electrical_in\"");
   CHECK(failed.exit_code == 4);
   CHECK(failed.output.find("on.energy_final.electrical_in = ") != std::string::npos);
   CHECK(failed.output.find("off.energy_final.electrical_in = ") != std::string::npos);
@@ -237,8 +248,14 @@ TEST_CASE("cli --expect: compare addresses runs by folder name") {
 
 TEST_CASE("cli --expect: report checks a recorded run") {
   const auto dir = t::scratch("expect_report");
-  REQUIRE(t::run_elbowsim("run " + kScene + " --out " + (dir / "r").string() + kShort).exit_code == 0);
-  CHECK(t::run_elbowsim("report " + (dir / "r").string() + " --expect \"steps == 200\"").exit_code == 0);
-  CHECK(t::run_elbowsim("report " + (dir / "r").string() + " --expect \"steps == 201\"").exit_code == 4);
-  CHECK(t::run_elbowsim("report " + (dir / "r").string() + " --expect \"steps ==\"").exit_code == 2);
+  REQUIRE(t::run_elbowsim("run " + kScene + " --out " + (dir / "r").string() + kShort).exit_code ==
+          0);
+  CHECK(
+      t::run_elbowsim("report " + (dir / "r").string() + " --expect \"steps == 200\"").exit_code ==
+      0);
+  CHECK(
+      t::run_elbowsim("report " + (dir / "r").string() + " --expect \"steps == 201\"").exit_code ==
+      4);
+  CHECK(t::run_elbowsim("report " + (dir / "r").string() + " --expect \"steps ==\"").exit_code ==
+        2);
 }

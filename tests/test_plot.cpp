@@ -40,7 +40,9 @@ Series line(std::vector<double> x, std::vector<double> y, Color color) {
   return s;
 }
 
-std::filesystem::path png(const std::string& name) { return t::scratch("plot_" + name) / (name + ".png"); }
+std::filesystem::path png(const std::string& name) {
+  return t::scratch("plot_" + name) / (name + ".png");
+}
 
 }  // namespace
 
@@ -62,8 +64,7 @@ TEST_CASE("linear ticks at round numbers") {
                 {"-0.5", "0.0", "0.5", "1.0", "1.5", "2.0", "2.5"});
   }
   SUBCASE("odd range, tight (time axes): limits stay, round ticks inside") {
-    check_ticks(linear_ticks(0.013, 1.987, 6, false), 0.013, 1.987,
-                {"0.5", "1.0", "1.5"});
+    check_ticks(linear_ticks(0.013, 1.987, 6, false), 0.013, 1.987, {"0.5", "1.0", "1.5"});
   }
   SUBCASE("binary fractions do not drift: 0.1 + 0.2 still ticks 0.3") {
     const Ticks ticks = linear_ticks(0.1, 0.1 + 0.2, 4);
@@ -183,7 +184,8 @@ TEST_CASE("a log plot draws positive values and skips zeros") {
   p.title = "residual";
   p.y = log_axis("|r|", "J");
   std::vector<double> x, y;
-  for (int k = 0; k <= 100; ++k) x.push_back(k), y.push_back(k == 0 ? 0.0 : std::pow(10.0, -12 + 0.1 * k));
+  for (int k = 0; k <= 100; ++k)
+    x.push_back(k), y.push_back(k == 0 ? 0.0 : std::pow(10.0, -12 + 0.1 * k));
   p.series.push_back(line(x, y, {0.9, 0.1, 0.1}));
   const auto file = png("log");
   write_png(p, file);
@@ -206,10 +208,9 @@ TEST_CASE("bar chart: one colour per group, bars from zero") {
 }
 
 TEST_CASE("work-precision: log-log, one marked line per method") {
-  const LinePlot p = work_precision_plot(
-      {{"rk4", {1e-3, 3e-3, 1e-2}, {1e-4, 1e-7, 1e-10}},
-       {"euler", {5e-4, 2e-3, 8e-3}, {1e-2, 3e-3, 8e-4}}},
-      "Work-precision", "hand error", "m");
+  const LinePlot p = work_precision_plot({{"rk4", {1e-3, 3e-3, 1e-2}, {1e-4, 1e-7, 1e-10}},
+                                          {"euler", {5e-4, 2e-3, 8e-3}, {1e-2, 3e-3, 8e-4}}},
+                                         "Work-precision", "hand error", "m");
   CHECK(p.x.scale == Scale::log);
   CHECK(p.y.scale == Scale::log);
   CHECK(p.x.unit == "s");

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "render/frame_source.hpp"
@@ -307,4 +308,24 @@ TEST_CASE("render panels: two runs side by side, each with its own overlay") {
   CHECK(brightness(kWidth / 2 + 7, 7) < 3 * 140);
   CHECK(brightness(kWidth / 2 - 2, kHeight - 2) > 3 * 200);
   CHECK(brightness(kWidth - 2, kHeight - 2) > 3 * 200);
+}
+
+TEST_CASE("render with an ffmpeg that fails: exit 1 with its message, nothing left behind") {
+  const fs::path dir = scratch("bad_ffmpeg");
+  REQUIRE(cli(short_run(dir, "")).exit_code == 0);
+  auto listing = [&] {
+    std::set<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename());
+    return names;
+  };
+  const std::set<std::string> before = listing();
+  const fs::path bin = scratch("fake_ffmpeg");
+  std::ofstream(bin / "ffmpeg") << "#!/bin/sh\necho 'Unknown encoder (fake ffmpeg)' >&2\nexit 1\n";
+  fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
+  const Outcome out =
+      shell("PATH=" + bin.string() + " " + ELBOWSIM_BINARY + " render " + dir.string());
+  INFO(out.output);
+  CHECK(out.exit_code == 1);
+  CHECK(out.output.find("Unknown encoder (fake ffmpeg)") != std::string::npos);
+  CHECK(listing() == before);
 }

@@ -29,7 +29,8 @@ Recording small_recording() {
   Recording rec;
   rec.columns = {{"time", "s"}, {"v0", "V"}, {"i0", "A"}, {"rest_elbow", "1"}, {"d_elbow", "m"}};
   for (int k = 0; k <= 10; ++k)
-    rec.values.insert(rec.values.end(), {0.1 * k, 1.0, 2.0, k >= 5 ? 1.0 : 0.0, k >= 5 ? -1e-9 * k : 0.2});
+    rec.values.insert(rec.values.end(),
+                      {0.1 * k, 1.0, 2.0, k >= 5 ? 1.0 : 0.0, k >= 5 ? -1e-9 * k : 0.2});
   return rec;
 }
 
@@ -133,7 +134,8 @@ std::vector<Cell> table_cells(const std::string& html, const std::string& id) {
   const std::string table = html.substr(start, html.find("</table>", start) - start);
   static const std::regex cell("data-metric=\"([^\"]*)\" data-value=\"([^\"]*)\">([^<]*)</td>");
   std::vector<Cell> cells;
-  for (auto it = std::sregex_iterator(table.begin(), table.end(), cell); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(table.begin(), table.end(), cell);
+       it != std::sregex_iterator(); ++it)
     cells.push_back({(*it)[1], (*it)[2], (*it)[3]});
   return cells;
 }
@@ -142,14 +144,16 @@ std::vector<Cell> table_cells(const std::string& html, const std::string& id) {
 std::vector<std::string> sources(const std::string& html, const std::string& tag) {
   static const std::regex src("<(img|video)[^>]* src=\"([^\"]*)\"");
   std::vector<std::string> out;
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), src); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), src); it != std::sregex_iterator();
+       ++it)
     if ((*it)[1] == tag) out.push_back((*it)[2]);
   return out;
 }
 
 void flatten(const Json& node, const std::string& path, std::map<std::string, Json>& out) {
   if (node.is_object())
-    for (const auto& [key, value] : node.items()) flatten(value, path.empty() ? key : path + "." + key, out);
+    for (const auto& [key, value] : node.items())
+      flatten(value, path.empty() ? key : path + "." + key, out);
   else if (node.is_number() || node.is_boolean() || node.is_null())
     out[path] = node;
 }
@@ -162,7 +166,8 @@ void check_images(const fs::path& folder, const std::string& html, std::size_t a
     INFO(src);
     REQUIRE(fs::exists(folder / src));
     std::smatch m;
-    REQUIRE(std::regex_search(html, m, std::regex("src=\"" + src + "\"[^>]* width=\"(\\d+)\" height=\"(\\d+)\"")));
+    REQUIRE(std::regex_search(
+        html, m, std::regex("src=\"" + src + "\"[^>]* width=\"(\\d+)\" height=\"(\\d+)\"")));
     t::check_plot_png(folder / src, std::stoi(m[1]), std::stoi(m[2]));
   }
 }
@@ -203,7 +208,8 @@ TEST_CASE("report.html: metrics equal summary.json; every image resolves and dec
   CHECK(seen.size() == expected.size());
   // Plots: joint angles, hand, motors, power, energy, contact, residuals.
   check_images(run, html, 10);
-  for (const char* name : {"joint_angles", "contact_forces", "constraint_residual", "energy_balance"})
+  for (const char* name :
+       {"joint_angles", "contact_forces", "constraint_residual", "energy_balance"})
     CHECK(html.find(std::string("plots/") + name + ".png") != std::string::npos);
   CHECK(sources(html, "video").empty());  // no video.mp4 in this folder
 }
@@ -212,7 +218,8 @@ TEST_CASE("report: rebuilt from the folder alone; the video is embedded when pre
   const auto dir = t::scratch("rebuild");
   const auto run = dir / "r";
   REQUIRE(t::run_elbowsim("run " + kScenes + "default.yaml --out " + run.string() +
-                          " --no-render --no-report --set simulation.duration=0.3").exit_code == 0);
+                          " --no-render --no-report --set simulation.duration=0.3")
+              .exit_code == 0);
   CHECK_FALSE(fs::exists(run / "report.html"));  // --no-report
   std::ofstream(run / "video.mp4") << "not really a video";
   const auto out = t::run_elbowsim("report " + run.string());
@@ -228,8 +235,9 @@ TEST_CASE("report: rebuilt from the folder alone; the video is embedded when pre
 TEST_CASE("report: a run that failed says why, at the top") {
   const auto dir = t::scratch("failed");
   const auto run = dir / "diverged";
-  const auto out = t::run_elbowsim("run " + kScenes + "default.yaml --out " + run.string() +
-                                   " --no-render --set simulation.step=0.05 --set simulation.integrator=euler");
+  const auto out =
+      t::run_elbowsim("run " + kScenes + "default.yaml --out " + run.string() +
+                      " --no-render --set simulation.step=0.05 --set simulation.integrator=euler");
   REQUIRE(out.exit_code == 3);
   const std::string html = t::slurp(run / "report.html");
   const auto failure = html.find("<div class=\"failure\" id=\"failure\"");
@@ -246,7 +254,8 @@ TEST_CASE("report: missing files are reported, a non-folder is bad input") {
   CHECK(t::run_elbowsim("report " + (dir / "nothing").string()).exit_code == 2);
   CHECK(t::run_elbowsim("report " + dir.string()).exit_code == 2);  // no summary, no trajectory
   REQUIRE(t::run_elbowsim("run " + kScenes + "default.yaml --out " + (dir / "r").string() +
-                          " --no-render --no-report --set simulation.duration=0.1").exit_code == 0);
+                          " --no-render --no-report --set simulation.duration=0.1")
+              .exit_code == 0);
   fs::remove(dir / "r" / "trajectory.csv");
   REQUIRE(t::run_elbowsim("report " + (dir / "r").string()).exit_code == 0);
   const std::string html = t::slurp(dir / "r" / "report.html");
@@ -257,9 +266,12 @@ TEST_CASE("report: missing files are reported, a non-folder is bad input") {
 TEST_CASE("compare: names every run, a computed verdict, overlays and totals") {
   const auto dir = t::scratch("compare");
   const std::string args = " --no-render --no-report --set simulation.duration=0.5";
-  REQUIRE(t::run_elbowsim("run " + kScenes + "elbow_rest.yaml --out " + (dir / "elbow-on").string() + args).exit_code == 0);
-  REQUIRE(t::run_elbowsim("run " + kScenes + "elbow_rest.yaml --out " + (dir / "elbow-off").string() + args +
-                          " --set effects.contact=false").exit_code == 0);
+  REQUIRE(t::run_elbowsim("run " + kScenes + "elbow_rest.yaml --out " +
+                          (dir / "elbow-on").string() + args)
+              .exit_code == 0);
+  REQUIRE(t::run_elbowsim("run " + kScenes + "elbow_rest.yaml --out " +
+                          (dir / "elbow-off").string() + args + " --set effects.contact=false")
+              .exit_code == 0);
   const auto out = t::run_elbowsim("compare " + (dir / "elbow-on").string() + " " +
                                    (dir / "elbow-off").string());
   REQUIRE(out.exit_code == 0);
@@ -271,13 +283,14 @@ TEST_CASE("compare: names every run, a computed verdict, overlays and totals") {
   }
   // The verdict's percentage follows from the two summaries.
   const auto e_in = [&](const char* run) {
-    return Json::parse(t::slurp(dir / run / "summary.json"))["energy_final"]["electrical_in"].get<double>();
+    return Json::parse(t::slurp(dir / run / "summary.json"))["energy_final"]["electrical_in"]
+        .get<double>();
   };
   const double on = e_in("elbow-on"), off = e_in("elbow-off");
   REQUIRE(on < off);
   char sentence[128];
-  std::snprintf(sentence, sizeof sentence, "elbow-on: %.0f %% less electrical energy than elbow-off",
-                100 * (off - on) / off);
+  std::snprintf(sentence, sizeof sentence,
+                "elbow-on: %.0f %% less electrical energy than elbow-off", 100 * (off - on) / off);
   CHECK(out.output.find(sentence) != std::string::npos);
   CHECK(html.find(sentence) != std::string::npos);
   const Json json = Json::parse(t::slurp(folder / "comparison.json"));

@@ -48,6 +48,12 @@ int compare_command(const CompareArguments& args) {
     return exit_bad_input;
   }
   const fs::path out = args.out ? fs::path(*args.out) : default_out(args.folders[0]);
+  for (const report::RunData& run : runs)
+    if (fs::weakly_canonical(fs::absolute(out)) == fs::weakly_canonical(fs::absolute(run.folder))) {
+      std::cerr << "error: --out " << out.string() << " is run folder " << run.label
+                << ": the comparison would replace its report\n";
+      return exit_bad_input;
+    }
   try {
     const report::ComparisonFiles files = report::write_comparison_report(runs, out);
     for (const std::string& sentence : files.comparison.verdict) std::cout << sentence << '\n';

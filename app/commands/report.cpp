@@ -24,34 +24,49 @@ int check_expectations(const std::vector<std::string>& expressions,
   const auto parsed = report::parse_expectations(expressions, std::cerr, ok);
   if (!ok) return exit_bad_input;
   switch (report::check_expectations(parsed, metrics, std::cout, std::cerr)) {
-    case report::ExpectStatus::met: return exit_ok;
-    case report::ExpectStatus::failed: return exit_expectation_failed;
-    case report::ExpectStatus::invalid: return exit_bad_input;
+    case report::ExpectStatus::met:
+      return exit_ok;
+    case report::ExpectStatus::failed:
+      return exit_expectation_failed;
+    case report::ExpectStatus::invalid:
+      return exit_bad_input;
   }
   return exit_bad_input;
 }
 
-int report_outputs(const std::filesystem::path& folder) {
+namespace {
+
+// Loads the folder and writes its report; the exit code, and the run read.
+int write_report(const std::filesystem::path& folder, report::RunData& run) {
   try {
-    const report::RunData run = load_run_folder(folder);
+    run = load_run_folder(folder);
+  } catch (const NotARunFolder& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_bad_input;
+  }
+  try {
     const report::ReportFiles files = report::write_run_report(run);
     std::cout << "report: " << files.html.string() << " (" << files.figures.figures.size()
               << " plots)\n";
     return exit_ok;
-  } catch (const NotARunFolder& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return exit_bad_input;
   } catch (const std::exception& e) {
     std::cerr << "error: report: " << e.what() << '\n';
     return exit_io;
   }
 }
 
+}  // namespace
+
+int report_outputs(const std::filesystem::path& folder) {
+  report::RunData run;
+  return write_report(folder, run);
+}
+
 int report_command(const ReportArguments& args) {
   if (!expectations_well_formed(args.expect)) return exit_bad_input;
-  const int written = report_outputs(args.folder);
+  report::RunData run;
+  const int written = write_report(args.folder, run);
   if (written != exit_ok || args.expect.empty()) return written;
-  const report::RunData run = load_run_folder(args.folder);
   if (!run.has_summary()) {
     std::cerr << "error: --expect: " << args.folder << " has no readable summary.json\n";
     return exit_bad_input;

@@ -40,9 +40,11 @@ std::vector<report::EventRow> read_events(const fs::path& path) {
     std::getline(cells, t, ','), std::getline(cells, elbow, ','), std::getline(cells, kind, ',');
     std::getline(cells, speed, ','), std::getline(cells, impulse, ','), std::getline(cells, lost);
     try {
-      rows.push_back({std::stod(t), elbow, kind, std::stod(speed), std::stod(impulse), std::stod(lost)});
+      rows.push_back(
+          {std::stod(t), elbow, kind, std::stod(speed), std::stod(impulse), std::stod(lost)});
     } catch (const std::exception&) {
-      throw std::runtime_error(path.string() + ":" + std::to_string(number) + ": malformed event row");
+      throw std::runtime_error(path.string() + ":" + std::to_string(number) +
+                               ": malformed event row");
     }
   }
   return rows;
@@ -51,14 +53,15 @@ std::vector<report::EventRow> read_events(const fs::path& path) {
 std::string links_text(const Model& m) {
   std::string text;
   for (const Link& link : m.links)
-    text += (text.empty() ? "" : "; ") + number(link.tip.norm()) + " m, " + number(link.mass) + " kg";
+    text +=
+        (text.empty() ? "" : "; ") + number(link.tip.norm()) + " m, " + number(link.mass) + " kg";
   return text;
 }
 
 std::string motor_text(const Motor& motor) {
   return "R " + number(motor.resistance) + " ohm, L " + number(motor.inductance) + " H, K " +
-         number(motor.torque_constant) + " N m/A, gear " + number(motor.gear_ratio) +
-         ":1, limit " + number(motor.voltage_limit) + " V";
+         number(motor.torque_constant) + " N m/A, gear " + number(motor.gear_ratio) + ":1, limit " +
+         number(motor.voltage_limit) + " V";
 }
 
 std::string motors_text(const Model& m) {
@@ -67,7 +70,8 @@ std::string motors_text(const Model& m) {
   if (same && !m.motors.empty()) return "each joint: " + motor_text(m.motors[0]);
   std::string text;
   for (std::size_t j = 0; j < m.motors.size(); ++j)
-    text += (j ? "; " : "") + std::string("joint ") + std::to_string(j) + ": " + motor_text(m.motors[j]);
+    text += (j ? "; " : "") + std::string("joint ") + std::to_string(j) + ": " +
+            motor_text(m.motors[j]);
   return text;
 }
 
@@ -100,7 +104,8 @@ void read_scenario(const fs::path& file, report::RunData& run) {
   try {
     run.model_rows = model_rows(load_scenario_text(run.scenario_yaml, file.string()).model);
   } catch (const std::exception& e) {
-    run.problems.push_back("scenario.yaml: the model could not be rebuilt: " + std::string(e.what()));
+    run.problems.push_back("scenario.yaml: the model could not be rebuilt: " +
+                           std::string(e.what()));
   }
 }
 
@@ -113,10 +118,12 @@ report::RunData load_run_folder(const fs::path& folder) {
   run.label = fs::weakly_canonical(fs::absolute(folder)).filename().string();
   const fs::path summary = folder / "summary.json", trajectory = folder / "trajectory.csv";
   if (!fs::exists(summary) && !fs::exists(trajectory))
-    throw NotARunFolder(folder.string() + ": not a run folder (no summary.json, no trajectory.csv)");
+    throw NotARunFolder(folder.string() +
+                        ": not a run folder (no summary.json, no trajectory.csv)");
   // Each file on its own: one that cannot be read is a problem shown in the report.
   const auto attempt = [&](const fs::path& file, auto&& read) {
-    if (!fs::exists(file)) return run.problems.push_back(file.filename().string() + ": not in the run folder");
+    if (!fs::exists(file))
+      return run.problems.push_back(file.filename().string() + ": not in the run folder");
     try {
       read();
     } catch (const std::exception& e) {
@@ -128,7 +135,8 @@ report::RunData load_run_folder(const fs::path& folder) {
     std::ifstream in(trajectory);
     run.trajectory = read_trajectory_csv(in, trajectory.string());
   });
-  if (fs::exists(folder / "events.csv")) attempt(folder / "events.csv", [&] { run.events = read_events(folder / "events.csv"); });
+  if (fs::exists(folder / "events.csv"))
+    attempt(folder / "events.csv", [&] { run.events = read_events(folder / "events.csv"); });
   attempt(folder / "scenario.yaml", [&] { read_scenario(folder / "scenario.yaml", run); });
   run.has_video = fs::exists(folder / "video.mp4");
   return run;

@@ -98,7 +98,7 @@ Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>&
   model.table = read_table(root.get("table"));
   model.contact = read_contact(root.get("contact"));
   check_contact_scene(root, model);
-  model.options = read_simulation(root.require("simulation"));
+  model.options = read_simulation(root.require("simulation"), root.get("task"));
   model.initial = read_initial(root.get("initial"), model.dof);
   model.inputs = read_inputs(root.get("inputs"), model);
   model.task = read_task(root.get("task"), model);

@@ -26,7 +26,7 @@ void read_general_chain(const Value& joints, Model& model);
 std::vector<Motor> read_motors(const Value& motors, const Model& model);
 
 Effects read_effects(const Value& effects);                                // optional
-Options read_simulation(const Value& simulation);                          // required
+Options read_simulation(const Value& simulation, const Value& task);  // required
 Model::InitialState read_initial(const Value& initial, int dof);           // optional
 OpenLoopInputs read_inputs(const Value& inputs, const Model& model);       // optional
 OutputSettings read_output(const Value& output, const std::string& name);  // optional

@@ -47,10 +47,20 @@ Effects read_effects(const Value& effects) {
   return out;
 }
 
-Options read_simulation(const Value& simulation) {
+// Without simulation.duration a scene with a task runs to the task's end
+// plus 0.5 s to settle, so sweeps over task.duration compare like with like.
+double default_duration(const Value& simulation, const Value& task) {
+  if (simulation.get("duration").present() || !task.present())
+    return positive(simulation.require("duration"));
+  const double delay = value_or(task.get("start_delay"), 0.0, number);
+  const double length = value_or(task.get("duration"), HandTask{}.duration, number);
+  return delay + length + 0.5;
+}
+
+Options read_simulation(const Value& simulation, const Value& task) {
   simulation.allow_keys({"duration", "step", "integrator", "dynamics"});
   Options out;
-  out.duration = positive(simulation.require("duration"));
+  out.duration = default_duration(simulation, task);
   Value step = simulation.get("step");
   out.step = value_or(step, 1e-3, positive);
   if (out.step > out.duration) {

@@ -17,9 +17,9 @@ namespace elbowsim::plot {
 namespace {
 
 constexpr const char* kFont = "DejaVu Sans";
-constexpr double kPad = 14;        // [px] outer margin
-constexpr double kLaneHeight = 12; // [px] one timeline strip
-constexpr double kLaneGap = 6;     // [px] between strips
+constexpr double kPad = 14;         // [px] outer margin
+constexpr double kLaneHeight = 12;  // [px] one timeline strip
+constexpr double kLaneGap = 6;      // [px] between strips
 const Color kText{0.1, 0.1, 0.1}, kFrame{0.35, 0.35, 0.35};
 
 // ---- drawing primitives ---------------------------------------------------
@@ -88,9 +88,12 @@ void draw_vertical_text(cairo_t* cr, double x, double y, const std::string& text
 void set_dash(cairo_t* cr, Dash dash, double width) {
   const double dashed[] = {6 * width / 1.6, 4 * width / 1.6};
   const double dotted[] = {1.5 * width / 1.6, 3 * width / 1.6};
-  if (dash == Dash::dashed) cairo_set_dash(cr, dashed, 2, 0);
-  else if (dash == Dash::dotted) cairo_set_dash(cr, dotted, 2, 0);
-  else cairo_set_dash(cr, nullptr, 0, 0);
+  if (dash == Dash::dashed)
+    cairo_set_dash(cr, dashed, 2, 0);
+  else if (dash == Dash::dotted)
+    cairo_set_dash(cr, dotted, 2, 0);
+  else
+    cairo_set_dash(cr, nullptr, 0, 0);
 }
 
 void write_surface(cairo_surface_t* surface, const std::filesystem::path& png) {
@@ -99,8 +102,8 @@ void write_surface(cairo_surface_t* surface, const std::filesystem::path& png) {
   const std::filesystem::path partial = png.string() + ".tmp";
   const cairo_status_t status = cairo_surface_write_to_png(surface, partial.c_str());
   if (status != CAIRO_STATUS_SUCCESS)
-    throw std::runtime_error(png.string() + ": cannot write PNG: " +
-                             cairo_status_to_string(status));
+    throw std::runtime_error(png.string() +
+                             ": cannot write PNG: " + cairo_status_to_string(status));
   std::error_code error;
   std::filesystem::rename(partial, png, error);
   if (error) throw std::runtime_error(png.string() + ": " + error.message());
@@ -175,7 +178,9 @@ struct Range {
   bool empty() const { return lo > hi; }
 };
 
-bool drawable(double v, Scale scale) { return std::isfinite(v) && (scale == Scale::linear || v > 0); }
+bool drawable(double v, Scale scale) {
+  return std::isfinite(v) && (scale == Scale::linear || v > 0);
+}
 
 // Linear axes: 4 % of the data range on each free side, so that a line at its
 // extreme does not run along the frame; a side at or beyond zero does not
@@ -266,8 +271,8 @@ void draw_message(cairo_t* cr, const Box& area, const std::string& message) {
   cairo_rectangle(cr, area.left + 0.5, area.top + 0.5, area.width() - 1, area.height() - 1);
   cairo_stroke(cr);
   set_font(cr, 16);
-  draw_text(cr, (area.left + area.right) / 2, (area.top + area.bottom) / 2, message,
-            Align::center, {0.45, 0.45, 0.45});
+  draw_text(cr, (area.left + area.right) / 2, (area.top + area.bottom) / 2, message, Align::center,
+            {0.45, 0.45, 0.45});
 }
 
 // ---- line plots -----------------------------------------------------------
@@ -369,11 +374,10 @@ Axis time_axis() {
 }
 
 Color palette(int i) {
-  static const Color colors[] = {{0.306, 0.475, 0.655}, {0.949, 0.557, 0.169},
-                                 {0.882, 0.341, 0.349}, {0.463, 0.718, 0.698},
-                                 {0.349, 0.631, 0.310}, {0.929, 0.788, 0.282},
-                                 {0.690, 0.478, 0.631}, {1.000, 0.616, 0.655},
-                                 {0.612, 0.459, 0.373}, {0.729, 0.690, 0.675}};
+  static const Color colors[] = {
+      {0.306, 0.475, 0.655}, {0.949, 0.557, 0.169}, {0.882, 0.341, 0.349}, {0.463, 0.718, 0.698},
+      {0.349, 0.631, 0.310}, {0.929, 0.788, 0.282}, {0.690, 0.478, 0.631}, {1.000, 0.616, 0.655},
+      {0.612, 0.459, 0.373}, {0.729, 0.690, 0.675}};
   return colors[((i % 10) + 10) % 10];
 }
 
@@ -494,8 +498,8 @@ Image read_png(const std::filesystem::path& png) {
   const cairo_status_t status = cairo_surface_status(surface);
   if (status != CAIRO_STATUS_SUCCESS) {
     cairo_surface_destroy(surface);
-    throw std::runtime_error(png.string() + ": cannot decode PNG: " +
-                             cairo_status_to_string(status));
+    throw std::runtime_error(png.string() +
+                             ": cannot decode PNG: " + cairo_status_to_string(status));
   }
   cairo_surface_flush(surface);
   Image image;
@@ -505,7 +509,8 @@ Image read_png(const std::filesystem::path& png) {
   const unsigned char* data = cairo_image_surface_get_data(surface);
   // RGB24 and ARGB32 both keep a native-endian 32-bit word per pixel.
   for (int y = 0; y < image.height; ++y) {
-    const auto* row = reinterpret_cast<const std::uint32_t*>(data + static_cast<std::size_t>(y) * stride);
+    const auto* row =
+        reinterpret_cast<const std::uint32_t*>(data + static_cast<std::size_t>(y) * stride);
     for (int x = 0; x < image.width; ++x) image.rgb.push_back(row[x] & 0xFFFFFFu);
   }
   cairo_surface_destroy(surface);

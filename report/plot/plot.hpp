@@ -30,8 +30,8 @@ struct Axis {
   std::string unit;   // "s": drawn as "time [s]"; empty: no brackets
   Scale scale = Scale::linear;
   std::optional<double> min, max;  // fixed limits; default: from the data
-  bool tight = false;  // limits at the data (time axes); else out to round ticks
-  bool include_zero = false;  // linear: the range reaches 0 (bar charts, magnitudes)
+  bool tight = false;              // limits at the data (time axes); else out to round ticks
+  bool include_zero = false;       // linear: the range reaches 0 (bar charts, magnitudes)
 };
 
 Axis linear_axis(std::string label, std::string unit);

@@ -9,10 +9,10 @@
 namespace elbowsim::plot {
 
 struct Ticks {
-  double lo = 0, hi = 1;             // axis limits (data units), lo < hi
-  std::vector<double> major;         // tick values in [lo, hi], ascending
-  std::vector<std::string> labels;   // one per major tick (UTF-8, "10⁻³" on log axes)
-  std::vector<double> minor;         // log axes: 2..9 x 10^k between majors; else empty
+  double lo = 0, hi = 1;            // axis limits (data units), lo < hi
+  std::vector<double> major;        // tick values in [lo, hi], ascending
+  std::vector<std::string> labels;  // one per major tick (UTF-8, "10⁻³" on log axes)
+  std::vector<double> minor;        // log axes: 2..9 x 10^k between majors; else empty
 };
 
 // The 1-2-5 x 10^k step nearest range / target (range > 0, target >= 1).
