@@ -135,6 +135,8 @@ std::string page(const std::vector<RunData>& runs, const Comparison& c, const Fi
   p += "<section id=\"metrics-section\">\n<h2>Metrics</h2>\n" + metrics_table(c) + "</section>\n";
   p += "<section id=\"plots\">\n<h2>Plots</h2>\n";
   for (const Figure& f : figures.figures) p += html::figure(f);
+  for (const std::string& s : figures.skipped)
+    p += "<p class=\"meta\">Not plotted: " + html::escape(s) + "</p>\n";
   return p + "</section>\n" + html::page_end();
 }
 

@@ -136,14 +136,16 @@ std::vector<std::string> verdict(const std::vector<RunData>& runs, const Compari
     for (auto& s :
          smaller_is_better(table, "energy_final.electrical_in", "less", "electrical energy"))
       sentences.push_back(std::move(s));
-  bool any_error = false;
-  for (const ComparedMetric& m : table.metrics)
-    any_error = any_error || m.path == "trajectory.rms_hand_error";
-  if (!any_error)
+  // Accuracy: the engine's RMS hand error (summary.json metrics) when the runs
+  // have it, else the one computed from the recorded hand_error column.
+  const char* accuracy = nullptr;
+  for (const char* path : {"trajectory.rms_hand_error", "metrics.hand_error_rms"})
+    for (const ComparedMetric& m : table.metrics)
+      if (m.path == path) accuracy = path;
+  if (!accuracy)
     sentences.push_back("Hand accuracy is not compared: no run recorded a hand_error column.");
   else
-    for (auto& s :
-         smaller_is_better(table, "trajectory.rms_hand_error", "smaller", "RMS hand error"))
+    for (auto& s : smaller_is_better(table, accuracy, "smaller", "RMS hand error"))
       sentences.push_back(std::move(s));
   return sentences;
 }

@@ -11,7 +11,7 @@ namespace {
 
 void flatten(const nlohmann::ordered_json& node, const std::string& path,
              std::vector<Metric>& out) {
-  if (node.is_object()) {
+  if (node.is_object() || node.is_array()) {  // lists by index: metrics.current_peak.0
     for (const auto& [key, value] : node.items())
       flatten(value, path.empty() ? key : path + "." + key, out);
     return;
@@ -21,6 +21,16 @@ void flatten(const nlohmann::ordered_json& node, const std::string& path,
 }
 
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+// The unit of a summary.json "metrics" entry (the run's task metrics), from its name.
+std::string run_metric_unit(const std::string& name) {
+  if (starts_with(name, "hand_error")) return "m";
+  if (starts_with(name, "energy") || starts_with(name, "joule")) return "J";
+  if (starts_with(name, "current")) return "A";
+  if (name.find("force") != std::string::npos) return "N";
+  if (starts_with(name, "time")) return "s";
+  return "";
+}
 
 void add(std::vector<Metric>& out, const std::string& path, double value, const char* unit) {
   out.push_back({"trajectory." + path, value, unit});
@@ -93,6 +103,7 @@ std::string metric_unit(const std::string& path) {
   if (path == "model.total_mass") return "kg";
   if (path == "contact.max_abs_C") return "m";
   if (path == "contact.max_abs_Jc_qd") return "m/s";
+  if (starts_with(path, "metrics.")) return run_metric_unit(path.substr(8));
   return "";
 }
 

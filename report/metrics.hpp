@@ -18,8 +18,9 @@ struct Metric {
   std::string unit;  // "J"; empty when dimensionless or unknown
 };
 
-// Every number, boolean and null leaf of summary.json in file order, with
-// units where the key says (energy_* -> J, ...). Strings and lists are not metrics.
+// Every number, boolean and null leaf of summary.json in file order, list
+// entries by index (metrics.current_peak.0), with units where the key says
+// (energy_* -> J, ...). Strings are not metrics.
 std::vector<Metric> summary_metrics(const nlohmann::ordered_json& summary);
 
 // The unit of a summary.json metric path; "" when it has none.

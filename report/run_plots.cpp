@@ -86,10 +86,25 @@ Planned hand_position(const RunData& run) {
   LinePlot p = time_plot(run, "Hand position", plot::linear_axis("position", "m"));
   const auto t = column(rec, "time");
   const auto columns = hand_columns({&rec});
-  for (const std::string& c : columns)
-    if (rec.column(c) >= 0) p.series.push_back(series(c, t, column(rec, c)));
+  bool desired = false;
+  for (std::size_t k = 0; k < columns.size(); ++k) {
+    const auto color = plot::palette(static_cast<int>(k));
+    Series s = series(columns[k], t, column(rec, columns[k]));
+    s.color = color;
+    p.series.push_back(std::move(s));
+    // The desired path (hand_d_x, ...) dashed in the same colour, when the task records one.
+    const std::string wanted = "hand_d_" + columns[k].substr(5);
+    if (rec.column(wanted) < 0) continue;
+    Series d = series(wanted + " (desired)", t, column(rec, wanted));
+    d.color = color;
+    d.dash = Dash::dashed;
+    d.width = 1.2;
+    p.series.push_back(std::move(d));
+    desired = true;
+  }
   return {"hand_position", std::move(p),
           std::string("World coordinates of the hand point") +
+              (desired ? "; dashed: the desired path" : "") +
               (columns.size() == 2 ? " (hand_y is 0 throughout, not drawn)." : "."),
           ""};
 }
@@ -265,11 +280,12 @@ FigureSet write_run_plots(const RunData& run, const fs::path& report_folder) {
 
 namespace {
 
-const Dash kDashes[] = {Dash::solid, Dash::dashed, Dash::dotted};
+const Dash kDashes[] = {Dash::solid, Dash::dashed, Dash::dotted, Dash::dash_dot};
 
-// One line per (run, column): colour by run, dash by column.
+// One line per (run, column): colour by run, dash by column; |values| on a log axis.
 Planned overlay(const std::vector<RunData>& runs, const std::string& name, const std::string& title,
                 Axis y, const std::vector<std::string>& columns, const std::string& caption) {
+  const bool magnitude = y.scale == plot::Scale::log;
   if (columns.empty()) return skip(name, "no run has these columns");
   LinePlot p;
   p.title = title;
@@ -278,10 +294,12 @@ Planned overlay(const std::vector<RunData>& runs, const std::string& name, const
     const auto t = column(runs[r].trajectory, "time");
     for (std::size_t c = 0; c < columns.size(); ++c) {
       if (runs[r].trajectory.column(columns[c]) < 0) continue;
-      Series s =
-          series(runs[r].label + " " + columns[c], t, column(runs[r].trajectory, columns[c]));
+      auto values = column(runs[r].trajectory, columns[c]);
+      if (magnitude)
+        for (double& v : values) v = std::abs(v);
+      Series s = series(runs[r].label + " " + columns[c], t, std::move(values));
       s.color = plot::palette(static_cast<int>(r));
-      s.dash = kDashes[c % 3];
+      s.dash = kDashes[c % 4];
       p.series.push_back(std::move(s));
     }
   }
@@ -336,12 +354,13 @@ FigureSet write_comparison_plots(const std::vector<RunData>& runs, const fs::pat
   planned.push_back(overlay(runs, "motor_currents", "Motor currents",
                             plot::linear_axis("current", "A"), all_indexed(runs, "i"),
                             "Winding currents; colour by run, dash by motor (i0 solid, i1 "
-                            "dashed, i2 dotted, then again)."));
+                            "dashed, i2 dotted, i3 dash-dot, then again)."));
   bool any_error = false;
   for (const RunData& run : runs) any_error = any_error || run.trajectory.column("hand_error") >= 0;
   if (any_error)
-    planned.push_back(overlay(runs, "hand_error", "Hand error", plot::linear_axis("error", "m"),
-                              {"hand_error"}, "Distance from the hand to its desired path."));
+    planned.push_back(overlay(runs, "hand_error", "Hand error", plot::log_axis("|hand error|", "m"),
+                              {"hand_error"},
+                              "Distance from the hand to its desired path (log axis)."));
   FigureSet set = draw(std::move(planned), report_folder);
   const plot::BarChart bars = totals(runs);
   plot::write_png(bars, report_folder / "plots/totals.png");

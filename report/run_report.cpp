@@ -60,6 +60,8 @@ Rows run_rows(const RunData& run) {
                                     number(settings.value("step", 0.0), "s") + ", duration " +
                                     number(settings.value("duration", 0.0), "s")});
   rows.push_back({"dynamics", dynamics_name(settings.value("dynamics", ""))});
+  if (s.contains("controller") && s["controller"].is_string())
+    rows.push_back({"controller", s["controller"].get<std::string>()});
   const auto& contact = s.value("contact", nlohmann::ordered_json::object());
   if (contact.value("enabled", false))
     rows.push_back({"contact", "events: " + contact.value("events", "") +

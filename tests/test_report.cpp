@@ -63,14 +63,17 @@ TEST_CASE("columns: indexed names, power, running integral, resting intervals") 
 
 TEST_CASE("metrics: summary.json leaves in file order with units; trajectory figures") {
   const Json summary = Json::parse(R"({"steps": 5, "energy_final": {"joule": 1.5, "friction": null},
-                                       "completed": false, "scenario": "x", "effects": ["a"]})");
+                                       "completed": false, "scenario": "x", "effects": ["a"],
+                                       "metrics": {"current_peak": [0.5, 0.25]}})");
   const auto metrics = r::summary_metrics(summary);
-  REQUIRE(metrics.size() == 4);
+  REQUIRE(metrics.size() == 6);
   CHECK(metrics[0].path == "steps");
   CHECK(metrics[1].path == "energy_final.joule");
   CHECK(metrics[1].unit == "J");
   CHECK(metrics[2].value.is_null());
   CHECK(metrics[3].path == "completed");
+  CHECK(metrics[5].path == "metrics.current_peak.1");
+  CHECK(metrics[5].unit == "A");
 
   const auto derived = r::trajectory_metrics(small_recording());
   const auto value = [&](const std::string& path) {
@@ -94,6 +97,15 @@ TEST_CASE("verdict: computed from the numbers") {
   SUBCASE("the lower run is named whichever comes first") {
     const auto c = r::compare_runs({run_with("a", 9.0), run_with("b", 3.0)});
     CHECK(c.verdict[0] == "b: 67 % less electrical energy than a (3 J vs 9 J).");
+  }
+  SUBCASE("accuracy from summary.json's task metrics") {
+    auto a = run_with("on", 2.0), b = run_with("off", 8.0);
+    a.summary["metrics"] = {{"hand_error_rms", 1e-8}};
+    b.summary["metrics"] = {{"hand_error_rms", 4e-8}};
+    const auto c = r::compare_runs({a, b});
+    REQUIRE(c.verdict.size() == 2);
+    CHECK(c.verdict[0] == "on: 75 % less electrical energy than off (2 J vs 8 J).");
+    CHECK(c.verdict[1] == "on: 75 % smaller RMS hand error than off (1e-08 m vs 4e-08 m).");
   }
   SUBCASE("within 0.5 % is the same") {
     const auto c = r::compare_runs({run_with("a", 10.0), run_with("b", 10.01)});
@@ -150,12 +162,23 @@ std::vector<std::string> sources(const std::string& html, const std::string& tag
   return out;
 }
 
+// summary.json's numbers and flags by dotted path (list entries by index).
 void flatten(const Json& node, const std::string& path, std::map<std::string, Json>& out) {
-  if (node.is_object())
+  if (node.is_object() || node.is_array())
     for (const auto& [key, value] : node.items())
       flatten(value, path.empty() ? key : path + "." + key, out);
   else if (node.is_number() || node.is_boolean() || node.is_null())
     out[path] = node;
+}
+
+// Every <video src> and local <a href> names a file that is there.
+void check_links(const fs::path& folder, const std::string& html) {
+  for (const std::string& src : sources(html, "video"))
+    CHECK_MESSAGE(fs::exists(folder / src), src);
+  static const std::regex href("<a href=\"([^\"#][^\"]*)\"");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), href); it != std::sregex_iterator();
+       ++it)
+    CHECK_MESSAGE(fs::exists(folder / (*it)[1].str()), (*it)[1].str());
 }
 
 // Every <img> names a PNG in the folder that decodes, at its declared size, not blank.
@@ -208,6 +231,7 @@ TEST_CASE("report.html: metrics equal summary.json; every image resolves and dec
   CHECK(seen.size() == expected.size());
   // Plots: joint angles, hand, motors, power, energy, contact, residuals.
   check_images(run, html, 10);
+  check_links(run, html);
   for (const char* name :
        {"joint_angles", "contact_forces", "constraint_residual", "energy_balance"})
     CHECK(html.find(std::string("plots/") + name + ".png") != std::string::npos);
@@ -226,6 +250,7 @@ TEST_CASE("report: rebuilt from the folder alone; the video is embedded when pre
   REQUIRE(out.exit_code == 0);
   const std::string html = t::slurp(run / "report.html");
   REQUIRE(sources(html, "video") == std::vector<std::string>{"video.mp4"});
+  check_links(run, html);
   check_images(run, html, 8);
   // No contact in this scene: the contact plots are listed as not plotted, not drawn.
   CHECK(html.find("plots/contact_forces.png") == std::string::npos);
@@ -297,6 +322,7 @@ TEST_CASE("compare: names every run, a computed verdict, overlays and totals") {
   CHECK(json["runs"] == Json::array({"elbow-on", "elbow-off"}));
   CHECK(json["verdict"][0].get<std::string>().find(sentence) == 0);
   check_images(folder, html, 4);
+  check_links(folder, html);  // links to each run's report.html
   CHECK(html.find("plots/totals.png") != std::string::npos);
   // Comparing one folder is a usage error.
   CHECK(t::run_elbowsim("compare " + (dir / "elbow-on").string()).exit_code == 2);

@@ -85,13 +85,17 @@ void draw_vertical_text(cairo_t* cr, double x, double y, const std::string& text
   cairo_restore(cr);
 }
 
+// Dash patterns scale with the line width (1.6 px: 6 on, 4 off, ...).
 void set_dash(cairo_t* cr, Dash dash, double width) {
-  const double dashed[] = {6 * width / 1.6, 4 * width / 1.6};
-  const double dotted[] = {1.5 * width / 1.6, 3 * width / 1.6};
+  const double u = width / 1.6;
+  const double dashed[] = {6 * u, 4 * u}, dotted[] = {1.5 * u, 3 * u},
+               dash_dot[] = {7 * u, 3 * u, 1.5 * u, 3 * u};
   if (dash == Dash::dashed)
     cairo_set_dash(cr, dashed, 2, 0);
   else if (dash == Dash::dotted)
     cairo_set_dash(cr, dotted, 2, 0);
+  else if (dash == Dash::dash_dot)
+    cairo_set_dash(cr, dash_dot, 4, 0);
   else
     cairo_set_dash(cr, nullptr, 0, 0);
 }
@@ -437,7 +441,8 @@ std::string value_label(double v) {
   return text;
 }
 
-// One bar per group in each category's slot, its value printed above (below, if negative).
+// One bar per group in each category's slot, its value printed above (below,
+// if negative); "n/a" where a value is missing.
 void draw_bars(cairo_t* cr, const BarChart& chart, const Box& area, const Mapping& y) {
   const double slot = area.width() / chart.categories.size();
   const double bar = slot * 0.7 / chart.groups.size();
@@ -445,8 +450,11 @@ void draw_bars(cairo_t* cr, const BarChart& chart, const Box& area, const Mappin
   for (std::size_t c = 0; c < chart.categories.size(); ++c) {
     for (std::size_t g = 0; g < chart.groups.size(); ++g) {
       const auto& values = chart.groups[g].values;
-      if (c >= values.size() || !std::isfinite(values[c])) continue;
       const double left = area.left + c * slot + slot * 0.15 + g * bar;
+      if (c >= values.size() || !std::isfinite(values[c])) {
+        draw_text(cr, left + bar / 2, y(0.0) - 4, "n/a", Align::center, {0.45, 0.45, 0.45});
+        continue;
+      }
       const double y0 = y(0.0), y1 = y(values[c]);
       set_color(cr, palette(static_cast<int>(g)));
       cairo_rectangle(cr, left + 1, std::min(y0, y1), bar - 2, std::max(std::abs(y1 - y0), 1.0));

@@ -23,7 +23,7 @@ struct Color {
 Color palette(int i);
 
 enum class Scale { linear, log };
-enum class Dash { solid, dashed, dotted };
+enum class Dash { solid, dashed, dotted, dash_dot };
 
 struct Axis {
   std::string label;  // "time"
