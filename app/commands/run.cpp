@@ -8,6 +8,8 @@
 
 #include "app/commands/commands.hpp"
 #include "app/output/atomic_file.hpp"
+#include "app/output/run_folder.hpp"
+#include "report/compare_report.hpp"
 #include "app/output/comparison.hpp"
 #include "app/output/events_csv.hpp"
 #include "app/output/summary_json.hpp"
@@ -138,6 +140,19 @@ int run_variants(const RunArguments& args, const Scenario& scenario,
   }
   std::cout << scenario.model.name << ": " << runs.size() << " variants compared in "
             << (folder / "comparison.csv").string() << '\n';
+  // One HTML report across the variants, in its own folder so its
+  // comparison.json does not replace the one above.
+  if (args.report) {
+    try {
+      std::vector<report::RunData> loaded;
+      for (const Scenario& v : variants) loaded.push_back(load_run_folder(folder / v.variant));
+      const auto files = report::write_comparison_report(loaded, folder / "compare");
+      std::cout << "comparison report: " << files.html.string() << '\n';
+    } catch (const std::exception& e) {
+      std::cerr << "error: " << e.what() << '\n';
+      return exit_io;
+    }
+  }
   records.insert(records.end(), runs.begin(), runs.end());
   // Expectations name the variant first: "elbow_on.energy_final.joule < ...".
   const int checked = check_expectations(args.expect, summaries);
