@@ -89,5 +89,9 @@ int check_expectations(const std::vector<std::string>& expressions,
 // (video.mp4 and/or frames/), printing what was written. Used by run and render.
 int render_outputs(const Scenario& scenario, const Recording& recording,
                    const std::filesystem::path& folder);
+// One video of several runs side by side, each panel labelled with its folder
+// name (the variants of a comparison), into out/video.mp4.
+int render_side_by_side(const std::vector<std::filesystem::path>& runs,
+                        const std::filesystem::path& out);
 
 }  // namespace elbowsim

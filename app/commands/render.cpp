@@ -105,6 +105,30 @@ int render_with(const Scenario& scenario, const Recording& recording, const fs::
 
 }  // namespace
 
+int render_side_by_side(const std::vector<fs::path>& runs, const fs::path& out) {
+  std::vector<Scenario> scenarios(runs.size());
+  std::vector<Recording> recordings(runs.size());
+  std::vector<FrameSource> sources;
+  sources.reserve(runs.size());
+  try {
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      const std::string problem = load_run(runs[k], scenarios[k], recordings[k]);
+      if (!problem.empty()) throw std::runtime_error(problem);
+      // Each panel is labelled with its run folder's name (the variant).
+      sources.emplace_back(scenarios[k].model, recordings[k], scenarios[0].render,
+                           runs[k].filename().string());
+    }
+    std::vector<const FrameSource*> panels;
+    for (const FrameSource& s : sources) panels.push_back(&s);
+    fs::create_directories(out);
+    print_stats(render_panels(panels, scenarios[0].render, {out, true, false}), out);
+  } catch (const std::exception& e) {
+    std::cerr << "error: side-by-side video: " << e.what() << '\n';
+    return exit_io;
+  }
+  return exit_ok;
+}
+
 int render_outputs(const Scenario& scenario, const Recording& recording, const fs::path& folder) {
   return render_with(scenario, recording, folder, scenario.render,
                      {folder, scenario.output.video, scenario.output.frames});

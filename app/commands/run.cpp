@@ -146,6 +146,11 @@ int run_variants(const RunArguments& args, const Scenario& scenario,
     try {
       std::vector<report::RunData> loaded;
       for (const Scenario& v : variants) loaded.push_back(load_run_folder(folder / v.variant));
+      if (args.render && variants.front().output.video) {
+        std::vector<std::filesystem::path> folders;
+        for (const Scenario& v : variants) folders.push_back(folder / v.variant);
+        if (render_side_by_side(folders, folder / "compare") != exit_ok) return exit_io;
+      }
       const auto files = report::write_comparison_report(loaded, folder / "compare");
       std::cout << "comparison report: " << files.html.string() << '\n';
     } catch (const std::exception& e) {
