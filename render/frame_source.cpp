@@ -17,7 +17,7 @@ double reach(const Model& model) {
   return std::max(r, 0.1);
 }
 
-// The arm at up to 240 recorded samples, plus the hand path.
+// The arm at up to 240 recorded samples, plus the hand path and desired path.
 Eigen::AlignedBox3d swept_bounds(const Model& model, const Playback& playback,
                                  const SceneOptions& options) {
   Eigen::AlignedBox3d out;
@@ -27,6 +27,7 @@ Eigen::AlignedBox3d swept_bounds(const Model& model, const Playback& playback,
     out.extend(arm_bounds(build_scene(model, playback.at(playback.time(r)), {}, options)));
   out.extend(arm_bounds(build_scene(model, playback.at(playback.end_time()), {}, options)));
   for (const Eigen::Vector3d& p : playback.hand_path(playback.end_time())) out.extend(p);
+  for (const Eigen::Vector3d& p : playback.desired_hand_path()) out.extend(p);
   return out;
 }
 
@@ -80,7 +81,8 @@ FrameSource::FrameSource(const Model& model, const Recording& recording,
 }
 
 Scene FrameSource::scene(double t) const {
-  return build_scene(model_, playback_.at(t), playback_.hand_path(t), options_);
+  return build_scene(model_, playback_.at(t), playback_.hand_path(t), options_,
+                     playback_.desired_hand_path());
 }
 
 std::vector<std::string> FrameSource::overlay(double t) const {

@@ -70,6 +70,16 @@ Playback::Playback(const Model& model, const Recording& rec) : dof_(model.dof) {
     if ((p - Eigen::Vector3d(hand_[0][k], hand_[1][k], hand_[2][k])).norm() >= 1e-3)
       path_rows_.push_back(r);
   }
+  // Desired hand path: all of it, thinned the same way, the last sample kept.
+  std::vector<std::vector<double>> d;
+  for (const char* axis : {"hand_d_x", "hand_d_y", "hand_d_z"}) d.push_back(column(rec, axis, rows));
+  if (!d[0].empty() && !d[1].empty() && !d[2].empty()) {
+    for (std::size_t r = 0; r < rows; ++r) {
+      const Eigen::Vector3d p(d[0][r], d[1][r], d[2][r]);
+      if (desired_path_.empty() || (p - desired_path_.back()).norm() >= 1e-3 || r + 1 == rows)
+        desired_path_.push_back(p);
+    }
+  }
 }
 
 Playback::Bracket Playback::bracket(double t) const {

@@ -33,8 +33,8 @@ struct PlaybackState {
 
 class Playback {
  public:
-  // Needs columns time and q0..q<dof-1>; uses hand_x/y/z, fn_/rest_<elbow>
-  // and E_in when present. Rows after the first non-finite value are dropped
+  // Needs columns time and q0..q<dof-1>; uses hand_x/y/z, hand_d_x/y/z,
+  // fn_/rest_<elbow> and E_in when present. Rows after the first non-finite value are dropped
   // (a diverged run). Throws std::invalid_argument naming a missing column or
   // an empty recording.
   Playback(const Model& model, const Recording& recording);
@@ -52,6 +52,10 @@ class Playback {
   // 1 mm apart, ending with the interpolated position at t. Empty if the hand
   // was not recorded.
   std::vector<Eigen::Vector3d> hand_path(double t) const;
+  // The whole desired hand path (hand_d_x/y/z), independent of t: the first
+  // sample, then samples at least 1 mm from the last kept one, and always the
+  // last sample. Empty if the recording has no desired hand position.
+  const std::vector<Eigen::Vector3d>& desired_hand_path() const { return desired_path_; }
 
  private:
   struct Bracket {
@@ -70,6 +74,7 @@ class Playback {
   std::vector<std::vector<double>> landings_;  // [elbows] touchdown times
   std::vector<double> energy_in_;              // [rows] or empty
   std::vector<std::size_t> path_rows_;         // rows kept for hand_path
+  std::vector<Eigen::Vector3d> desired_path_;  // [m] world, or empty
 };
 
 // Number of frames for `duration` [s] at `fps`: one at t = 0 and one every

@@ -17,6 +17,7 @@ constexpr double kBasePlate = 5.0;      // base plate edge / r
 constexpr double kBaseThickness = 1.0;  // base plate thickness / r
 constexpr double kArrowRadius = 0.18;   // arrow shaft radius / elbow radius
 constexpr double kPathRadius = 0.002;   // [m] hand path tube radius
+constexpr double kDesiredRadius = 0.0012;  // [m] desired hand path tube radius (thinner)
 
 Eigen::Vector3d world_up(const Model& model) {
   const double g = model.gravity.norm();
@@ -147,7 +148,8 @@ Eigen::Vector3d table_up(const Model& model, const Eigen::Vector3d& point) {
 }
 
 Scene build_scene(const Model& model, const PlaybackState& state,
-                  const std::vector<Eigen::Vector3d>& hand_path, const SceneOptions& options) {
+                  const std::vector<Eigen::Vector3d>& hand_path, const SceneOptions& options,
+                  const std::vector<Eigen::Vector3d>& desired_path) {
   const SceneStyle& style = options.style;
   Data data(model);
   forward_kinematics(model, data, state.q);
@@ -159,6 +161,8 @@ Scene build_scene(const Model& model, const PlaybackState& state,
   add_links(model, data, scene, style);
   add_elbows(model, data, state, scene, options);
   scene.hand_path = {hand_path, kPathRadius, style.hand_path};
+  if (!desired_path.empty())
+    scene.desired_hand_path = {desired_path, kDesiredRadius, style.desired_hand_path};
   scene.grid = grid(options);
   return scene;
 }

@@ -84,6 +84,9 @@ struct SceneStyle {
   Color elbow_landed{0.98f, 0.55f, 0.05f};
   Color force{0.85f, 0.12f, 0.15f};
   Color hand_path{0.60f, 0.20f, 0.70f};
+  // Desired hand path: neutral mid grey (darker than the 0.70 grid, lighter
+  // than the joints), drawn thinner than the purple traced path.
+  Color desired_hand_path{0.50f, 0.50f, 0.53f};
   Color grid{0.70f, 0.72f, 0.76f};
 };
 
@@ -105,13 +108,16 @@ struct Scene {
   std::vector<ElbowMarker> elbows;  // [model elbows]
   std::vector<Arrow> forces;        // one per resting elbow with fn > 0
   Polyline hand_path;               // traced hand positions up to now
+  Polyline desired_hand_path;       // whole desired hand path (hand_d_*); empty if none
   LineSet grid;                     // ground grid at floor_z
 };
 
 // The scene of `state` (joint angles placed with forward_kinematics on a Data
-// made here), with the traced `hand_path` (Playback::hand_path).
+// made here), with the traced `hand_path` (Playback::hand_path) and the whole
+// `desired_path` (Playback::desired_hand_path; empty: none drawn).
 Scene build_scene(const Model& model, const PlaybackState& state,
-                  const std::vector<Eigen::Vector3d>& hand_path, const SceneOptions& options);
+                  const std::vector<Eigen::Vector3d>& hand_path, const SceneOptions& options,
+                  const std::vector<Eigen::Vector3d>& desired_path = {});
 
 // Axis-aligned bounds of the arm: links, joints, elbows, base and forces [m].
 Eigen::AlignedBox3d arm_bounds(const Scene& scene);

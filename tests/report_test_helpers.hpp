@@ -3,6 +3,8 @@
 #pragma once
 
 #include <doctest/doctest.h>
+
+#include "support/process.hpp"
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -64,28 +66,9 @@ inline void check_plot_png(const std::filesystem::path& png, int width, int heig
   CHECK(dark_pixels(image, width / 4, height - 50, 3 * width / 4, height) > 40);  // x ticks, label
 }
 
-struct Outcome {
-  int exit_code;
-  std::string output;  // stdout and stderr
-};
-
-inline Outcome run_elbowsim(const std::string& arguments) {
-  const std::string command = std::string(ELBOWSIM_BINARY) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string output;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
-
-inline std::string slurp(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using elbowsim::testing::Outcome;
+using elbowsim::testing::run_elbowsim;
+using elbowsim::testing::slurp;
 
 inline std::filesystem::path scratch(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("elbowsim_report_" + name);

@@ -1,5 +1,7 @@
 // The elbowsim command line, run as a process: exit codes, messages, outputs.
 #include <doctest/doctest.h>
+
+#include "support/process.hpp"
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -13,28 +15,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Outcome {
-  int exit_code;
-  std::string output;  // stdout and stderr
-};
+using elbowsim::testing::Outcome;
+using elbowsim::testing::slurp;
 
-Outcome run(const std::string& arguments) {
-  const std::string command = std::string(ELBOWSIM_BINARY) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string output;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+Outcome run(const std::string& arguments) { return elbowsim::testing::run_elbowsim(arguments); }
 
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("elbowsim_cli_" + name);

@@ -2,6 +2,8 @@
 // the camera's projection, and the video / frames outputs of the command line
 // (run as a process; ffprobe checks the mp4).
 #include <doctest/doctest.h>
+
+#include "support/process.hpp"
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -88,20 +90,8 @@ fs::path scratch(const std::string& name) {
   return dir;
 }
 
-struct Outcome {
-  int exit_code;
-  std::string output;  // stdout and stderr
-};
-
-Outcome shell(const std::string& command) {
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string output;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
+using elbowsim::testing::Outcome;
+using elbowsim::testing::shell;
 
 Outcome cli(const std::string& arguments) {
   return shell(std::string(ELBOWSIM_BINARY) + " " + arguments);

@@ -110,6 +110,49 @@ TEST_CASE("render playback: linear between samples, clamped outside; the hand pa
                        doctest::Contains("no column \"q2\""), std::invalid_argument);
 }
 
+TEST_CASE("render scene: the whole desired hand path in grey, only when hand_d_* is recorded") {
+  const Model model = render_fixture::arm();
+  const Recording plain = render_fixture::recording();
+  // The fixture plus a desired hand position: a straight line from
+  // (0.75, 0, 0) at t = 0 to (0.55, 0, 0.1) at t = 1 s (2 cm and 1 cm per row).
+  Recording rec;
+  rec.columns = plain.columns;
+  rec.columns.insert(rec.columns.end(), {{"hand_d_x", "m"}, {"hand_d_y", "m"}, {"hand_d_z", "m"}});
+  for (std::size_t r = 0; r < plain.rows(); ++r) {
+    for (std::size_t c = 0; c < plain.columns.size(); ++c) rec.values.push_back(plain.at(r, c));
+    rec.values.insert(rec.values.end(), {0.75 - 0.02 * double(r), 0.0, 0.01 * double(r)});
+  }
+  const Playback playback(model, rec);
+  const SceneOptions options;
+  // Mid-run the scene already holds the whole desired path, not only up to t.
+  const Scene scene =
+      build_scene(model, playback.at(0.3), playback.hand_path(0.3), options,
+                  playback.desired_hand_path());
+  const Polyline& desired = scene.desired_hand_path;
+  REQUIRE(desired.points.size() == 11);
+  CHECK(approx(desired.points.front(), Vector3d(0.75, 0, 0), 1e-12));
+  CHECK(approx(desired.points.back(), Vector3d(0.55, 0, 0.1), 1e-12));
+  CHECK(same(desired.color, SceneStyle{}.desired_hand_path));
+  CHECK_FALSE(same(desired.color, SceneStyle{}.hand_path));
+  CHECK(desired.radius > 0);
+  CHECK(desired.radius < scene.hand_path.radius);
+  CHECK(scene.hand_path.points.size() == 4);  // the traced path still stops at t
+  // The frame source passes it on too.
+  const FrameSource source(model, rec, RenderSettings{}, "fixture");
+  CHECK(source.scene(0.0).desired_hand_path.points.size() == 11);
+  CHECK(source.frame_bounds().contains(Vector3d(0.55, 0, 0.1)));
+
+  // Without hand_d_* columns: no desired path anywhere; the rest unchanged.
+  const Playback without(model, plain);
+  CHECK(without.desired_hand_path().empty());
+  CHECK(build_scene(model, without.at(0.3), without.hand_path(0.3), options,
+                    without.desired_hand_path())
+            .desired_hand_path.points.empty());
+  CHECK(FrameSource(model, plain, RenderSettings{}, "fixture")
+            .scene(0.3)
+            .desired_hand_path.points.empty());
+}
+
 TEST_CASE("render playback: frames by simulation time, duration x fps + 1") {
   CHECK(frame_count(2.0, 30) == 61);
   CHECK(frame_count(0.5, 20) == 11);
