@@ -356,6 +356,10 @@ void collect(const Scene& s, std::array<std::vector<float>, shape_count>& out) {
   const auto& path = s.hand_path.points;
   for (std::size_t k = 1; k < path.size(); ++k)
     add_along(out[tube], path[k - 1], path[k], s.hand_path.radius, s.hand_path.color);
+  const auto& desired = s.desired_hand_path.points;  // the whole planned path, grey
+  for (std::size_t k = 1; k < desired.size(); ++k)
+    add_along(out[tube], desired[k - 1], desired[k], s.desired_hand_path.radius,
+              s.desired_hand_path.color);
 }
 
 // Key light mostly from above (world z, DESIGN.md §4), a little from the
