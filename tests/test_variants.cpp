@@ -286,6 +286,10 @@ TEST_CASE("sweep: one folder and one sweep.csv row per value, numbers as in the 
     CHECK(summary["settings"]["duration"] == std::stod(values[k]));
     check_row_matches(csv[0], csv[k + 1], 3, summary);
   }
+  // Numeric values also get plots against the value (energy always; the
+  // pendulum has no task, so no hand-error plot).
+  CHECK(fs::file_size(dir / "sweep_energy.png") > 1000);
+  CHECK_FALSE(fs::exists(dir / "sweep_hand_error.png"));
   // A bad value is bad input: exit 2, nothing written.
   const fs::path bad = dir / "bad";
   CHECK(run("sweep " + kPendulumFile + " --key simulation.duration --values 0.1,-1 --out " +

@@ -4,11 +4,13 @@
 // accuracy-vs-speed study (task.duration) and the elbow-position study
 // (elbows[0].at).
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <set>
 
 #include "app/commands/commands.hpp"
+#include "report/sweep_plots.hpp"
 #include "app/output/atomic_file.hpp"
 #include "app/output/comparison.hpp"
 #include "app/scenario/scenario.hpp"
@@ -95,6 +97,21 @@ int sweep_command(const SweepArguments& args) {
   }
   std::cout << "sweep of " << args.key << ": " << rows.size() << " runs; table in "
             << (folder / "sweep.csv").string() << '\n';
+  // Plots against the value, when every value is a number.
+  std::vector<report::SweepPoint> points;
+  for (const SweepRow& row : rows) {
+    char* end = nullptr;
+    const double x = std::strtod(row.value.c_str(), &end);
+    if (end == row.value.c_str() || *end) return code;
+    points.push_back({x, row.run.variant, row.run.summary});
+  }
+  try {
+    for (const auto& png : report::write_sweep_plots(args.key, points, folder))
+      std::cout << "plot: " << png.string() << '\n';
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_io;
+  }
   return code;
 }
 
