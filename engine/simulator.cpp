@@ -58,9 +58,9 @@ std::vector<Column> trajectory_columns(const Model& model) {
 }
 
 // Per elbow: normal force (0 unless its row is on), signed distance, resting flag.
-void append_contacts(const Model& model, const Data& data, ContactTracker& tracker,
+void append_contacts(const Model& model, Data& data, ContactTracker& tracker,
                      std::vector<double>& row) {
-  const auto& contacts = tracker.detect(model, const_cast<Data&>(data));
+  const auto& contacts = tracker.detect(model, data);
   for (int k = 0; k < int(model.elbows.size()); ++k) {
     double fn = 0;
     for (std::size_t r = 0; r < data.contact.active.size(); ++r)
