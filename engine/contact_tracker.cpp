@@ -98,12 +98,11 @@ bool ContactTracker::begin_step(const Model& model, Data& data, ContactLog& log)
                   "non-negative elbow force exists (lower contact.friction or change the pose)";
     return false;
   }
-  // Dependent rows (rank-revealing, relative threshold rank_tolerance) make the
-  // forces non-unique: start from all rows on, so the minimum-norm split is
-  // kept whenever it is complementary.
-  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> rows(c.Jc);
-  rows.setThreshold(model.contact.rank_tolerance);
-  const bool dependent = rows.rank() < int(candidates.size());
+  // Dependent rows make the forces non-unique: start from all rows on, so the
+  // minimum-norm split is kept whenever it is complementary. The Schur solve
+  // above already checked the rank of M~ = Jc M^-1 Jc^T (pivots against
+  // rank_tolerance), so no second factorisation here.
+  const bool dependent = c.dependent;
   std::vector<bool> on(candidates.size(), true);
   if (!dependent)
     for (std::size_t r = 0; r < candidates.size(); ++r) on[r] = c.resting[candidates[r]];
@@ -116,12 +115,16 @@ bool ContactTracker::begin_step(const Model& model, Data& data, ContactLog& log)
   }
   if (dependent || lcp.dependent) {
     ++log.dependent_steps;
-    if (!dependent_warned_)
+    if (!dependent_warned_) {
+      // The rank, for the message only (once per run).
+      Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> rows(c.Jc);
+      rows.setThreshold(model.contact.rank_tolerance);
       log.warnings.push_back("dependent elbow constraints at " + at_time(data.t) + ": " +
                              std::to_string(candidates.size()) + " touching elbows give rows of " +
                              "M* of rank " + std::to_string(rows.rank()) + " (threshold " +
                              std::to_string(model.contact.rank_tolerance) +
                              " relative); minimum-norm elbow forces are used");
+    }
     dependent_warned_ = true;
   }
   c.active.clear();
