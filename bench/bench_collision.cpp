@@ -9,8 +9,8 @@
 #include <numbers>
 #include <vector>
 
-#include "engine/collision.hpp"
-#include "engine/kinematics.hpp"
+#include "engine/contact/collision.hpp"
+#include "engine/dynamics/kinematics.hpp"
 #include "support/models.hpp"
 
 using namespace elbowsim;

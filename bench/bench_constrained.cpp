@@ -4,11 +4,11 @@
 // M + Jm, B_J and the rows, as the simulator has them.
 #include <benchmark/benchmark.h>
 
-#include "engine/constrained_dynamics.hpp"
-#include "engine/constraint_rows.hpp"
-#include "engine/crba.hpp"
-#include "engine/kinematics.hpp"
-#include "engine/walker_orin.hpp"
+#include "engine/contact/constrained_dynamics.hpp"
+#include "engine/contact/constraint_rows.hpp"
+#include "engine/dynamics/crba.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/dynamics/walker_orin.hpp"
 #include "support/models.hpp"
 
 using namespace elbowsim;

@@ -3,12 +3,12 @@
 // spatial chains of s = 2 ... 60 joints with every effect on.
 #include <benchmark/benchmark.h>
 
-#include "engine/aba.hpp"
-#include "engine/crba.hpp"
-#include "engine/forward_dynamics.hpp"
-#include "engine/kinematics.hpp"
-#include "engine/rnea.hpp"
-#include "engine/walker_orin.hpp"
+#include "engine/dynamics/aba.hpp"
+#include "engine/dynamics/crba.hpp"
+#include "engine/dynamics/forward_dynamics.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/dynamics/rnea.hpp"
+#include "engine/dynamics/walker_orin.hpp"
 #include "support/models.hpp"
 
 using namespace elbowsim;

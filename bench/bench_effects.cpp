@@ -2,8 +2,8 @@
 // a scene pays only for the effects it switches on.
 #include <benchmark/benchmark.h>
 
-#include "engine/integrator.hpp"
-#include "engine/simulator.hpp"
+#include "engine/run/integrator.hpp"
+#include "engine/run/simulator.hpp"
 #include "support/models.hpp"
 
 using namespace elbowsim;

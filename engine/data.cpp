@@ -1,6 +1,6 @@
-#include "data.hpp"
+#include "engine/data.hpp"
 
-#include "state_vector.hpp"
+#include "engine/run/state_layout.hpp"
 
 namespace elbowsim {
 

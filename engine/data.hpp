@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "model.hpp"
+#include "engine/model.hpp"
 
 namespace elbowsim {
 

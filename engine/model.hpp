@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "controller.hpp"
-#include "inputs.hpp"
-#include "task.hpp"
+#include "engine/control/controller.hpp"
+#include "engine/control/inputs.hpp"
+#include "engine/control/task.hpp"
 
 namespace elbowsim {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "engine/model.hpp"
-#include "engine/recording.hpp"
+#include "engine/recording/recording.hpp"
 #include "render/camera.hpp"
 #include "render/playback.hpp"
 #include "render/render_settings.hpp"

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "engine/model.hpp"
-#include "engine/recording.hpp"
+#include "engine/recording/recording.hpp"
 
 namespace elbowsim {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "engine/data.hpp"
-#include "engine/kinematics.hpp"
+#include "engine/dynamics/kinematics.hpp"
 
 namespace elbowsim {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/recording.hpp"
+#include "engine/recording/recording.hpp"
 #include "report/plot/plot.hpp"
 
 namespace elbowsim::report {

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "engine/recording.hpp"
+#include "engine/recording/recording.hpp"
 
 namespace elbowsim::report {
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "engine/collision.hpp"
-#include "engine/kinematics.hpp"
+#include "engine/contact/collision.hpp"
+#include "engine/dynamics/kinematics.hpp"
 #include "support/allocations.hpp"
 #include "support/approx.hpp"
 #include "support/models.hpp"

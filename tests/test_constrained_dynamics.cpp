@@ -4,13 +4,13 @@
 
 #include <Eigen/LU>
 
-#include "engine/constrained_dynamics.hpp"
-#include "engine/constraint_rows.hpp"
-#include "engine/crba.hpp"
-#include "engine/kinematics.hpp"
-#include "engine/motor.hpp"
-#include "engine/simulator.hpp"
-#include "engine/walker_orin.hpp"
+#include "engine/contact/constrained_dynamics.hpp"
+#include "engine/contact/constraint_rows.hpp"
+#include "engine/dynamics/crba.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/dynamics/motor.hpp"
+#include "engine/run/simulator.hpp"
+#include "engine/dynamics/walker_orin.hpp"
 #include "support/approx.hpp"
 #include "support/contact_scenes.hpp"
 

@@ -4,12 +4,12 @@
 
 #include <cmath>
 
-#include "engine/collision.hpp"
-#include "engine/constraint_rows.hpp"
-#include "engine/crba.hpp"
-#include "engine/impact.hpp"
-#include "engine/kinematics.hpp"
-#include "engine/simulator.hpp"
+#include "engine/contact/collision.hpp"
+#include "engine/contact/constraint_rows.hpp"
+#include "engine/dynamics/crba.hpp"
+#include "engine/contact/impact.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/run/simulator.hpp"
 #include "support/approx.hpp"
 #include "support/contact_scenes.hpp"
 #include "support/scenes.hpp"

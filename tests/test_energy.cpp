@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "engine/simulator.hpp"
+#include "engine/run/simulator.hpp"
 #include "support/approx.hpp"
 #include "support/scenes.hpp"
 

@@ -2,9 +2,9 @@
 // control, and the elbow-on/elbow-off comparison, on a 4-link arm.
 #include <doctest/doctest.h>
 
-#include "engine/kinematics.hpp"
-#include "engine/plan.hpp"
-#include "engine/simulator.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/control/plan.hpp"
+#include "engine/run/simulator.hpp"
 #include "support/experiment_scenes.hpp"
 
 using namespace elbowsim;

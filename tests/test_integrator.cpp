@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "engine/integrator.hpp"
-#include "engine/simulator.hpp"
+#include "engine/run/integrator.hpp"
+#include "engine/run/simulator.hpp"
 #include "support/approx.hpp"
 #include "support/scenes.hpp"
 

@@ -1,7 +1,7 @@
 // Point Jacobian and Jdot*qd against central finite differences of forward kinematics.
 #include <doctest/doctest.h>
 
-#include "engine/kinematics.hpp"
+#include "engine/dynamics/kinematics.hpp"
 #include "support/approx.hpp"
 #include "support/models.hpp"
 

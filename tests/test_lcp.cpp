@@ -4,7 +4,7 @@
 #include <Eigen/Cholesky>
 #include <random>
 
-#include "engine/lcp.hpp"
+#include "engine/contact/lcp.hpp"
 
 using namespace elbowsim;
 

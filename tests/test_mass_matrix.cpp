@@ -4,11 +4,11 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
-#include "engine/aba.hpp"
-#include "engine/crba.hpp"
-#include "engine/forward_dynamics.hpp"
-#include "engine/kinematics.hpp"
-#include "engine/walker_orin.hpp"
+#include "engine/dynamics/aba.hpp"
+#include "engine/dynamics/crba.hpp"
+#include "engine/dynamics/forward_dynamics.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/dynamics/walker_orin.hpp"
 #include "support/approx.hpp"
 #include "support/models.hpp"
 

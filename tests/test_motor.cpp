@@ -1,8 +1,8 @@
 // DC motor model (eq. 16-27) against analytic cases.
 #include <doctest/doctest.h>
 
-#include "engine/simulator.hpp"
-#include "engine/motor.hpp"
+#include "engine/run/simulator.hpp"
+#include "engine/dynamics/motor.hpp"
 #include "support/approx.hpp"
 #include "support/models.hpp"
 

@@ -13,8 +13,8 @@
 #include <string>
 
 #include "engine/data.hpp"
-#include "engine/kinematics.hpp"
-#include "engine/recording.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/recording/recording.hpp"
 #include "support/models.hpp"
 
 namespace render_fixture {

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "engine/kinematics.hpp"
-#include "engine/rnea.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/dynamics/rnea.hpp"
 #include "support/approx.hpp"
 #include "support/models.hpp"
 

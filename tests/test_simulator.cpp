@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "engine/data.hpp"
-#include "engine/derivative.hpp"
-#include "engine/integrator.hpp"
-#include "engine/simulator.hpp"
+#include "engine/run/derivative.hpp"
+#include "engine/run/integrator.hpp"
+#include "engine/run/simulator.hpp"
 #include "support/allocations.hpp"
 #include "support/scenes.hpp"
 

@@ -15,8 +15,8 @@
 #include "app/output/summary_json.hpp"
 #include "app/output/trajectory_csv.hpp"
 #include "app/scenario/scenario.hpp"
-#include "engine/inverse_kinematics.hpp"
-#include "engine/simulator.hpp"
+#include "engine/control/inverse_kinematics.hpp"
+#include "engine/run/simulator.hpp"
 
 namespace elbowsim {
 

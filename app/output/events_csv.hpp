@@ -4,7 +4,7 @@
 #include <iosfwd>
 
 #include "engine/model.hpp"
-#include "engine/recording.hpp"
+#include "engine/recording/recording.hpp"
 
 namespace elbowsim {
 

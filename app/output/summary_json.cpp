@@ -1,6 +1,6 @@
 #include "app/output/summary_json.hpp"
 
-#include "engine/energy.hpp"
+#include "engine/dynamics/energy.hpp"
 
 namespace elbowsim {
 

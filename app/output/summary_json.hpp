@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/scenario/scenario.hpp"
-#include "engine/recording.hpp"
+#include "engine/recording/recording.hpp"
 
 namespace elbowsim {
 

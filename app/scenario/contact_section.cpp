@@ -7,8 +7,8 @@
 
 #include <sstream>
 
-#include "engine/collision.hpp"
-#include "engine/kinematics.hpp"
+#include "engine/contact/collision.hpp"
+#include "engine/dynamics/kinematics.hpp"
 #include "app/scenario/checks.hpp"
 #include "app/scenario/sections.hpp"
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "engine/kinematics.hpp"
-#include "engine/rnea.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/dynamics/rnea.hpp"
 
 namespace elbowsim::testing {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "engine/kinematics.hpp"
+#include "engine/dynamics/kinematics.hpp"
 
 namespace elbowsim::testing {
 

@@ -1,0 +1,232 @@
+// CollisionWorld on Bullet (BulletCollision + LinearMath only, never BulletDynamics).
+// The only file of the program that includes Bullet: it turns Bullet's answers into the
+// plain records of collision.hpp.
+//
+// Precision. Debian ships two builds of Bullet side by side: libBulletCollision.so (float)
+// and libBulletCollision-float64.so (built with BT_USE_DOUBLE_PRECISION, see
+// BulletConfig-float64.cmake). We link the float64 build and compile this file with
+// BT_USE_DOUBLE_PRECISION (engine/CMakeLists.txt): btScalar, and with it the layout of
+// btVector3 and btTransform, must match the library's, and a float build would limit
+// distances to ~1e-7 m.
+//
+// Method. Each query is a pairwise closest-point problem solved by btGjkPairDetector:
+// GJK between the shapes' cores (a sphere's centre, a capsule's segment, the box), minus
+// the margins; EPA (btGjkEpaPenetrationDepthSolver) only when the cores overlap. We prefer
+// it to btCollisionWorld::contactPairTest, which for every pair and call creates and frees
+// a collision algorithm and a persistent manifold, needs a large distance threshold to
+// report separated pairs at all, and (convex-convex algorithm) adds perturbed extra contact
+// points we would have to filter out. GJK gives one signed distance, a normal and a point,
+// for any separation, and allocates nothing.
+//
+// Margins. btSphereShape and btCapsuleShape carry their whole radius as margin, so their
+// core is a point or a segment and GJK's answer minus the radius is exact. btBoxShape keeps
+// its faces at the given half extents but rounds its edges and corners by its margin
+// (default 0.04 m, shrunk to a tenth of the smallest half extent): we set the box margin to
+// 0 so that the box is exactly the table box. Then, while a sphere's centre is outside the
+// box (distance > -radius), the distance is exact to rounding.
+//
+// The btCollisionWorld (dispatcher, Dbvt broadphase) owns the objects and their poses; its
+// broadphase picks the link-box pairs worth a narrow-phase query. Elbow queries cannot use
+// it (the nearest box may be far away): they try every box whose bounding sphere could still
+// beat the best distance found so far.
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
+#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
+#include <btBulletCollisionCommon.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <atomic>
+#include <limits>
+
+#include "engine/contact/collision.hpp"
+
+#ifndef BT_USE_DOUBLE_PRECISION
+#error "collision_bullet.cpp must be built with BT_USE_DOUBLE_PRECISION (Bullet's float64 build)"
+#endif
+
+namespace elbowsim {
+
+namespace {
+
+std::atomic<long> g_worlds_built{0};
+
+// Collision filter groups: only link-table pairs ever enter the broadphase pair cache.
+constexpr int kLinkGroup = 1 << 6;
+constexpr int kTableGroup = 1 << 7;
+constexpr int kElbowGroup = 1 << 8;
+// What a collision object stands for (its user index 2; user index 1 is its number).
+enum Kind { kElbow = 0, kLink = 1, kBox = 2 };
+
+btVector3 to_bt(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
+
+Eigen::Vector3d to_eigen(const btVector3& v) { return Eigen::Vector3d(v.x(), v.y(), v.z()); }
+
+btTransform to_bt(const Eigen::Matrix3d& R, const Eigen::Vector3d& p) {
+  const btMatrix3x3 basis(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1),
+                          R(2, 2));
+  return btTransform(basis, to_bt(p));
+}
+
+// Signed distance between two convex objects at their current poses (GJK, EPA when the
+// cores overlap). The normal points from b toward a; the point lies on b's surface.
+struct ClosestPoints {
+  bool valid = false;
+  double distance = std::numeric_limits<double>::infinity();  // [m] < 0 when penetrating
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+};
+
+ClosestPoints closest_points(const btCollisionObject& a, const btCollisionObject& b,
+                             btVoronoiSimplexSolver& simplex, btGjkEpaPenetrationDepthSolver& epa) {
+  const auto* shape_a = static_cast<const btConvexShape*>(a.getCollisionShape());
+  const auto* shape_b = static_cast<const btConvexShape*>(b.getCollisionShape());
+  btGjkPairDetector gjk(shape_a, shape_b, &simplex, &epa);
+  btGjkPairDetector::ClosestPointInput input;
+  input.m_transformA = a.getWorldTransform();
+  input.m_transformB = b.getWorldTransform();
+  input.m_maximumDistanceSquared = BT_LARGE_FLOAT;  // report any separation
+  btPointCollector result;
+  gjk.getClosestPoints(input, result, nullptr);
+  ClosestPoints out;
+  if (!result.m_hasResult) return out;
+  out.valid = true;
+  out.distance = result.m_distance;
+  out.normal = to_eigen(result.m_normalOnBInWorld).normalized();
+  out.point = to_eigen(result.m_pointInWorld);
+  return out;
+}
+
+}  // namespace
+
+struct CollisionWorld::Impl {
+  // Declared before the world: the world's destructor still reads the objects, and the
+  // world needs the dispatcher and broadphase to exist.
+  btDefaultCollisionConfiguration configuration;
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase broadphase;
+  std::vector<std::unique_ptr<btConvexShape>> shapes;
+  std::vector<std::unique_ptr<btCollisionObject>> elbows, links, boxes;  // one per model item
+  std::vector<btTransform> capsule_in_link;  // [links] capsule frame in the link frame
+  std::vector<Eigen::Vector3d> box_center;   // [boxes] world [m]
+  std::vector<double> box_reach;             // [boxes] half diagonal [m]
+  btCollisionWorld world{&dispatcher, &broadphase, &configuration};
+  btVoronoiSimplexSolver simplex;
+  btGjkEpaPenetrationDepthSolver epa;
+
+  // Adds one object to the world; only objects whose group and mask match make broadphase pairs.
+  void add(std::unique_ptr<btConvexShape> shape, const btTransform& pose, Kind kind, int index,
+           int group, int mask) {
+    auto object = std::make_unique<btCollisionObject>();
+    object->setCollisionShape(shape.get());
+    object->setWorldTransform(pose);
+    object->setUserIndex(index);
+    object->setUserIndex2(kind);
+    if (kind == kBox) object->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
+    world.addCollisionObject(object.get(), group, mask);
+    shapes.push_back(std::move(shape));
+    (kind == kElbow ? elbows : kind == kLink ? links : boxes).push_back(std::move(object));
+  }
+
+  ~Impl() {
+    for (auto* list : {&elbows, &links, &boxes})
+      for (auto& object : *list) world.removeCollisionObject(object.get());
+  }
+};
+
+CollisionWorld::CollisionWorld(const Model& model) : impl_(std::make_unique<Impl>()) {
+  Impl& w = *impl_;
+  w.world.setForceUpdateAllAabbs(false);  // boxes are static; links are updated by hand
+  // Elbow spheres (poses set per query; they never pair in the broadphase).
+  for (int k = 0; k < static_cast<int>(model.elbows.size()); ++k)
+    w.add(std::make_unique<btSphereShape>(model.elbows[k].radius), btTransform::getIdentity(),
+          kElbow, k, kElbowGroup, 0);
+  // Link capsules along the link, from its frame origin to its tip (a sphere if tip = 0).
+  for (int i = 0; i < model.dof; ++i) {
+    const Link& link = model.links[i];
+    const double length = link.tip.norm();
+    const Eigen::Matrix3d R =
+        length > 0 ? Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), link.tip)
+                         .toRotationMatrix()
+                   : Eigen::Matrix3d::Identity();
+    w.capsule_in_link.push_back(to_bt(R, 0.5 * link.tip));
+    w.add(std::make_unique<btCapsuleShapeX>(link.radius, length), btTransform::getIdentity(), kLink,
+          i, kLinkGroup, kTableGroup);
+  }
+  // Table boxes with sharp edges (margin 0), fixed in the world.
+  for (int b = 0; b < static_cast<int>(model.table.size()); ++b) {
+    const TableBox& box = model.table[b];
+    auto shape = std::make_unique<btBoxShape>(to_bt(0.5 * box.size));
+    shape->setMargin(0);
+    w.add(std::move(shape), to_bt(box.rotation, box.center), kBox, b, kTableGroup, kLinkGroup);
+    w.box_center.push_back(box.center);
+    w.box_reach.push_back(0.5 * box.size.norm());
+  }
+  ++g_worlds_built;
+}
+
+CollisionWorld::~CollisionWorld() = default;
+
+long CollisionWorld::worlds_built() { return g_worlds_built.load(); }
+
+void CollisionWorld::elbow_contacts(const Model& model, const Data& data,
+                                    std::vector<ElbowContact>& out) {
+  Impl& w = *impl_;
+  out.resize(model.elbows.size());
+  for (int k = 0; k < static_cast<int>(model.elbows.size()); ++k) {
+    // Sphere centre r = o_i + R_i p (link frame point p of link i).
+    const Elbow& elbow = model.elbows[k];
+    const Eigen::Vector3d centre =
+        data.origin[elbow.link] + data.rotation[elbow.link] * elbow.point;
+    btCollisionObject& sphere = *w.elbows[k];
+    sphere.getWorldTransform().setOrigin(to_bt(centre));
+    // Nearest box: the smallest signed distance over all boxes. A box whose bounding sphere
+    // is already farther than the best distance cannot win; it is skipped without GJK
+    // (~0.3-0.5 us per query in Bullet).
+    ElbowContact& contact = out[k];
+    contact = ElbowContact{k, -1, std::numeric_limits<double>::infinity(), Eigen::Vector3d::UnitZ(),
+                           Eigen::Vector3d::Zero()};
+    for (int b = 0; b < static_cast<int>(w.boxes.size()); ++b) {
+      const double lower_bound = (centre - w.box_center[b]).norm() - w.box_reach[b] - elbow.radius;
+      if (lower_bound >= contact.distance) continue;
+      const ClosestPoints c = closest_points(sphere, *w.boxes[b], w.simplex, w.epa);
+      if (!c.valid || c.distance >= contact.distance) continue;
+      contact.box = b;
+      contact.distance = c.distance;
+      contact.normal = c.normal;
+      contact.point = c.point;
+    }
+  }
+}
+
+void CollisionWorld::link_penetrations(const Model& model, const Data& data,
+                                       std::vector<LinkPenetration>& out) {
+  Impl& w = *impl_;
+  out.clear();
+  if (out.capacity() < w.links.size() * w.boxes.size())
+    out.reserve(w.links.size() * w.boxes.size());
+  // Place each capsule (link pose times its fixed offset) and refresh its broadphase box.
+  for (int i = 0; i < static_cast<int>(w.links.size()); ++i) {
+    btCollisionObject& capsule = *w.links[i];
+    capsule.setWorldTransform(to_bt(data.rotation[i], data.origin[i]) * w.capsule_in_link[i]);
+    w.world.updateSingleAabb(&capsule);
+  }
+  // Candidates: link-box pairs whose (padded) bounding boxes overlap; then exact depths.
+  w.world.computeOverlappingPairs();
+  btBroadphasePairArray& pairs = w.world.getPairCache()->getOverlappingPairArray();
+  for (int p = 0; p < pairs.size(); ++p) {
+    auto* a = static_cast<const btCollisionObject*>(pairs[p].m_pProxy0->m_clientObject);
+    auto* b = static_cast<const btCollisionObject*>(pairs[p].m_pProxy1->m_clientObject);
+    if (a->getUserIndex2() == kBox) std::swap(a, b);
+    if (a->getUserIndex2() != kLink || b->getUserIndex2() != kBox) continue;
+    const ClosestPoints c = closest_points(*a, *b, w.simplex, w.epa);
+    if (c.valid && -c.distance > model.contact.link_warning_depth)
+      out.push_back({a->getUserIndex(), b->getUserIndex(), -c.distance});
+  }
+  std::sort(out.begin(), out.end(), [](const LinkPenetration& x, const LinkPenetration& y) {
+    return x.link != y.link ? x.link < y.link : x.box < y.box;
+  });
+}
+
+}  // namespace elbowsim

@@ -1,0 +1,106 @@
+#include "engine/contact/constrained_dynamics.hpp"
+
+#include <Eigen/LU>
+#include <Eigen/QR>
+
+namespace elbowsim {
+
+namespace {
+
+// f = A^-1 rhs. Cholesky (LU with friction, A is then not symmetric) while
+// the smallest pivot stays above rank_tolerance relative to the largest;
+// below it the rows are dependent, and a complete orthogonal decomposition
+// gives the minimum-norm f.
+void rank_revealing_solve(const Model& model, Data& data) {
+  ContactData& c = data.contact;
+  const double tol = model.contact.rank_tolerance;
+  bool independent;
+  if (model.effects.friction) {
+    c.A_lu.compute(c.A);
+    const auto pivots = c.A_lu.matrixLU().diagonal().cwiseAbs();
+    independent = pivots.minCoeff() > tol * pivots.maxCoeff();
+    if (independent) c.fn = c.A_lu.solve(c.rhs);
+  } else {
+    c.A_llt.compute(c.A);
+    const auto pivots = c.A_llt.matrixLLT().diagonal().cwiseAbs2();
+    independent = c.A_llt.info() == Eigen::Success && pivots.minCoeff() > tol * pivots.maxCoeff();
+    if (independent) {
+      c.fn = c.rhs;
+      c.A_llt.solveInPlace(c.fn);
+    }
+  }
+  c.dependent = !independent;
+  if (independent) return;
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(c.A);
+  cod.setThreshold(tol);
+  c.fn = cod.solve(c.rhs);
+}
+
+// Schur complement. With M = L L^T, w = L^-1 (tau - B_J), Y = L^-1 Jc^T and
+// Z = L^-1 Jf^T: A = Y^T Z, f = A^-1 (gamma - Y^T w), qdd = L^-T (w + Z f).
+// Three triangular solves and one p x p factorisation.
+void schur(const Model& model, Data& data, ConstVec tau) {
+  ContactData& c = data.contact;
+  data.llt.compute(data.mass_matrix);
+  const auto L = data.llt.matrixL();
+  c.a_free = tau - data.bias;  // becomes w
+  L.solveInPlace(c.a_free);
+  c.Y = c.Jc.transpose();
+  L.solveInPlace(c.Y);
+  const Eigen::MatrixXd* Z = &c.Y;  // without friction Jf = Jc
+  if (model.effects.friction) {
+    c.Z = c.Jf.transpose();
+    L.solveInPlace(c.Z);
+    Z = &c.Z;
+  }
+  c.A.noalias() = c.Y.transpose() * *Z;
+  c.rhs = c.gamma;
+  c.rhs.noalias() -= c.Y.transpose() * c.a_free;
+  rank_revealing_solve(model, data);
+  data.qdd = c.a_free;
+  data.qdd.noalias() += *Z * c.fn;
+  data.llt.matrixU().solveInPlace(data.qdd);
+}
+
+void dense_lu(Data& data, ConstVec tau) {
+  ContactData& c = data.contact;
+  const Eigen::Index n = data.mass_matrix.rows(), p = c.Jc.rows();
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n + p, n + p);
+  K.topLeftCorner(n, n) = data.mass_matrix;
+  K.topRightCorner(n, p) = -c.Jf.transpose();
+  K.bottomLeftCorner(p, n) = c.Jc;
+  Eigen::VectorXd rhs(n + p);
+  rhs << tau - data.bias, c.gamma;
+  const Eigen::VectorXd x = K.partialPivLu().solve(rhs);
+  data.qdd = x.head(n);
+  c.fn = x.tail(p);
+}
+
+// Paper eq. (48)-(49) with explicit inverses.
+void explicit_inverse(Data& data, ConstVec tau) {
+  ContactData& c = data.contact;
+  const Eigen::MatrixXd M_inv = data.mass_matrix.inverse();
+  const Eigen::MatrixXd M_tilde_inv = (c.Jc * M_inv * c.Jf.transpose()).inverse();
+  const Eigen::VectorXd tau_prime = tau - data.bias;
+  c.fn = M_tilde_inv * (c.gamma - c.Jc * M_inv * tau_prime);
+  data.qdd = M_inv * (tau_prime + c.Jf.transpose() * c.fn);
+}
+
+}  // namespace
+
+void solve_constrained(const Model& model, Data& data, ConstVec tau, ConstraintSolver method) {
+  switch (method) {
+    case ConstraintSolver::schur: schur(model, data, tau); return;
+    case ConstraintSolver::dense_lu: dense_lu(data, tau); return;
+    case ConstraintSolver::explicit_inverse: explicit_inverse(data, tau); return;
+  }
+}
+
+void contact_lcp_terms(const Model& model, Data& data, ConstVec tau, Eigen::MatrixXd& A,
+                       Eigen::VectorXd& b) {
+  schur(model, data, tau);  // leaves A and rhs = gamma - Jc qdd_free
+  A = data.contact.A;
+  b = -data.contact.rhs;
+}
+
+}  // namespace elbowsim

@@ -1,0 +1,66 @@
+#include "engine/contact/constraint_rows.hpp"
+
+#include "engine/dynamics/kinematics.hpp"
+
+namespace elbowsim {
+
+namespace {
+
+void resize_rows(Data& data, int p, int n) {
+  ContactData& c = data.contact;
+  if (c.Jc.rows() == p) return;  // p changes only between steps
+  c.Jc.resize(p, n);
+  c.Jf.resize(p, n);
+  c.gamma.resize(p);
+  c.C.resize(p);
+  c.Cd.resize(p);
+  c.fn = Eigen::VectorXd::Zero(p);
+  c.slide.resize(p);
+  c.rhs.resize(p);
+  c.Y.resize(n, p);
+  c.Z.resize(n, p);
+  c.A.resize(p, p);
+}
+
+// Friction part of row r: -mu t^T J_p at the contact point under the sphere.
+void friction_row(const Model& model, Data& data, int r, const Elbow& elbow,
+                  const Eigen::Vector3d& n, ConstVec qd) {
+  ContactData& c = data.contact;
+  const Eigen::Vector3d centre = point_position(data, elbow.link, elbow.point);
+  const Eigen::Vector3d contact_world = centre - elbow.radius * n;
+  const Eigen::Vector3d contact_local =
+      data.rotation[elbow.link].transpose() * (contact_world - data.origin[elbow.link]);
+  point_jacobian(model, data, elbow.link, contact_local, c.J3);
+  const Eigen::Vector3d v = c.J3 * qd;
+  const Eigen::Vector3d v_t = v - n * n.dot(v);
+  const double speed = v_t.norm();
+  c.slide[r] = speed;
+  const Eigen::Vector3d t = v_t / std::max(speed, model.contact.slip_velocity);
+  c.Jf.row(r) -= model.contact.friction * (t.transpose() * c.J3);
+}
+
+}  // namespace
+
+void constraint_rows(const Model& model, Data& data, ConstVec qd) {
+  ContactData& c = data.contact;
+  const int p = static_cast<int>(c.active.size());
+  resize_rows(data, p, model.dof);
+  const double T = model.contact.baumgarte_time;
+  for (int r = 0; r < p; ++r) {
+    const int k = c.active[r];
+    const Elbow& elbow = model.elbows[k];
+    const Eigen::Vector3d& n = c.normal[k];
+    point_jacobian(model, data, elbow.link, elbow.point, c.J3);
+    c.Jc.row(r) = n.transpose() * c.J3;
+    const Eigen::Vector3d centre = point_position(data, elbow.link, elbow.point);
+    c.C[r] = n.dot(centre - c.surface[k]) - elbow.radius;
+    c.Cd[r] = c.Jc.row(r).dot(qd);
+    c.gamma[r] = -n.dot(point_jacobian_dot_qd(data, elbow.link, elbow.point, qd));
+    if (model.effects.stabilization == Stabilization::baumgarte)
+      c.gamma[r] -= 2.0 / T * c.Cd[r] + c.C[r] / (T * T);
+    c.Jf.row(r) = c.Jc.row(r);
+    if (model.effects.friction) friction_row(model, data, r, elbow, n, qd);
+  }
+}
+
+}  // namespace elbowsim

@@ -1,0 +1,108 @@
+#include "engine/control/inverse_kinematics.hpp"
+
+#include <Eigen/SVD>
+
+#include "engine/dynamics/kinematics.hpp"
+
+namespace elbowsim {
+
+TablePlane table_plane_under(const Model& model, const Eigen::Vector3d& p) {
+  int best = 0;
+  double best_distance = 1e300;
+  for (std::size_t b = 0; b < model.table.size(); ++b) {
+    const TableBox& box = model.table[b];
+    const Eigen::Vector3d local = box.rotation.transpose() * (p - box.center);
+    const bool over = std::abs(local.x()) <= box.size.x() / 2 && std::abs(local.y()) <= box.size.y() / 2;
+    const double d = over ? -1.0 : (p - box.center).norm();
+    if (d < best_distance) best_distance = d, best = int(b);
+  }
+  TablePlane plane;
+  if (model.table.empty()) return plane;
+  const TableBox& box = model.table[best];
+  plane.normal = box.rotation.col(2);
+  plane.point = box.center + box.rotation * Eigen::Vector3d(0, 0, box.size.z() / 2);
+  return plane;
+}
+
+namespace {
+
+struct Rows {
+  Eigen::MatrixXd J;
+  Eigen::VectorXd e;
+};
+
+// Hand rows (3) then one row per elbow: e = target - current.
+void build_rows(const Model& model, Data& data, const IkProblem& problem, Rows& rows) {
+  const int p = int(problem.elbows.size());
+  rows.J.resize(3 + p, model.dof);
+  rows.e.resize(3 + p);
+  Matrix3Xd J3(3, model.dof);
+  point_jacobian(model, data, model.hand_link, model.hand_point, J3);
+  rows.J.topRows(3) = J3;
+  rows.e.head(3) = problem.hand - point_position(data, model.hand_link, model.hand_point);
+  for (int k = 0; k < p; ++k) {
+    const Elbow& elbow = model.elbows[problem.elbows[k]];
+    const TablePlane& plane = problem.planes[k];
+    point_jacobian(model, data, elbow.link, elbow.point, J3);
+    rows.J.row(3 + k) = plane.normal.transpose() * J3;
+    const double C = plane.normal.dot(point_position(data, elbow.link, elbow.point) - plane.point) - elbow.radius;
+    rows.e[3 + k] = problem.clearance - C;
+  }
+}
+
+// One step: damped pseudo-inverse of J applied to e, plus `gain` of the
+// posture error projected into the null space of the rows.
+Eigen::VectorXd ik_step(const Rows& rows, const Eigen::VectorXd& to_posture, double gain, bool damp) {
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(rows.J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  const double smax = s.size() ? s[0] : 0.0, eps = 1e-3 * smax, lambda_max = 1e-2 * smax;
+  Eigen::VectorXd dq = Eigen::VectorXd::Zero(rows.J.cols());
+  Eigen::MatrixXd range(rows.J.cols(), 0);
+  for (Eigen::Index i = 0; i < s.size(); ++i) {
+    if (s[i] <= 1e-12 * smax) continue;  // a row with no reach (e.g. y of a planar arm)
+    double lambda2 = 0;
+    if (damp && s[i] < eps) lambda2 = (1 - (s[i] / eps) * (s[i] / eps)) * lambda_max * lambda_max;
+    dq += s[i] / (s[i] * s[i] + lambda2) * svd.matrixU().col(i).dot(rows.e) * svd.matrixV().col(i);
+    range.conservativeResize(Eigen::NoChange, range.cols() + 1);
+    range.rightCols(1) = svd.matrixV().col(i);
+  }
+  if (gain > 0) dq += gain * (to_posture - range * (range.transpose() * to_posture));
+  return dq;
+}
+
+void clamp_limits(const IkProblem& problem, Eigen::VectorXd& q) {
+  if (problem.q_min.size() == q.size()) q = q.cwiseMax(problem.q_min);
+  if (problem.q_max.size() == q.size()) q = q.cwiseMin(problem.q_max);
+}
+
+}  // namespace
+
+IkResult solve_ik(const Model& model, Data& data, const IkProblem& problem,
+                  const Eigen::VectorXd& q0) {
+  IkResult result;
+  result.q = q0;
+  Rows rows;
+  // Phase 1: rows and posture together; phase 2: polish the rows alone.
+  for (int phase = 0; phase < 2; ++phase) {
+    const int max_iterations = phase == 0 ? 100 : 20;
+    for (int it = 0; it < max_iterations; ++it, ++result.iterations) {
+      forward_kinematics(model, data, result.q);
+      build_rows(model, data, problem, rows);
+      const double gain = phase == 0 ? problem.posture_gain : 0.0;
+      const Eigen::VectorXd to_posture =
+          problem.posture.size() == result.q.size() ? Eigen::VectorXd(problem.posture - result.q)
+                                                    : Eigen::VectorXd::Zero(result.q.size());
+      const Eigen::VectorXd dq = ik_step(rows, to_posture, gain, phase == 0);
+      if (rows.e.norm() < 1e-13 && dq.norm() < 1e-12) break;
+      result.q += dq;
+      clamp_limits(problem, result.q);
+    }
+  }
+  forward_kinematics(model, data, result.q);
+  build_rows(model, data, problem, rows);
+  result.hand_residual = rows.e.head(3).norm();
+  result.elbow_residual = rows.e.size() > 3 ? rows.e.tail(rows.e.size() - 3).cwiseAbs().maxCoeff() : 0.0;
+  return result;
+}
+
+}  // namespace elbowsim

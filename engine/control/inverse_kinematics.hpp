@@ -1,0 +1,54 @@
+// Constrained inverse kinematics for the hand task: the hand on its target
+// and the declared elbows on the table (or at a clearance above it) as
+// equality rows; the remaining redundancy goes to a preferred posture.
+#pragma once
+
+#include <stdexcept>
+#include <vector>
+
+#include "engine/data.hpp"
+
+namespace elbowsim {
+
+// A flat table face under a point: outward unit normal and a point on it.
+struct TablePlane {
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+};
+
+// The top face (box +z) of the table box whose footprint holds `p`, or of the
+// box whose centre is nearest when none does.
+TablePlane table_plane_under(const Model& model, const Eigen::Vector3d& p);
+
+struct IkProblem {
+  Eigen::Vector3d hand;            // [m] world target of the hand point
+  std::vector<int> elbows;         // elbow indices kept at `clearance` above their plane
+  std::vector<TablePlane> planes;  // one per elbow
+  double clearance = 0.0;          // [m] sphere surface above the table
+  Eigen::VectorXd posture;         // [n] preferred q
+  double posture_gain = 1.0;       // null-space step toward the posture per iteration
+  Eigen::VectorXd q_min, q_max;    // [n] limits, or empty
+};
+
+struct IkResult {
+  Eigen::VectorXd q;
+  double hand_residual = 0;   // [m] |target - hand|
+  double elbow_residual = 0;  // [m] max |C_k - clearance|
+  int iterations = 0;
+};
+
+// Gauss-Newton with a damped least-squares pseudo-inverse from the SVD of
+// the row Jacobian (damping grows as the smallest singular value falls
+// below 1e-3 of the largest, as near a stretched arm), plus the posture step
+// projected into the exact null space of the rows; a last few undamped,
+// posture-free iterations polish the rows to ~1e-13 m. Starts from q0.
+IkResult solve_ik(const Model& model, Data& data, const IkProblem& problem,
+                  const Eigen::VectorXd& q0);
+
+// The task cannot be followed: names the time and the distance missed.
+class PlanError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace elbowsim

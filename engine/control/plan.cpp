@@ -1,0 +1,139 @@
+#include "engine/control/plan.hpp"
+
+#include <sstream>
+
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/contact/lcp.hpp"
+#include "engine/dynamics/rnea.hpp"
+
+namespace elbowsim {
+
+bool needs_plan(const Model& model) {
+  return model.task.path != HandTask::Path::none ||
+         model.controller.kind != ControllerSpec::Kind::open_loop;
+}
+
+namespace {
+
+std::string where(double t, const Eigen::Vector3d& p) {
+  std::ostringstream s;
+  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ") m at t = " << t << " s";
+  return s.str();
+}
+
+IkProblem ik_problem(const Model& model, Data& data, const Eigen::VectorXd& q0) {
+  IkProblem problem;
+  forward_kinematics(model, data, q0);
+  for (const std::string& name : model.task.elbows)
+    for (int k = 0; k < int(model.elbows.size()); ++k)
+      if (model.elbows[k].name == name) {
+        problem.elbows.push_back(k);
+        const Elbow& e = model.elbows[k];
+        problem.planes.push_back(table_plane_under(model, point_position(data, e.link, e.point)));
+      }
+  problem.clearance = model.task.elbow_clearance;
+  problem.posture = model.task.posture.size() == model.dof ? model.task.posture : q0;
+  problem.posture_gain = model.task.posture_weight;
+  problem.q_min = model.task.q_min;
+  problem.q_max = model.task.q_max;
+  return problem;
+}
+
+void check(const IkResult& r, double t, const Eigen::Vector3d& target) {
+  if (r.hand_residual > 1e-6) {
+    std::ostringstream msg;
+    msg << "hand target " << where(t, target) << " is out of reach: missed by " << r.hand_residual << " m";
+    throw PlanError(msg.str());
+  }
+  if (r.elbow_residual > 1e-6) {
+    std::ostringstream msg;
+    msg << "the task's elbows cannot stay in place at t = " << t << " s while the hand is at "
+        << where(t, target) << ": missed by " << r.elbow_residual << " m";
+    throw PlanError(msg.str());
+  }
+}
+
+// Joint rates and accelerations by central differences of the IK samples.
+void differentiate(Plan& plan) {
+  const std::size_t N = plan.q.size();
+  const double h = plan.dt;
+  plan.qd.assign(N, Eigen::VectorXd::Zero(plan.q[0].size()));
+  plan.qdd = plan.qd;
+  for (std::size_t k = 1; k + 1 < N; ++k) {
+    plan.qd[k] = (plan.q[k + 1] - plan.q[k - 1]) / (2 * h);
+    plan.qdd[k] = (plan.q[k + 1] - 2 * plan.q[k] + plan.q[k - 1]) / (h * h);
+  }
+}
+
+// The torques that make the plan happen, with the table taking either the
+// force that minimises |tau| (f >= 0) or the commanded force; then through
+// the motor model to voltages: v = R i + Km qd (+ L di/dt), i = tau / Km.
+void feed_forward(const Model& model, Data& data, const IkProblem& problem, Plan& plan) {
+  const int n = model.dof, p = model.effects.contact && problem.clearance == 0 ? int(problem.elbows.size()) : 0;
+  const std::size_t N = plan.q.size();
+  std::vector<Eigen::VectorXd> current(N);
+  plan.v_ff.assign(N, Eigen::VectorXd::Zero(n));
+  plan.f_ff.assign(N, Eigen::VectorXd::Zero(p));
+  Matrix3Xd J3(3, n);
+  for (std::size_t k = 0; k < N; ++k) {
+    forward_kinematics(model, data, plan.q[k]);
+    Eigen::VectorXd tau(n);
+    inverse_dynamics(model, data, plan.qd[k], plan.qdd[k], {}, tau);
+    point_jacobian(model, data, model.hand_link, model.hand_point, J3);
+    tau -= J3.transpose() * model.hand_load.force;
+    if (p > 0) {
+      Eigen::MatrixXd Jc(p, n);
+      for (int r = 0; r < p; ++r) {
+        const Elbow& e = model.elbows[problem.elbows[r]];
+        point_jacobian(model, data, e.link, e.point, J3);
+        Jc.row(r) = problem.planes[r].normal.transpose() * J3;
+      }
+      Eigen::VectorXd f = Eigen::VectorXd::Constant(p, model.controller.desired_force), w;
+      if (model.controller.kind != ControllerSpec::Kind::force) {
+        std::vector<bool> active(p, true);  // min |tau - Jc^T f|^2, f >= 0, as an LCP
+        solve_lcp(Jc * Jc.transpose(), -(Jc * tau), model.contact.rank_tolerance, 1e-12, f, w, active);
+      }
+      tau -= Jc.transpose() * f;
+      plan.f_ff[k] = f;
+    }
+    current[k] = model.has_motor() ? Eigen::VectorXd(tau.cwiseQuotient(model.km)) : tau;
+  }
+  if (!model.has_motor()) return;
+  for (std::size_t k = 0; k < N; ++k) {
+    plan.v_ff[k] = model.resistance.cwiseProduct(current[k]) + model.km.cwiseProduct(plan.qd[k]);
+    if (model.has_current_state() && k > 0 && k + 1 < N)
+      plan.v_ff[k] += model.inductance.cwiseProduct(current[k + 1] - current[k - 1]) / (2 * plan.dt);
+  }
+}
+
+}  // namespace
+
+std::shared_ptr<const Plan> make_plan(const Model& model) {
+  auto plan = std::make_shared<Plan>();
+  Data data(model);
+  const Eigen::VectorXd q_start =
+      model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
+  forward_kinematics(model, data, q_start);
+  const Eigen::Vector3d hand_start = point_position(data, model.hand_link, model.hand_point);
+  const IkProblem base = ik_problem(model, data, q_start);
+  plan->dt = model.options.step;
+  const long N = std::lround(model.options.duration / plan->dt) + 1;
+  Eigen::VectorXd q = q_start;
+  for (long k = 0; k < N; ++k) {
+    const double t = double(k) * plan->dt;
+    IkProblem problem = base;
+    problem.hand = hand_target(model.task, hand_start, t).p;
+    const IkResult r = solve_ik(model, data, problem, q);
+    check(r, t, problem.hand);
+    q = r.q;
+    plan->q.push_back(q);
+    plan->hand.push_back(problem.hand);
+  }
+  differentiate(*plan);
+  feed_forward(model, data, base, *plan);
+  for (std::size_t r = 0; r < base.elbows.size(); ++r)
+    if (model.effects.contact && base.clearance == 0) plan->resting.push_back(base.elbows[r]);
+  return plan;
+}
+
+}  // namespace elbowsim

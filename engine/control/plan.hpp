@@ -1,0 +1,45 @@
+// The plan: the hand task turned into desired joint motion (by constrained
+// inverse kinematics) and the feed-forward voltages that produce it,
+// sampled on the simulation's step before the run starts.
+#pragma once
+
+#include <algorithm>
+#include <memory>
+#include <vector>
+
+#include "engine/data.hpp"
+#include "engine/control/inverse_kinematics.hpp"
+
+namespace elbowsim {
+
+struct Plan {
+  double dt = 0;                        // [s] sample spacing
+  std::vector<Eigen::VectorXd> q, qd, qdd;  // [samples][n] desired joint motion
+  std::vector<Eigen::Vector3d> hand;    // [samples] desired hand position [m]
+  std::vector<Eigen::VectorXd> v_ff;    // [samples][n] feed-forward voltage [V] (pd_feedforward, force)
+  std::vector<Eigen::VectorXd> f_ff;    // [samples][p] elbow forces the feed-forward assumes [N]
+  std::vector<int> resting;             // elbows the plan keeps on the table (clearance 0, contact on)
+
+  // Linear interpolation of sampled vectors at time t (clamped to the
+  // ends) into `out`, which has the right size: allocates nothing.
+  void at(const std::vector<Eigen::VectorXd>& samples, double t, Eigen::Ref<Eigen::VectorXd> out) const {
+    if (samples.size() == 1) {
+      out = samples[0];
+      return;
+    }
+    const double u = std::clamp(t / dt, 0.0, double(samples.size() - 1));
+    const std::size_t k = std::min(std::size_t(u), samples.size() - 2);
+    const double w = u - double(k);
+    out = (1 - w) * samples[k] + w * samples[k + 1];
+  }
+};
+
+// Builds the plan for the model's task over its duration. Throws PlanError
+// ("hand target ... at t = 1.25 s is out of reach: missed by 0.031 m") when
+// the task cannot be followed.
+std::shared_ptr<const Plan> make_plan(const Model& model);
+
+// Whether the run needs a plan (a task, or a controller that tracks one).
+bool needs_plan(const Model& model);
+
+}  // namespace elbowsim

@@ -1,0 +1,20 @@
+// Stored energy of the arm and motors. Dissipated and supplied energy are
+// integrated along with the state (state_vector.hpp, derivative.cpp).
+#pragma once
+
+#include "engine/data.hpp"
+
+namespace elbowsim {
+
+// Fills the stored terms of `out` (kinetic_links, kinetic_rotors, potential,
+// magnetic) for rates qd and motor currents; needs forward_kinematics(q).
+// Potential energy is -sum m_i g.c_i (zero when gravity is off).
+void stored_energy(const Model& model, const Data& data, ConstVec qd, ConstVec current,
+                   EnergyTerms& out);
+
+// (E_in + E_normal + E_projection) - (E_joule + E_viscous + E_friction +
+// E_impact) - (E_stored - E_stored(0)): zero for exact integration, so it
+// measures the integration error.
+double balance_residual(const EnergyTerms& now, const EnergyTerms& initial);
+
+}  // namespace elbowsim

@@ -1,0 +1,68 @@
+#include "engine/dynamics/kinematics.hpp"
+
+#include <Eigen/Geometry>
+
+namespace elbowsim {
+
+void forward_kinematics(const Model& model, Data& data, ConstVec q) {
+  Eigen::Matrix3d parent_rotation = model.base.linear();
+  Eigen::Vector3d parent_origin = model.base.translation();
+  for (int i = 0; i < model.dof; ++i) {
+    const Joint& joint = model.joints[i];
+    const Link& link = model.links[i];
+    // Link frame i = parent frame * fixed origin * rotation about the axis by q_i.
+    const Eigen::Matrix3d joint_frame = parent_rotation * joint.origin_rotation;
+    data.origin[i] = parent_origin + parent_rotation * joint.origin_position;
+    data.rotation[i] = joint_frame * Eigen::AngleAxisd(q[i], joint.axis).toRotationMatrix();
+    data.axis[i] = joint_frame * joint.axis;  // the axis is fixed by its own rotation
+    data.com[i] = data.origin[i] + data.rotation[i] * link.com;
+    data.inertia[i] = data.rotation[i] * link.inertia * data.rotation[i].transpose();
+    parent_rotation = data.rotation[i];
+    parent_origin = data.origin[i];
+  }
+}
+
+Eigen::Vector3d point_position(const Data& data, int link, const Eigen::Vector3d& point) {
+  return data.origin[link] + data.rotation[link] * point;
+}
+
+void point_jacobian(const Model& model, const Data& data, int link, const Eigen::Vector3d& point,
+                    Eigen::Ref<Matrix3Xd> J) {
+  const Eigen::Vector3d r = point_position(data, link, point);
+  for (int j = 0; j < model.dof; ++j) {
+    if (j <= link)
+      J.col(j) = data.axis[j].cross(r - data.origin[j]);
+    else
+      J.col(j).setZero();
+  }
+}
+
+Eigen::Vector3d point_velocity(const Data& data, int link, const Eigen::Vector3d& point,
+                               ConstVec qd) {
+  const Eigen::Vector3d r = point_position(data, link, point);
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  for (int j = 0; j <= link; ++j) v += qd[j] * data.axis[j].cross(r - data.origin[j]);
+  return v;
+}
+
+// Outward recursion of the Newton-Euler velocity/acceleration pass with
+// qdd = 0: omega_i = omega_{i-1} + z_i qd_i, omegadot_i = omegadot_{i-1} +
+// omega_{i-1} x z_i qd_i, and the origin acceleration carried along the links.
+Eigen::Vector3d point_jacobian_dot_qd(const Data& data, int link, const Eigen::Vector3d& point,
+                                      ConstVec qd) {
+  Eigen::Vector3d omega = Eigen::Vector3d::Zero(), omega_dot = Eigen::Vector3d::Zero();
+  Eigen::Vector3d acc = Eigen::Vector3d::Zero();
+  for (int i = 0; i <= link; ++i) {
+    if (i > 0) {
+      const Eigen::Vector3d d = data.origin[i] - data.origin[i - 1];
+      acc += omega_dot.cross(d) + omega.cross(omega.cross(d));
+    }
+    const Eigen::Vector3d w_joint = data.axis[i] * qd[i];
+    omega_dot += omega.cross(w_joint);
+    omega += w_joint;
+  }
+  const Eigen::Vector3d d = point_position(data, link, point) - data.origin[link];
+  return acc + omega_dot.cross(d) + omega.cross(omega.cross(d));
+}
+
+}  // namespace elbowsim

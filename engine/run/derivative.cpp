@@ -1,0 +1,95 @@
+#include "engine/run/derivative.hpp"
+
+#include "engine/contact/constrained_dynamics.hpp"
+#include "engine/contact/constraint_rows.hpp"
+#include "engine/dynamics/crba.hpp"
+#include "engine/dynamics/forward_dynamics.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/dynamics/walker_orin.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/dynamics/motor.hpp"
+#include "engine/run/state_layout.hpp"
+
+namespace elbowsim {
+
+void stiff_rates(const Model& model, Eigen::Ref<Eigen::ArrayXd> lambda) {
+  const StateLayout s(model);
+  lambda.setZero();
+  if (s.current >= 0)
+    lambda.segment(s.current, s.n) = -model.resistance.array() / model.inductance.array();
+}
+
+namespace {
+
+// Powers that feed the energy integrals: electrical input, Joule loss, viscous loss.
+void energy_rates(const Model& model, const Data& data, ConstVec qd, Eigen::Ref<Eigen::VectorXd> out) {
+  if (model.has_motor()) {
+    out[0] = data.voltage.dot(data.current);
+    out[1] = data.current.dot(model.resistance.cwiseProduct(data.current));
+  } else {
+    out[0] = data.actuation.dot(qd);
+    out[1] = 0.0;
+  }
+  out[2] = model.effects.damping ? qd.dot(model.viscous.cwiseProduct(qd)) : 0.0;
+  if (!model.effects.contact) return;
+  // Table power on the arm: fn^T Jf qd = fn^T Jc qd (normal work, zero while
+  // C holds) - fn^T (Jc - Jf) qd (sliding friction loss, >= 0).
+  const ContactData& c = data.contact;
+  if (c.active.empty()) {
+    out[3] = out[4] = 0.0;
+    return;
+  }
+  const double normal = c.fn.dot(c.Cd);
+  out[3] = normal - c.fn.dot(c.Jf * qd);
+  out[4] = normal;
+}
+
+// A constant world force F at the hand acts as joint torques J_hand^T F.
+void add_hand_force(const Model& model, Data& data) {
+  point_jacobian(model, data, model.hand_link, model.hand_point, data.contact.J3);
+  data.actuation.noalias() += data.contact.J3.transpose() * model.hand_load.force;
+}
+
+// (M + Jm) qdd = tau - B_J + Jf^T fn with Jc qdd = gamma for the resting
+// elbows (eq. 30-33); plain forward dynamics when none rests.
+void arm_accelerations(const Model& model, Data& data, ConstVec qd) {
+  if (!model.effects.contact || data.contact.active.empty()) {
+    forward_dynamics(model, data, qd, data.actuation, data.qdd);
+    return;
+  }
+  if (model.options.dynamics == DynamicsMethod::walker_orin)
+    mass_matrix_walker_orin(model, data);
+  else
+    mass_matrix_crba(model, data);  // aba has no M to hand: contacts factor CRBA's
+  bias_torques(model, data, qd);
+  constraint_rows(model, data, qd);
+  solve_constrained(model, data, data.actuation);
+}
+
+}  // namespace
+
+void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
+                    Eigen::Ref<Eigen::VectorXd> N) {
+  const StateLayout s(model);
+  const auto q = x.segment(s.q(), s.n);
+  const auto qd = x.segment(s.qd(), s.n);
+  forward_kinematics(model, data, q);
+  if (s.current >= 0)
+    motor_stage(model, data, t, q, qd, x.segment(s.current, s.n));
+  else
+    motor_stage(model, data, t, q, qd, data.current);
+  if (s.external >= 0) add_hand_force(model, data);
+  arm_accelerations(model, data, qd);
+
+  N.segment(s.q(), s.n) = qd;
+  N.segment(s.qd(), s.n) = data.qdd;
+  // Electrical eq. (16): L di/dt = v - R i - Km qd; the -R/L i part is in lambda.
+  if (s.current >= 0)
+    N.segment(s.current, s.n) =
+        (data.voltage - model.km.cwiseProduct(qd)).cwiseQuotient(model.inductance);
+  energy_rates(model, data, qd, N.segment(s.energy, s.energy_terms));
+  if (s.external >= 0)  // power of the hand force: F . v_hand
+    N[s.external] = model.hand_load.force.dot(data.contact.J3 * qd);
+}
+
+}  // namespace elbowsim

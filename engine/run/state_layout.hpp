@@ -1,0 +1,28 @@
+// Layout of the integrated state
+//   x = [q; qd; i (motor: full); E_in; E_joule; E_viscous; E_friction, E_normal (contact); E_external (hand force)].
+// The energy integrals ride along in x so they are integrated to the same
+// order as the motion they account for.
+#pragma once
+
+#include "engine/model.hpp"
+
+namespace elbowsim {
+
+struct StateLayout {
+  explicit StateLayout(const Model& model)
+      : n(model.dof), current(model.has_current_state() ? 2 * n : -1),
+        energy(model.has_current_state() ? 3 * n : 2 * n),
+        energy_terms((model.effects.contact ? 5 : 3) + (model.hand_load.force.isZero() ? 0 : 1)),
+        size(energy + energy_terms),
+        external(model.hand_load.force.isZero() ? -1 : size - 1) {}
+  int n;
+  int q() const { return 0; }
+  int qd() const { return n; }
+  int current;  // first current index, -1 without current state
+  int energy;   // index of E_in; E_joule, E_viscous (and E_friction, E_normal) follow
+  int energy_terms;
+  int size;
+  int external;  // index of the hand-force work integral, -1 without a hand force
+};
+
+}  // namespace elbowsim
