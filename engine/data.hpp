@@ -61,7 +61,7 @@ struct ContactData {
   double projection_energy = 0;  // [J] stored-energy change made by projection so far
 };
 
-struct Plan;
+struct Controller;
 
 struct Data {
   explicit Data(const Model& model);
@@ -114,7 +114,7 @@ struct Data {
   ContactData contact;
 
   // --- task and controller ---------------------------------------------------
-  std::shared_ptr<const Plan> plan;  // desired motion (plan.hpp), when the scene has a task
+  std::shared_ptr<const Controller> controller;  // tracking controller and its plan; null: open loop
   Eigen::VectorXd q_desired, qd_desired, v_feedforward;  // [n] the plan at the stage time
 
   EnergyTerms energy;           // at time t

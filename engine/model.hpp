@@ -8,9 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/control/controller.hpp"
 #include "engine/control/inputs.hpp"
-#include "engine/control/task.hpp"
 
 namespace elbowsim {
 
@@ -102,6 +100,13 @@ struct Motor {
   double dm() const { return gear_friction * gear_ratio * gear_ratio; }
 };
 
+// Constant load at the hand: a point mass carried at the hand point and/or a
+// constant world force on it (e.g. pressing a pen).
+struct HandLoad {
+  double mass = 0.0;                                  // [kg] >= 0
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();    // [N] world
+};
+
 struct Options {
   double duration = 1.0;  // [s]
   double step = 1e-3;     // [s] fixed integration step
@@ -138,9 +143,8 @@ struct Model {
   Options options;
   OpenLoopInputs inputs;  // voltages (motor on) or torques (motor none)
 
-  // The paper's experiment: a hand task, the controller that tracks it, a load.
-  HandTask task;
-  ControllerSpec controller;
+  // A payload at the hand (part of the plant; the experiment's task and
+  // controller live beside the model, control/experiment.hpp).
   HandLoad hand_load;
   double hand_mass_added = 0;  // [kg] of hand_load.mass already merged into the hand link by finalize()
 

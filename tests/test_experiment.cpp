@@ -14,8 +14,8 @@ TEST_CASE("IK: hand on its targets and the elbow on the table (or at its clearan
   for (bool elbow_on : {true, false}) {
     WritingArm arm;
     arm.elbow_on = elbow_on;
-    const Model m = arm.model();
-    const auto plan = make_plan(m);
+    const auto [m, x] = arm.scene();
+    const auto plan = make_plan(m, x);
     Data data(m);
     const Elbow& elbow = m.elbows[0];
     const double table_top = m.table[0].center.z() + m.table[0].size.z() / 2;
@@ -24,7 +24,7 @@ TEST_CASE("IK: hand on its targets and the elbow on the table (or at its clearan
       forward_kinematics(m, data, plan->q[k]);
       hand_worst = std::max(hand_worst, (point_position(data, m.hand_link, m.hand_point) - plan->hand[k]).norm());
       const double gap = point_position(data, elbow.link, elbow.point).z() - elbow.radius - table_top;
-      elbow_worst = std::max(elbow_worst, std::abs(gap - m.task.elbow_clearance));
+      elbow_worst = std::max(elbow_worst, std::abs(gap - x.task.elbow_clearance));
     }
     CAPTURE(elbow_on);
     MESSAGE("IK residuals: hand ", hand_worst, " m, elbow ", elbow_worst, " m");
@@ -37,10 +37,10 @@ TEST_CASE("IK: hand on its targets and the elbow on the table (or at its clearan
 
 TEST_CASE("IK: an unreachable target is a clear error with the time and the distance missed") {
   WritingArm arm;
-  Model m = arm.model();
-  m.task.points[1] = m.task.points[0] + Eigen::Vector3d(1.0, 0, 0);  // 1 m further: out of reach
+  auto [m, x] = arm.scene();
+  x.task.points[1] = x.task.points[0] + Eigen::Vector3d(1.0, 0, 0);  // 1 m further: out of reach
   try {
-    make_plan(m);
+    make_plan(m, x);
     FAIL("no error");
   } catch (const PlanError& e) {
     const std::string msg = e.what();
@@ -56,7 +56,8 @@ TEST_CASE("PD + feed-forward tracks the slow line; PD alone sags under gravity, 
     WritingArm arm;
     arm.elbow_on = elbow_on;
     arm.controller = kind;
-    const RunResult r = simulate(arm.model(), RunOptions{10, {}});
+    const auto [model, experiment] = arm.scene();
+    const RunResult r = simulate(model, experiment, RunOptions{10, {}});
     REQUIRE(r.completed);
     return r.metrics;
   };
@@ -78,10 +79,10 @@ TEST_CASE("PD + feed-forward tracks the slow line; PD alone sags under gravity, 
 TEST_CASE("force control holds the commanded elbow force in a quasi-static motion") {
   WritingArm arm;
   arm.controller = ControllerSpec::Kind::force;
-  Model m = arm.model();
+  auto [m, x] = arm.scene();
   for (double desired : {2.0, 5.0, 10.0}) {
-    m.controller.desired_force = desired;
-    const RunResult r = simulate(m, RunOptions{10, {}});
+    x.controller.desired_force = desired;
+    const RunResult r = simulate(m, x, RunOptions{10, {}});
     REQUIRE(r.completed);
     CAPTURE(desired);
     // The band: 1 % of the command. The estimate comes from the algebraic
@@ -95,8 +96,9 @@ TEST_CASE("force control holds the commanded elbow force in a quasi-static motio
 TEST_CASE("the experiment: resting the elbow takes less electrical energy for the same accuracy") {
   WritingArm on_arm, off_arm;
   off_arm.elbow_on = false;
-  const RunResult on = simulate(on_arm.model(), RunOptions{10, {}});
-  const RunResult off = simulate(off_arm.model(), RunOptions{10, {}});
+  const ExperimentScene on_scene = on_arm.scene(), off_scene = off_arm.scene();
+  const RunResult on = simulate(on_scene.model, on_scene.experiment, RunOptions{10, {}});
+  const RunResult off = simulate(off_scene.model, off_scene.experiment, RunOptions{10, {}});
   MESSAGE("E_in elbow on ", on.metrics.energy_in, " J, off ", off.metrics.energy_in, " J; RMS hand error ",
           on.metrics.hand_error_rms, " m vs ", off.metrics.hand_error_rms, " m");
   CHECK(on.metrics.energy_in < off.metrics.energy_in);

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include "engine/run/simulator.hpp"
+#include "engine/control/controller.hpp"
 #include "engine/dynamics/motor.hpp"
 #include "support/approx.hpp"
 #include "support/models.hpp"
@@ -43,7 +44,8 @@ TEST_CASE("motor: stalled rotor draws i = V/R and gives torque Km V/R") {
   const Eigen::VectorXd qd = Eigen::VectorXd::Zero(1);
   // Steady state of L di/dt = v - R i at qd = 0.
   const Eigen::VectorXd i = Eigen::VectorXd::Constant(1, 6.0 / 2.0);
-  motor_stage(model, data, 0.0, qd, qd, i);
+  command(model, data, 0.0, qd, qd);
+  motor_stage(model, data, qd, i);
   CHECK(data.current_rate[0] == doctest::Approx(0.0));
   CHECK(data.actuation[0] == doctest::Approx(0.03 * 50 * 6.0 / 2.0).epsilon(1e-14));
   // And a held rotor driven through the electrical transient settles there.
@@ -88,7 +90,9 @@ TEST_CASE("motor: quasi-static and full models agree as L -> 0") {
 TEST_CASE("motor: voltage saturates at the limit") {
   const Model model = spinner(MotorModel::quasi_static, 100.0);
   Data data(model);
-  motor_stage(model, data, 0.0, Eigen::VectorXd::Zero(1), Eigen::VectorXd::Zero(1), data.current);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(1);
+  command(model, data, 0.0, zero, zero);
+  motor_stage(model, data, zero, data.current);
   CHECK(data.voltage[0] == 24.0);
   CHECK(data.current[0] == doctest::Approx(12.0));
 }

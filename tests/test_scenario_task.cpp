@@ -34,18 +34,18 @@ std::string scene_with(const char* lines) { return kScene + yaml(lines); }
 // Valid scenes
 
 TEST_CASE("task: defaults without the sections") {
-  const Model m = load(kTwoLink).model;
-  CHECK(m.task.path == HandTask::Path::none);
-  CHECK(m.controller.kind == ControllerSpec::Kind::open_loop);
-  CHECK(approx(m.controller.kp, Eigen::Vector2d(50, 50)));  // expanded to one per joint
-  CHECK(approx(m.controller.kd, Eigen::Vector2d(2, 2)));
-  CHECK(m.controller.desired_force == 5.0);
-  CHECK(m.hand_load.mass == 0.0);
-  CHECK(approx(m.hand_load.force, Eigen::Vector3d::Zero()));
+  const Scenario m = load(kTwoLink);
+  CHECK(m.experiment.task.path == HandTask::Path::none);
+  CHECK(m.experiment.controller.kind == ControllerSpec::Kind::open_loop);
+  CHECK(approx(m.experiment.controller.kp, Eigen::Vector2d(50, 50)));  // expanded to one per joint
+  CHECK(approx(m.experiment.controller.kd, Eigen::Vector2d(2, 2)));
+  CHECK(m.experiment.controller.desired_force == 5.0);
+  CHECK(m.model.hand_load.mass == 0.0);
+  CHECK(approx(m.model.hand_load.force, Eigen::Vector3d::Zero()));
 }
 
 TEST_CASE("task: a line from the start pose, kept elbow, posture, limits, pd_feedforward") {
-  const Model m = load(scene_with(R"(
+  const Scenario m = load(scene_with(R"(
 initial: {q: [0.1, 0.2]}
 task:
   path: line
@@ -59,9 +59,8 @@ task:
   joint_limits: {min: [-1, -2], max: [1, 2]}
 controller: {type: pd_feedforward, kp: [40, 30], kd: 1.5}
 hand_load: {mass: 0.2, force: [0, 0, -1]}
-)"))
-                      .model;
-  const HandTask& t = m.task;
+)"));
+  const HandTask& t = m.experiment.task;
   CHECK(t.path == HandTask::Path::line);
   CHECK(t.timing == HandTask::Timing::minimum_jerk);
   CHECK(t.start_delay == 0.5);
@@ -76,52 +75,49 @@ hand_load: {mass: 0.2, force: [0, 0, -1]}
   CHECK(t.posture_weight == 0.1);
   CHECK(approx(t.q_min, Eigen::Vector2d(-1, -2)));
   CHECK(approx(t.q_max, Eigen::Vector2d(1, 2)));
-  CHECK(m.controller.kind == ControllerSpec::Kind::pd_feedforward);
-  CHECK(approx(m.controller.kp, Eigen::Vector2d(40, 30)));
-  CHECK(approx(m.controller.kd, Eigen::Vector2d(1.5, 1.5)));
-  CHECK(m.hand_load.mass == 0.2);
-  CHECK(approx(m.hand_load.force, Eigen::Vector3d(0, 0, -1)));
+  CHECK(m.experiment.controller.kind == ControllerSpec::Kind::pd_feedforward);
+  CHECK(approx(m.experiment.controller.kp, Eigen::Vector2d(40, 30)));
+  CHECK(approx(m.experiment.controller.kd, Eigen::Vector2d(1.5, 1.5)));
+  CHECK(m.model.hand_load.mass == 0.2);
+  CHECK(approx(m.model.hand_load.force, Eigen::Vector3d(0, 0, -1)));
 }
 
 TEST_CASE("task: circle, waypoints, hold; force control") {
-  const Model c = load(scene_with(R"(
+  const Scenario c = load(scene_with(R"(
 task: {path: circle, center: [0.4, 0, 0.1], radius: 0.03, normal: [0, 2, 0], start_angle: 1.0,
        elbows: [elbow], posture: [0.3, -0.3]}
 controller: {type: force, desired_force: 8}
-)"))
-                      .model;
-  CHECK(c.task.path == HandTask::Path::circle);
-  CHECK(c.task.points.empty());
-  CHECK(approx(c.task.center, Eigen::Vector3d(0.4, 0, 0.1)));
-  CHECK(c.task.radius == 0.03);
-  CHECK(approx(c.task.normal, Eigen::Vector3d(0, 1, 0)));  // normalized
-  CHECK(c.task.start_angle == 1.0);
-  CHECK(approx(c.task.posture, Eigen::Vector2d(0.3, -0.3)));
-  CHECK(c.controller.kind == ControllerSpec::Kind::force);
-  CHECK(c.controller.desired_force == 8.0);
+)"));
+  CHECK(c.experiment.task.path == HandTask::Path::circle);
+  CHECK(c.experiment.task.points.empty());
+  CHECK(approx(c.experiment.task.center, Eigen::Vector3d(0.4, 0, 0.1)));
+  CHECK(c.experiment.task.radius == 0.03);
+  CHECK(approx(c.experiment.task.normal, Eigen::Vector3d(0, 1, 0)));  // normalized
+  CHECK(c.experiment.task.start_angle == 1.0);
+  CHECK(approx(c.experiment.task.posture, Eigen::Vector2d(0.3, -0.3)));
+  CHECK(c.experiment.controller.kind == ControllerSpec::Kind::force);
+  CHECK(c.experiment.controller.desired_force == 8.0);
 
-  const Model w = load(two_link_with("task: {path: waypoints, points: [[0.4, 0, 0], [0.4, 0, 0.1], "
-                                     "[0.3, 0, 0.1]]}\n"))
-                      .model;
-  CHECK(w.task.points.size() == 3);
-  CHECK(w.task.q_min.size() == 0);  // no limits
+  const Scenario w = load(two_link_with("task: {path: waypoints, points: [[0.4, 0, 0], [0.4, 0, 0.1], "
+                                     "[0.3, 0, 0.1]]}\n"));
+  CHECK(w.experiment.task.points.size() == 3);
+  CHECK(w.experiment.task.q_min.size() == 0);  // no limits
 
-  const Model h = load(two_link_with("task: {path: hold}\ncontroller: {type: pd}\n")).model;
-  CHECK(h.task.path == HandTask::Path::hold);
-  CHECK(h.task.points.empty());  // hold the start
-  CHECK(h.controller.kind == ControllerSpec::Kind::pd);
+  const Scenario h = load(two_link_with("task: {path: hold}\ncontroller: {type: pd}\n"));
+  CHECK(h.experiment.task.path == HandTask::Path::hold);
+  CHECK(h.experiment.task.points.empty());  // hold the start
+  CHECK(h.experiment.controller.kind == ControllerSpec::Kind::pd);
 }
 
 TEST_CASE("task: elbow kept above the table with contact on; keys set from the command line") {
-  const Model m =
-      load(scene_with("task: {path: hold, elbows: [elbow], elbow_clearance: 0.05}\n")).model;
-  CHECK(m.effects.contact);
-  CHECK(m.task.elbow_clearance == 0.05);
-  const Model o = load(scene_with("task: {path: hold}\n"),
-                       {"task.duration=3", "controller.type=pd", "controller.kp=7"})
-                      .model;
-  CHECK(o.task.duration == 3.0);
-  CHECK(approx(o.controller.kp, Eigen::Vector2d(7, 7)));
+  const Scenario m =
+      load(scene_with("task: {path: hold, elbows: [elbow], elbow_clearance: 0.05}\n"));
+  CHECK(m.model.effects.contact);
+  CHECK(m.experiment.task.elbow_clearance == 0.05);
+  const Scenario o = load(scene_with("task: {path: hold}\n"),
+                       {"task.duration=3", "controller.type=pd", "controller.kp=7"});
+  CHECK(o.experiment.task.duration == 3.0);
+  CHECK(approx(o.experiment.controller.kp, Eigen::Vector2d(7, 7)));
 }
 
 // ---------------------------------------------------------------------------

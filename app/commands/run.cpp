@@ -65,7 +65,8 @@ struct RunOutcome {
 // value), with nothing recorded, so nothing to render or report.
 RunResult simulate_or_fail(const Scenario& scenario) {
   try {
-    return simulate(scenario.model, RunOptions{scenario.output.every, terminal_progress()});
+    return simulate(scenario.model, scenario.experiment,
+                    RunOptions{scenario.output.every, terminal_progress()});
   } catch (const PlanError& e) {
     RunResult failed;
     failed.failure = std::string("the hand task cannot be followed: ") + e.what();

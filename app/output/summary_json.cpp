@@ -94,7 +94,7 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   j["max_abs_balance_residual"] = result.max_abs_balance_residual;
   j["balance_residual_relative"] = e_in != 0 ? std::abs(result.balance_residual / e_in) : 0.0;
   j["metrics"] = metrics_json(m, result.metrics);
-  j["controller"] = to_string(m.controller.kind);
+  j["controller"] = to_string(scenario.experiment.controller.kind);
   j["contact"] = contact_json(m, result);
   j["warnings"] = result.warnings;
   return j;

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/control/experiment.hpp"
 #include "engine/model.hpp"
 #include "render/render_settings.hpp"
 
@@ -27,6 +28,7 @@ struct Scenario {
   std::string file;  // path it was loaded from
   std::string description;
   Model model;  // finalized (elbowsim::finalize called); model.initial from `initial:`
+  Experiment experiment;  // task: and controller: (the plant never reads them)
   OutputSettings output;
   RenderSettings render;  // how frames look; rendered when output.video or output.frames
   // The scenario as run: the file's YAML with the overrides applied. A run

@@ -101,8 +101,8 @@ Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>&
   model.options = read_simulation(root.require("simulation"), root.get("task"));
   model.initial = read_initial(root.get("initial"), model.dof);
   model.inputs = read_inputs(root.get("inputs"), model);
-  model.task = read_task(root.get("task"), model);
-  model.controller = read_controller(root.get("controller"), model);
+  s.experiment.task = read_task(root.get("task"), model);
+  s.experiment.controller = read_controller(root.get("controller"), model, s.experiment.task);
   model.hand_load = read_hand_load(root.get("hand_load"));
   s.output = read_output(root.get("output"), model.name);
   s.render = read_render(root.get("render"));

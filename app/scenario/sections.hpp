@@ -10,6 +10,7 @@
 
 #include "app/scenario/scenario.hpp"
 #include "app/scenario/yaml_reader.hpp"
+#include "engine/control/experiment.hpp"
 #include "engine/model.hpp"
 
 namespace elbowsim::loader {
@@ -46,9 +47,9 @@ void check_initial_penetration(const Value& root, const Model& model);
 
 // task, controller, hand_load (optional): the paper's experiment. Call after
 // model.elbows, model.table and model.initial are read; read_controller after
-// model.task. Controller gains are expanded to one per joint.
+// the task. Controller gains are expanded to one per joint.
 HandTask read_task(const Value& task, const Model& model);
-ControllerSpec read_controller(const Value& controller, const Model& model);
+ControllerSpec read_controller(const Value& controller, const Model& model, const HandTask& task);
 HandLoad read_hand_load(const Value& hand_load);
 
 // variants (optional): name -> overrides "key.path=value", in file order, each

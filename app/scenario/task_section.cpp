@@ -169,7 +169,7 @@ HandTask read_task(const Value& task, const Model& model) {
   return out;
 }
 
-ControllerSpec read_controller(const Value& controller, const Model& model) {
+ControllerSpec read_controller(const Value& controller, const Model& model, const HandTask& task) {
   ControllerSpec out;
   const int dof = model.dof;
   constexpr double kDefaultKp = 50.0, kDefaultKd = 2.0;  // [V/rad], [V s/rad]
@@ -190,7 +190,7 @@ ControllerSpec read_controller(const Value& controller, const Model& model) {
   if (out.kind == Kind::open_loop) return out;
   // A closed-loop controller tracks the task through the motors.
   const std::string kind = type.text();
-  if (model.task.path == Path::none)
+  if (task.path == Path::none)
     type.fail("controller " + kind +
               " needs a task: the task section is missing (give task: "
               "{path: ..., ...})");
@@ -199,7 +199,7 @@ ControllerSpec read_controller(const Value& controller, const Model& model) {
               " drives motor voltages: needs effects.motor quasi_static "
               "or full (got none)");
   if (out.kind != Kind::force) return out;
-  if (model.task.elbows.empty())
+  if (task.elbows.empty())
     type.fail(
         "force control commands the elbow force: needs task.elbows (the elbows kept on "
         "the table)");

@@ -13,6 +13,7 @@
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/contact/lcp.hpp"
 #include "engine/dynamics/motor.hpp"
+#include "engine/control/controller.hpp"
 #include "engine/contact/projection.hpp"
 #include "engine/run/state_layout.hpp"
 #include "engine/dynamics/walker_orin.hpp"
@@ -31,10 +32,11 @@ std::string at_time(double t) {
 void prepare_mechanics(const Model& model, Data& data) {
   const StateLayout s(model);
   const auto qd = data.x.segment(s.qd(), s.n);
+  command(model, data, data.t, data.x.segment(s.q(), s.n), qd);
   if (s.current >= 0)
-    motor_stage(model, data, data.t, data.x.segment(s.q(), s.n), qd, data.x.segment(s.current, s.n));
+    motor_stage(model, data, qd, data.x.segment(s.current, s.n));
   else
-    motor_stage(model, data, data.t, data.x.segment(s.q(), s.n), qd, data.current);
+    motor_stage(model, data, qd, data.current);
   if (model.options.dynamics == DynamicsMethod::walker_orin)
     mass_matrix_walker_orin(model, data);
   else

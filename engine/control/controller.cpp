@@ -1,5 +1,7 @@
 #include "engine/control/controller.hpp"
 
+#include "engine/control/plan.hpp"
+
 namespace elbowsim {
 
 const char* to_string(ControllerSpec::Kind k) {
@@ -10,6 +12,39 @@ const char* to_string(ControllerSpec::Kind k) {
     case ControllerSpec::Kind::force: return "force";
   }
   return "?";
+}
+
+namespace {
+
+double input_at(const Model& model, int joint, double t) {
+  const auto& profiles = model.inputs.joints;
+  return profiles.empty() ? 0.0 : profiles[static_cast<std::size_t>(joint)].at(t);
+}
+
+// PD on the joint errors along the plan, in volts, plus the plan's
+// feed-forward voltage for pd_feedforward and force control.
+void track(const Controller& controller, Data& data, double t, ConstVec q, ConstVec qd) {
+  const ControllerSpec& c = controller.spec;
+  const Plan& plan = *controller.plan;
+  plan.at(plan.q, t, data.q_desired);
+  plan.at(plan.qd, t, data.qd_desired);
+  data.voltage = c.kp.cwiseProduct(data.q_desired - q) + c.kd.cwiseProduct(data.qd_desired - qd);
+  if (c.kind == ControllerSpec::Kind::pd) return;
+  plan.at(plan.v_ff, t, data.v_feedforward);
+  data.voltage += data.v_feedforward;
+}
+
+}  // namespace
+
+void command(const Model& model, Data& data, double t, ConstVec q, ConstVec qd) {
+  if (!model.has_motor()) {
+    for (int j = 0; j < model.dof; ++j) data.actuation[j] = input_at(model, j, t);
+    return;
+  }
+  const Controller* controller = data.controller.get();
+  if (controller && controller->plan && controller->spec.kind != ControllerSpec::Kind::open_loop)
+    return track(*controller, data, t, q, qd);
+  for (int j = 0; j < model.dof; ++j) data.voltage[j] = input_at(model, j, t);
 }
 
 }  // namespace elbowsim

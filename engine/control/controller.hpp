@@ -1,8 +1,14 @@
-// Controllers that turn the plan (desired joint motion) into motor voltages,
-// saturated at the motor limit by the motor stage.
+// The control law: what voltage (or torque) each motor is commanded at time t
+// for the state (q, qd). Open loop it plays the scene's input profiles
+// (Model::inputs); a tracking controller follows the plan (plan.hpp) it was
+// built with. The motor model (dynamics/motor.hpp) then saturates the command
+// and turns it into current and torque; the plant never reads the controller.
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
+
+#include "engine/data.hpp"
 
 namespace elbowsim {
 
@@ -22,11 +28,19 @@ struct ControllerSpec {
 
 const char* to_string(ControllerSpec::Kind k);
 
-// Constant load at the hand: a point mass carried at the hand point and/or a
-// constant world force on it (e.g. pressing a pen).
-struct HandLoad {
-  double mass = 0.0;                                  // [kg] >= 0
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();    // [N] world
+struct Plan;
+
+// A tracking controller as a run uses it: its gains and the plan it follows.
+// Built once before the run (make_controller in plan.hpp), shared read-only.
+struct Controller {
+  ControllerSpec spec;
+  std::shared_ptr<const Plan> plan;
 };
+
+// The command at time t for the state (q [n], qd [n]): with a motor, the
+// unsaturated voltage into data.voltage [V]; without one, the joint torque
+// into data.actuation [N m]. Tracking controllers also leave the plan's
+// q_desired, qd_desired (and v_feedforward) at t in data. Allocates nothing.
+void command(const Model& model, Data& data, double t, ConstVec q, ConstVec qd);
 
 }  // namespace elbowsim

@@ -8,11 +8,6 @@
 
 namespace elbowsim {
 
-bool needs_plan(const Model& model) {
-  return model.task.path != HandTask::Path::none ||
-         model.controller.kind != ControllerSpec::Kind::open_loop;
-}
-
 namespace {
 
 std::string where(double t, const Eigen::Vector3d& p) {
@@ -21,21 +16,22 @@ std::string where(double t, const Eigen::Vector3d& p) {
   return s.str();
 }
 
-IkProblem ik_problem(const Model& model, Data& data, const Eigen::VectorXd& q0) {
+IkProblem ik_problem(const Model& model, const HandTask& task, Data& data,
+                     const Eigen::VectorXd& q0) {
   IkProblem problem;
   forward_kinematics(model, data, q0);
-  for (const std::string& name : model.task.elbows)
+  for (const std::string& name : task.elbows)
     for (int k = 0; k < int(model.elbows.size()); ++k)
       if (model.elbows[k].name == name) {
         problem.elbows.push_back(k);
         const Elbow& e = model.elbows[k];
         problem.planes.push_back(table_plane_under(model, point_position(data, e.link, e.point)));
       }
-  problem.clearance = model.task.elbow_clearance;
-  problem.posture = model.task.posture.size() == model.dof ? model.task.posture : q0;
-  problem.posture_gain = model.task.posture_weight;
-  problem.q_min = model.task.q_min;
-  problem.q_max = model.task.q_max;
+  problem.clearance = task.elbow_clearance;
+  problem.posture = task.posture.size() == model.dof ? task.posture : q0;
+  problem.posture_gain = task.posture_weight;
+  problem.q_min = task.q_min;
+  problem.q_max = task.q_max;
   return problem;
 }
 
@@ -68,7 +64,8 @@ void differentiate(Plan& plan) {
 // The torques that make the plan happen, with the table taking either the
 // force that minimises |tau| (f >= 0) or the commanded force; then through
 // the motor model to voltages: v = R i + Km qd (+ L di/dt), i = tau / Km.
-void feed_forward(const Model& model, Data& data, const IkProblem& problem, Plan& plan) {
+void feed_forward(const Model& model, const ControllerSpec& controller, Data& data,
+                  const IkProblem& problem, Plan& plan) {
   const int n = model.dof, p = model.effects.contact && problem.clearance == 0 ? int(problem.elbows.size()) : 0;
   const std::size_t N = plan.q.size();
   std::vector<Eigen::VectorXd> current(N);
@@ -88,8 +85,8 @@ void feed_forward(const Model& model, Data& data, const IkProblem& problem, Plan
         point_jacobian(model, data, e.link, e.point, J3);
         Jc.row(r) = problem.planes[r].normal.transpose() * J3;
       }
-      Eigen::VectorXd f = Eigen::VectorXd::Constant(p, model.controller.desired_force), w;
-      if (model.controller.kind != ControllerSpec::Kind::force) {
+      Eigen::VectorXd f = Eigen::VectorXd::Constant(p, controller.desired_force), w;
+      if (controller.kind != ControllerSpec::Kind::force) {
         std::vector<bool> active(p, true);  // min |tau - Jc^T f|^2, f >= 0, as an LCP
         solve_lcp(Jc * Jc.transpose(), -(Jc * tau), model.contact.rank_tolerance, 1e-12, f, w, active);
       }
@@ -108,21 +105,21 @@ void feed_forward(const Model& model, Data& data, const IkProblem& problem, Plan
 
 }  // namespace
 
-std::shared_ptr<const Plan> make_plan(const Model& model) {
+std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& experiment) {
   auto plan = std::make_shared<Plan>();
   Data data(model);
   const Eigen::VectorXd q_start =
       model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
   forward_kinematics(model, data, q_start);
   const Eigen::Vector3d hand_start = point_position(data, model.hand_link, model.hand_point);
-  const IkProblem base = ik_problem(model, data, q_start);
+  const IkProblem base = ik_problem(model, experiment.task, data, q_start);
   plan->dt = model.options.step;
   const long N = std::lround(model.options.duration / plan->dt) + 1;
   Eigen::VectorXd q = q_start;
   for (long k = 0; k < N; ++k) {
     const double t = double(k) * plan->dt;
     IkProblem problem = base;
-    problem.hand = hand_target(model.task, hand_start, t).p;
+    problem.hand = hand_target(experiment.task, hand_start, t).p;
     const IkResult r = solve_ik(model, data, problem, q);
     check(r, t, problem.hand);
     q = r.q;
@@ -130,10 +127,18 @@ std::shared_ptr<const Plan> make_plan(const Model& model) {
     plan->hand.push_back(problem.hand);
   }
   differentiate(*plan);
-  feed_forward(model, data, base, *plan);
+  feed_forward(model, experiment.controller, data, base, *plan);
   for (std::size_t r = 0; r < base.elbows.size(); ++r)
     if (model.effects.contact && base.clearance == 0) plan->resting.push_back(base.elbows[r]);
   return plan;
+}
+
+std::shared_ptr<const Controller> make_controller(const Model& model, const Experiment& experiment) {
+  if (!experiment.needs_plan()) return nullptr;
+  auto controller = std::make_shared<Controller>();
+  controller->spec = experiment.controller;
+  controller->plan = make_plan(model, experiment);
+  return controller;
 }
 
 }  // namespace elbowsim

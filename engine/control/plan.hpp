@@ -7,8 +7,9 @@
 #include <memory>
 #include <vector>
 
-#include "engine/data.hpp"
+#include "engine/control/experiment.hpp"
 #include "engine/control/inverse_kinematics.hpp"
+#include "engine/data.hpp"
 
 namespace elbowsim {
 
@@ -34,12 +35,14 @@ struct Plan {
   }
 };
 
-// Builds the plan for the model's task over its duration. Throws PlanError
+// Builds the plan for the experiment's task over the model's duration, from
+// the model (the controller's knowledge of the plant). Throws PlanError
 // ("hand target ... at t = 1.25 s is out of reach: missed by 0.031 m") when
 // the task cannot be followed.
-std::shared_ptr<const Plan> make_plan(const Model& model);
+std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& experiment);
 
-// Whether the run needs a plan (a task, or a controller that tracks one).
-bool needs_plan(const Model& model);
+// The controller a run uses: the experiment's gains and, when it needs one,
+// its plan (make_plan; throws PlanError). Null for an open-loop scene.
+std::shared_ptr<const Controller> make_controller(const Model& model, const Experiment& experiment);
 
 }  // namespace elbowsim

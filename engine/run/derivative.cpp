@@ -6,8 +6,8 @@
 #include "engine/dynamics/forward_dynamics.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/walker_orin.hpp"
-#include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/motor.hpp"
+#include "engine/control/controller.hpp"
 #include "engine/run/state_layout.hpp"
 
 namespace elbowsim {
@@ -74,10 +74,11 @@ void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
   const auto q = x.segment(s.q(), s.n);
   const auto qd = x.segment(s.qd(), s.n);
   forward_kinematics(model, data, q);
+  command(model, data, t, q, qd);
   if (s.current >= 0)
-    motor_stage(model, data, t, q, qd, x.segment(s.current, s.n));
+    motor_stage(model, data, qd, x.segment(s.current, s.n));
   else
-    motor_stage(model, data, t, q, qd, data.current);
+    motor_stage(model, data, qd, data.current);
   if (s.external >= 0) add_hand_force(model, data);
   arm_accelerations(model, data, qd);
 

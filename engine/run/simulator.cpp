@@ -25,7 +25,7 @@ void add_columns(std::vector<Column>& cols, const char* prefix, const char* unit
   for (int j = 0; j < n; ++j) cols.push_back({prefix + std::to_string(j), unit});
 }
 
-std::vector<Column> trajectory_columns(const Model& model) {
+std::vector<Column> trajectory_columns(const Model& model, bool has_plan) {
   const int n = model.dof;
   std::vector<Column> cols{{"time", "s"}};
   add_columns(cols, "q", "rad", n);
@@ -37,7 +37,7 @@ std::vector<Column> trajectory_columns(const Model& model) {
   }
   add_columns(cols, "tau", "N m", n);
   for (const char* axis : {"hand_x", "hand_y", "hand_z"}) cols.push_back({axis, "m"});
-  if (needs_plan(model)) {
+  if (has_plan) {
     for (const char* axis : {"hand_d_x", "hand_d_y", "hand_d_z", "hand_error"}) cols.push_back({axis, "m"});
   }
   if (model.effects.contact) {
@@ -86,8 +86,8 @@ void record_sample(const Model& model, Data& data, ContactTracker* tracker, Reco
   append(row, data.actuation);
   const Eigen::Vector3d hand = point_position(data, model.hand_link, model.hand_point);
   row.insert(row.end(), {hand.x(), hand.y(), hand.z()});
-  if (data.plan) {
-    const Plan& plan = *data.plan;
+  if (data.controller && data.controller->plan) {
+    const Plan& plan = *data.controller->plan;
     const double u = std::clamp(data.t / plan.dt, 0.0, double(plan.hand.size() - 1));
     const std::size_t k = std::min(std::size_t(u), plan.hand.size() - 1);
     const std::size_t k1 = std::min(k + 1, plan.hand.size() - 1);
@@ -125,11 +125,13 @@ void reset_state(const Model& model, Data& data) {
   data.x.segment(s.qd(), s.n) = or_zeros(model.initial.qd, s.n);
   if (s.current >= 0) data.x.segment(s.current, s.n) = or_zeros(model.initial.current, s.n);
   // A tracking controller starts on its plan, with the currents that hold it.
-  if (!data.plan || model.controller.kind == ControllerSpec::Kind::open_loop) return;
-  const Plan& plan = *data.plan;
+  const Controller* controller = data.controller.get();
+  if (!controller || !controller->plan || controller->spec.kind == ControllerSpec::Kind::open_loop)
+    return;
+  const Plan& plan = *controller->plan;
   data.x.segment(s.q(), s.n) = plan.q[0];
   data.x.segment(s.qd(), s.n) = plan.qd[0];
-  if (s.current >= 0 && model.controller.kind != ControllerSpec::Kind::pd)
+  if (s.current >= 0 && controller->spec.kind != ControllerSpec::Kind::pd)
     data.x.segment(s.current, s.n) =
         (plan.v_ff[0] - model.km.cwiseProduct(plan.qd[0])).cwiseQuotient(model.resistance);
 }
@@ -172,12 +174,16 @@ bool advance(const Model& model, Data& data, double t_end, std::optional<Contact
 }  // namespace
 
 RunResult simulate(const Model& model, const RunOptions& options) {
+  return simulate(model, Experiment{}, options);
+}
+
+RunResult simulate(const Model& model, const Experiment& experiment, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const long worlds_before = model.effects.contact ? CollisionWorld::worlds_built() : 0;
   RunResult result;
-  result.trajectory.columns = trajectory_columns(model);
+  result.trajectory.columns = trajectory_columns(model, experiment.needs_plan());
   Data data(model);
-  if (needs_plan(model)) data.plan = make_plan(model);  // may throw PlanError
+  data.controller = make_controller(model, experiment);  // may throw PlanError
   std::optional<ContactTracker> contacts;
   if (model.effects.contact) contacts.emplace(model);  // no collision world otherwise
   prepare_integrator(model, data);

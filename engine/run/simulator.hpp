@@ -3,6 +3,7 @@
 
 #include <functional>
 
+#include "engine/control/experiment.hpp"
 #include "engine/recording/recording.hpp"
 
 namespace elbowsim {
@@ -17,6 +18,8 @@ struct RunOptions {
 // turns non-finite stops the run: completed = false, failure says when and
 // which quantity, and what was recorded so far is kept. A hand task that
 // cannot be followed throws PlanError before anything runs.
+RunResult simulate(const Model& model, const Experiment& experiment, const RunOptions& options);
+// An open-loop run: the model's input profiles, no task.
 RunResult simulate(const Model& model, const RunOptions& options);
 
 // Puts the model's initial state into data (t = 0, x, q, qd, current).

@@ -2,6 +2,7 @@
 // sphere at the end of link 1 resting on a table, tracking a hand path.
 #pragma once
 
+#include "engine/control/experiment.hpp"
 #include "support/models.hpp"
 
 namespace elbowsim::testing {
@@ -12,6 +13,12 @@ namespace elbowsim::testing {
 //     \            _/
 //      o--link 1--O elbow (resting, or 2 cm above for elbow off)
 //   ==============================  table (x from 0.3 m)
+// The plant and the experiment run on it.
+struct ExperimentScene {
+  Model model;
+  Experiment experiment;
+};
+
 struct WritingArm {
   bool elbow_on = true;          // rest the elbow (contact on) or keep it 2 cm up (contact off)
   ControllerSpec::Kind controller = ControllerSpec::Kind::pd_feedforward;
@@ -19,7 +26,7 @@ struct WritingArm {
   double task_duration = 2.0;    // [s]
   double run_duration = 2.5;     // [s]
   double step = 1e-3;            // [s]
-  Model model() const;
+  ExperimentScene scene() const;
 };
 
 }  // namespace elbowsim::testing
