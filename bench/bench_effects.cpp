@@ -4,6 +4,7 @@
 
 #include "engine/run/integrator.hpp"
 #include "engine/run/simulator.hpp"
+#include "engine/run/step.hpp"
 #include "support/models.hpp"
 
 using namespace elbowsim;

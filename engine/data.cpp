@@ -1,10 +1,17 @@
 #include "engine/data.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "engine/run/state_layout.hpp"
 
 namespace elbowsim {
 
-Data::Data(const Model& model) {
+// llt is built in place: assigning an LLT copies its status before it has one.
+Data::Data(const Model& model)
+    : llt(model.dof),
+      contact(static_cast<int>(model.elbows.size()), model.dof,
+              static_cast<int>(model.table.size()), model.dof) {
   const int n = model.dof;
   const auto un = static_cast<std::size_t>(n);
   q = qd = current = qdd = voltage = current_rate = actuation = Eigen::VectorXd::Zero(n);
@@ -13,24 +20,39 @@ Data::Data(const Model& model) {
   axis = com = omega = omega_dot = origin_acc = force = moment = origin;
   inertia = rotation;
   mass_matrix = Eigen::MatrixXd::Zero(n, n);
-  llt = Eigen::LLT<Eigen::MatrixXd>(n);
   bias = tau = zero = unit = D = u = Eigen::VectorXd::Zero(n);
   spatial_inertia.assign(un, Matrix6d::Zero());
   articulated_inertia = spatial_inertia;
   motion_subspace.assign(un, Vector6d::Zero());
   velocity = bias_acc = bias_force = acc = U = motion_subspace;
   q_desired = qd_desired = v_feedforward = Eigen::VectorXd::Zero(n);
-  const auto elbows = model.elbows.size();
-  contact.resting.assign(elbows, false);
-  contact.normal.assign(elbows, Eigen::Vector3d::UnitZ());
-  contact.surface.assign(elbows, Eigen::Vector3d::Zero());
-  contact.J3 = Matrix3Xd::Zero(3, n);
-  contact.a_free = Eigen::VectorXd::Zero(n);
+  const int boxes = static_cast<int>(model.table.size());
+  // A step emits at most a landing and a release per elbow per stage, and a
+  // warning per link-box pair plus one for dependent rows.
+  log.events.reserve(4 * model.elbows.size() + 4);
+  log.warnings.reserve(static_cast<std::size_t>(n * boxes + 4));
   const int m = StateLayout(model).size;
+  model_id = model.id;
+  dof = n;
+  state_size = m;
   x = x_start = k1 = k2 = k3 = k4 = x_a = x_b = x_c = Eigen::VectorXd::Zero(m);
   lambda = Eigen::ArrayXd::Zero(m);
   for (StepCoefficients* c : {&step, &partial})
     c->exp_h = c->exp_half = c->phi1_half = c->phi1_h = c->f1 = c->f2 = c->f3 = lambda;
+}
+
+void check_data(const Model& model, const Data& data) {
+  auto differs = [&](const char* what, long made_for, long given) {
+    if (made_for == given) return;
+    throw std::invalid_argument("Data made for another model: " + std::string(what) + " " +
+                                std::to_string(made_for) + " (Data) vs " + std::to_string(given) +
+                                " (model '" + model.name + "')");
+  };
+  differs("model id", data.model_id, model.id);
+  differs("dof", data.dof, model.dof);
+  differs("state size", data.state_size, StateLayout(model).size);
+  differs("elbows", static_cast<long>(data.contact.resting.size()),
+          static_cast<long>(model.elbows.size()));
 }
 
 }  // namespace elbowsim

@@ -9,15 +9,12 @@
 #include <memory>
 #include <vector>
 
+#include "engine/contact/contact_data.hpp"
+#include "engine/eigen_types.hpp"
 #include "engine/model.hpp"
+#include "engine/run/step_log.hpp"
 
 namespace elbowsim {
-
-using Vector6d = Eigen::Matrix<double, 6, 1>;
-using Matrix6d = Eigen::Matrix<double, 6, 6>;
-using Matrix3Xd = Eigen::Matrix<double, 3, Eigen::Dynamic>;
-// Read-only view of a vector or of a segment of one, without copying.
-using ConstVec = Eigen::Ref<const Eigen::VectorXd>;
 
 // Energy terms of the balance E_in - losses = change of stored energy.
 struct EnergyTerms {
@@ -38,33 +35,15 @@ struct EnergyTerms {
   double stored() const { return mechanical() + magnetic; }
 };
 
-// Contact state and scratch (effects.contact). Rows are the elbows in
-// `active`, in that order; p = active.size() changes only between steps.
-struct ContactData {
-  std::vector<bool> resting;              // [elbows] row of M* on
-  std::vector<int> active;                // [p] elbow index of each row
-  std::vector<Eigen::Vector3d> normal;    // [elbows] table normal under the elbow (world, unit)
-  std::vector<Eigen::Vector3d> surface;   // [elbows] a point of the table surface there [m]
-  Eigen::MatrixXd Jc;      // [p x n] rows j_ck = n_k^T J_k (eq. 8)
-  Eigen::MatrixXd Jf;      // [p x n] Jc - mu Jt: where the normal force acts, with friction (eq. 9)
-  Eigen::VectorXd gamma;   // [p] -n^T Jdot qd (eq. 15, 31), plus Baumgarte terms
-  Eigen::VectorXd C, Cd;   // [p] constraint value [m] and rate [m/s]
-  Eigen::VectorXd fn;      // [p] normal forces [N], > 0 when the table pushes
-  Eigen::VectorXd slide;   // [p] sliding speed of each contact point [m/s]
-  Eigen::MatrixXd Y, Z, A;       // scratch: L^-1 Jc^T, L^-1 Jf^T, Jc M^-1 Jf^T
-  Eigen::VectorXd a_free, rhs;   // scratch [n], [p]
-  Eigen::LLT<Eigen::MatrixXd> A_llt;         // A without friction (symmetric)
-  Eigen::PartialPivLU<Eigen::MatrixXd> A_lu;  // A with friction
-  Matrix3Xd J3;                  // scratch point Jacobian [3 x n]
-  bool dependent = false;        // last solve met dependent rows
-  double impact_loss = 0;        // [J] kinetic energy lost in impacts so far
-  double projection_energy = 0;  // [J] stored-energy change made by projection so far
-};
-
 struct Controller;
 
 struct Data {
   explicit Data(const Model& model);
+
+  // --- the model it was made for (check_data) -------------------------------
+  long model_id = 0;        // Model::id at construction
+  int dof = 0;              // [n]
+  int state_size = 0;       // size of x (run/state_layout.hpp)
 
   // --- state -------------------------------------------------------------
   double t = 0;             // [s]
@@ -120,6 +99,22 @@ struct Data {
   EnergyTerms energy;           // at time t
   EnergyTerms energy_initial;   // at t = 0
   long steps = 0;
+
+  // --- what the last step reported, and why the run must stop --------------
+  StepLog log;
+  Failure failure;
 };
+
+// Throws std::invalid_argument when `data` was not made for `model` (another
+// model id, dof, state size or number of elbows), naming what differs. step()
+// and reset() call it always (it is a few comparisons); the algorithms call it
+// in debug builds (ELBOWSIM_CHECK_DATA).
+void check_data(const Model& model, const Data& data);
+
+#ifndef NDEBUG
+#define ELBOWSIM_CHECK_DATA(model, data) ::elbowsim::check_data(model, data)
+#else
+#define ELBOWSIM_CHECK_DATA(model, data) ((void)0)
+#endif
 
 }  // namespace elbowsim

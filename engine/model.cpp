@@ -1,6 +1,7 @@
 #include "engine/model.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -147,6 +148,8 @@ void add_point_mass(Link& link, double mass, const Eigen::Vector3d& point) {
 }  // namespace
 
 void finalize(Model& model) {
+  static std::atomic<long> next_id{1};
+  model.id = next_id++;
   check_sizes(model);
   const int n = model.dof;
   for (int i = 0; i < n; ++i) {

@@ -116,6 +116,7 @@ struct Options {
 
 struct Model {
   std::string name;
+  long id = 0;  // a fresh number from every finalize(): Data remembers it (check_data)
   int dof = 0;  // s, number of revolute joints = number of links
 
   Eigen::Isometry3d base = Eigen::Isometry3d::Identity();  // world pose of the base frame

@@ -10,6 +10,7 @@
 #include "engine/contact/impact.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/run/simulator.hpp"
+#include "engine/run/step.hpp"
 #include "support/approx.hpp"
 #include "support/contact_scenes.hpp"
 #include "support/scenes.hpp"
@@ -20,7 +21,7 @@ using namespace elbowsim::testing;
 namespace {
 
 const ContactEvent* first_event(const RunResult& r, ContactEvent::Kind kind) {
-  for (const ContactEvent& e : r.contact.events)
+  for (const ContactEvent& e : r.events)
     if (e.kind == kind) return &e;
   return nullptr;
 }

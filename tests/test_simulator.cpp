@@ -8,6 +8,7 @@
 #include "engine/run/derivative.hpp"
 #include "engine/run/integrator.hpp"
 #include "engine/run/simulator.hpp"
+#include "engine/run/step.hpp"
 #include "support/allocations.hpp"
 #include "support/scenes.hpp"
 

@@ -45,7 +45,7 @@ void write_outputs(const Scenario& scenario, const RunResult& result,
                      [&](std::ostream& out) { write_trajectory_csv(out, result.trajectory); });
   if (scenario.model.effects.contact)
     write_atomically(folder / "events.csv", [&](std::ostream& out) {
-      write_events_csv(out, scenario.model, result.contact);
+      write_events_csv(out, scenario.model, result.events);
     });
   if (scenario.output.summary)
     write_atomically(folder / "summary.json",

@@ -2,12 +2,13 @@
 #pragma once
 
 #include <iosfwd>
+#include <vector>
 
 #include "engine/model.hpp"
-#include "engine/recording/recording.hpp"
+#include "engine/run/step_log.hpp"
 
 namespace elbowsim {
 
-void write_events_csv(std::ostream& out, const Model& model, const ContactLog& log);
+void write_events_csv(std::ostream& out, const Model& model, const std::vector<ContactEvent>& events);
 
 }  // namespace elbowsim

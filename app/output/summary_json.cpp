@@ -23,7 +23,7 @@ nlohmann::ordered_json model_json(const Model& m) {
 
 nlohmann::ordered_json contact_json(const Model& m, const RunResult& r) {
   long landings = 0, releases = 0;
-  for (const ContactEvent& e : r.contact.events)
+  for (const ContactEvent& e : r.events)
     (e.kind == ContactEvent::Kind::landing ? landings : releases)++;
   nlohmann::ordered_json j = {{"enabled", m.effects.contact},
                               {"collision_worlds_built", r.collision_worlds_built}};

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/scenario/scenario.hpp"
-#include "engine/recording/recording.hpp"
+#include "engine/run/run_result.hpp"
 
 namespace elbowsim {
 

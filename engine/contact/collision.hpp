@@ -1,6 +1,6 @@
-// Collision detection between the arm and the table (DESIGN.md §3, "elbow contact";
-// STYLE.md lesson 5: detection -> rows -> solve). This header is Bullet-free: the queries
-// return plain records, and only collision_bullet.cpp includes Bullet.
+// Collision detection between the arm and the table, the first of contact's three parts
+// (detection -> rows -> solve). This header is Bullet-free: the queries return the plain
+// records of contact_data.hpp, and only collision_bullet.cpp includes Bullet.
 #pragma once
 
 #include <Eigen/Core>
@@ -10,23 +10,6 @@
 #include "engine/data.hpp"
 
 namespace elbowsim {
-
-// Closest approach of one elbow sphere to the table (the nearest box).
-struct ElbowContact {
-  int elbow = -1;          // index into model.elbows
-  int box = -1;            // nearest table box (-1, distance +inf when the table is empty)
-  double distance = 0;     // [m] signed: sphere surface to box surface, < 0 when penetrating
-  Eigen::Vector3d normal;  // unit, world, pointing from the table toward the elbow
-  Eigen::Vector3d point;   // [m] world, the point on the table surface
-};
-
-// A link capsule (from data.origin[i] to the link's tip, radius link.radius) that reaches
-// into the table.
-struct LinkPenetration {
-  int link = -1;     // index into model.links
-  int box = -1;      // index into model.table
-  double depth = 0;  // [m] > 0, the shortest move of the capsule that frees it from the box
-};
 
 // Bullet collision objects for one Model: a sphere per elbow, a capsule per link and a box
 // per table box. Build it only when effects.contact is on; a query reads link poses from

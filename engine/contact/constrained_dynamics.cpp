@@ -3,6 +3,8 @@
 #include <Eigen/LU>
 #include <Eigen/QR>
 
+#include "engine/contact/min_norm_solve.hpp"
+
 namespace elbowsim {
 
 namespace {
@@ -13,27 +15,28 @@ namespace {
 // gives the minimum-norm f.
 void rank_revealing_solve(const Model& model, Data& data) {
   ContactData& c = data.contact;
+  SolverWorkspace& ws = c.solver(c.rows());
   const double tol = model.contact.rank_tolerance;
   bool independent;
   if (model.effects.friction) {
-    c.A_lu.compute(c.A);
-    const auto pivots = c.A_lu.matrixLU().diagonal().cwiseAbs();
+    ws.lu.compute(c.A);
+    const auto pivots = ws.lu.matrixLU().diagonal().cwiseAbs();
     independent = pivots.minCoeff() > tol * pivots.maxCoeff();
-    if (independent) c.fn = c.A_lu.solve(c.rhs);
+    if (independent) c.fn = ws.lu.solve(c.rhs);
   } else {
-    c.A_llt.compute(c.A);
-    const auto pivots = c.A_llt.matrixLLT().diagonal().cwiseAbs2();
-    independent = c.A_llt.info() == Eigen::Success && pivots.minCoeff() > tol * pivots.maxCoeff();
+    ws.llt.compute(c.A);
+    const auto pivots = ws.llt.matrixLLT().diagonal().cwiseAbs2();
+    independent = ws.llt.info() == Eigen::Success && pivots.minCoeff() > tol * pivots.maxCoeff();
     if (independent) {
       c.fn = c.rhs;
-      c.A_llt.solveInPlace(c.fn);
+      ws.llt.solveInPlace(c.fn);
     }
   }
   c.dependent = !independent;
   if (independent) return;
-  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(c.A);
-  cod.setThreshold(tol);
-  c.fn = cod.solve(c.rhs);
+  ws.cod.compute(c.A);
+  ws.cod.setThreshold(tol);
+  min_norm_solve(ws, c.rhs, c.fn);
 }
 
 // Schur complement. With M = L L^T, w = L^-1 (tau - B_J), Y = L^-1 Jc^T and
@@ -96,11 +99,9 @@ void solve_constrained(const Model& model, Data& data, ConstVec tau, ConstraintS
   }
 }
 
-void contact_lcp_terms(const Model& model, Data& data, ConstVec tau, Eigen::MatrixXd& A,
-                       Eigen::VectorXd& b) {
+void contact_lcp_terms(const Model& model, Data& data, ConstVec tau) {
   schur(model, data, tau);  // leaves A and rhs = gamma - Jc qdd_free
-  A = data.contact.A;
-  b = -data.contact.rhs;
+  data.contact.lcp_b = -data.contact.rhs;
 }
 
 }  // namespace elbowsim

@@ -26,10 +26,10 @@ enum class ConstraintSolver { schur, dense_lu, explicit_inverse };
 void solve_constrained(const Model& model, Data& data, ConstVec tau,
                        ConstraintSolver method = ConstraintSolver::schur);
 
-// The Delassus matrix A = Jc (M + Jm)^-1 Jf^T and the free constraint
-// acceleration Jc qdd_free - gamma, for the active-set (LCP) decision:
-// the normal accelerations are w = A f + b. Needs the same inputs.
-void contact_lcp_terms(const Model& model, Data& data, ConstVec tau, Eigen::MatrixXd& A,
-                       Eigen::VectorXd& b);
+// The Delassus matrix A = Jc (M + Jm)^-1 Jf^T into data.contact.A and the
+// free constraint acceleration b = Jc qdd_free - gamma into data.contact.lcp_b,
+// for the active-set (LCP) decision: the normal accelerations are w = A f + b.
+// Needs the same inputs.
+void contact_lcp_terms(const Model& model, Data& data, ConstVec tau);
 
 }  // namespace elbowsim

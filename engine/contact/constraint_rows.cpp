@@ -6,22 +6,6 @@ namespace elbowsim {
 
 namespace {
 
-void resize_rows(Data& data, int p, int n) {
-  ContactData& c = data.contact;
-  if (c.Jc.rows() == p) return;  // p changes only between steps
-  c.Jc.resize(p, n);
-  c.Jf.resize(p, n);
-  c.gamma.resize(p);
-  c.C.resize(p);
-  c.Cd.resize(p);
-  c.fn = Eigen::VectorXd::Zero(p);
-  c.slide.resize(p);
-  c.rhs.resize(p);
-  c.Y.resize(n, p);
-  c.Z.resize(n, p);
-  c.A.resize(p, p);
-}
-
 // Friction part of row r: -mu t^T J_p at the contact point under the sphere.
 void friction_row(const Model& model, Data& data, int r, const Elbow& elbow,
                   const Eigen::Vector3d& n, ConstVec qd) {
@@ -44,7 +28,7 @@ void friction_row(const Model& model, Data& data, int r, const Elbow& elbow,
 void constraint_rows(const Model& model, Data& data, ConstVec qd) {
   ContactData& c = data.contact;
   const int p = static_cast<int>(c.active.size());
-  resize_rows(data, p, model.dof);
+  c.use_rows(p);  // p changes only between steps
   const double T = model.contact.baumgarte_time;
   for (int r = 0; r < p; ++r) {
     const int k = c.active[r];

@@ -11,19 +11,27 @@
 
 namespace elbowsim {
 
+// Per row (landing elbows first, then resting ones): views into the run's
+// contact workspace, valid until the next impact.
 struct ImpactResult {
-  std::vector<int> elbows;        // rows: landing elbows first, then resting ones
-  Eigen::VectorXd impulse;        // [N s] per row
-  Eigen::VectorXd speed_before;   // [m/s] normal velocity per row (< 0 approaching)
-  Eigen::VectorXd speed_after;    // [m/s]
-  Eigen::VectorXd energy_lost;    // [J] per row: -P_k (u-_k + u+_k) / 2; they sum to the loss
+  ConstVec impulse;        // [N s]
+  ConstVec speed_before;   // [m/s] normal velocity (< 0 approaching)
+  ConstVec speed_after;    // [m/s]
+  ConstVec energy_lost;    // [J] -P_k (u-_k + u+_k) / 2; they sum to the loss
   double kinetic_before = 0, kinetic_after = 0;  // [J] 1/2 qd^T (M + Jm) qd
   bool solved = false;
 };
 
 // Applies the impulse to the rates in data.x. Needs forward_kinematics at
-// the state's q and data.contact.normal for every elbow involved.
+// the state's q and data.contact.normal for every elbow involved. Allocates
+// nothing (at most `elbows` rows).
 ImpactResult apply_impact(const Model& model, Data& data, const std::vector<int>& landing,
                           const std::vector<int>& resting);
+
+// The impact stage of a step: every free elbow at or into the table
+// (distance <= 0, or <= touch_distance with located events) and approaching
+// lands; with effects.impacts it gets its impulse. Landing events go to
+// data.log; the impact loss to data.contact.impact_loss.
+void land_touching_elbows(const Model& model, Data& data);
 
 }  // namespace elbowsim

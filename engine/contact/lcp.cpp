@@ -1,7 +1,6 @@
 #include "engine/contact/lcp.hpp"
 
-#include <Eigen/QR>
-#include <vector>
+#include "engine/contact/min_norm_solve.hpp"
 
 namespace elbowsim {
 
@@ -11,29 +10,31 @@ struct BlockSolver {
   const Eigen::MatrixXd& A;
   const Eigen::VectorXd& b;
   double rank_tolerance;
+  LcpScratch scratch;
   bool dependent = false;
 
   // f_S = -A_SS^+ b_S (minimum norm), f elsewhere 0; w = A f + b.
   void solve(const std::vector<bool>& active, Eigen::VectorXd& f, Eigen::VectorXd& w) {
-    std::vector<int> idx;
+    std::vector<int>& idx = scratch.index;
+    idx.clear();
     for (int k = 0; k < int(active.size()); ++k)
       if (active[k]) idx.push_back(k);
     f.setZero(A.rows());
     if (!idx.empty()) {
       const int m = int(idx.size());
-      Eigen::MatrixXd block(m, m);
-      Eigen::VectorXd rhs(m);
+      SolverWorkspace& ws = scratch.blocks[static_cast<std::size_t>(m)];
       for (int r = 0; r < m; ++r) {
-        rhs[r] = -b[idx[r]];
-        for (int c = 0; c < m; ++c) block(r, c) = A(idx[r], idx[c]);
+        ws.rhs[r] = -b[idx[r]];
+        for (int c = 0; c < m; ++c) ws.block(r, c) = A(idx[r], idx[c]);
       }
-      Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(block);
-      cod.setThreshold(rank_tolerance);
-      if (cod.rank() < m) dependent = true;
-      const Eigen::VectorXd x = cod.solve(rhs);
-      for (int r = 0; r < m; ++r) f[idx[r]] = x[r];
+      ws.cod.compute(ws.block);
+      ws.cod.setThreshold(rank_tolerance);
+      if (ws.cod.rank() < m) dependent = true;
+      min_norm_solve(ws, ws.rhs, ws.x);
+      for (int r = 0; r < m; ++r) f[idx[r]] = ws.x[r];
     }
-    w = A * f + b;
+    w.noalias() = A * f;
+    w += b;
   }
 };
 
@@ -65,12 +66,12 @@ bool enumerate_sets(BlockSolver& solver, double tol, Eigen::VectorXd& f, Eigen::
 
 LcpResult solve_lcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double rank_tolerance,
                     double tolerance, Eigen::VectorXd& f, Eigen::VectorXd& w,
-                    std::vector<bool>& active) {
+                    std::vector<bool>& active, LcpScratch scratch) {
   const int p = int(b.size());
   LcpResult result;
   active.resize(p, false);
   const double tol = tolerance * std::max(b.cwiseAbs().maxCoeff(), 1e-300);
-  BlockSolver solver{A, b, rank_tolerance};
+  BlockSolver solver{A, b, rank_tolerance, scratch};
   const int max_pivots = (1 << std::min(p, 20)) + p;
   for (; result.pivots <= max_pivots; ++result.pivots) {
     solver.solve(active, f, w);
@@ -86,6 +87,20 @@ LcpResult solve_lcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double r
   solver.solve(active, f, w);
   result.dependent = solver.dependent;
   return result;
+}
+
+LcpResult solve_lcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double rank_tolerance,
+                    double tolerance, Eigen::VectorXd& f, Eigen::VectorXd& w,
+                    std::vector<bool>& active) {
+  const int p = int(b.size());
+  std::vector<SolverWorkspace> blocks;
+  blocks.reserve(static_cast<std::size_t>(p) + 1);
+  for (int m = 0; m <= p; ++m) blocks.emplace_back(m, 0);
+  std::vector<int> index;
+  index.reserve(static_cast<std::size_t>(p));
+  f.resize(p);
+  w.resize(p);
+  return solve_lcp(A, b, rank_tolerance, tolerance, f, w, active, LcpScratch{blocks, index});
 }
 
 }  // namespace elbowsim

@@ -4,6 +4,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
+
+#include "engine/contact/contact_data.hpp"
 
 namespace elbowsim {
 
@@ -11,6 +14,13 @@ struct LcpResult {
   bool solved = false;   // a complementary solution was found
   bool dependent = false;  // some active block was rank deficient (min-norm forces used)
   int pivots = 0;        // principal pivots taken
+};
+
+// Scratch for the block solves: one workspace per block size m (index m,
+// up to p) and room for p indices. With it solve_lcp allocates nothing.
+struct LcpScratch {
+  std::vector<SolverWorkspace>& blocks;
+  std::vector<int>& index;
 };
 
 // Murty's least-index principal pivoting (finite for P-matrices, i.e. when
@@ -21,6 +31,12 @@ struct LcpResult {
 // decomposition whose rank threshold is `rank_tolerance` (relative).
 // `tolerance` is the complementarity slack, relative to max(|b|, 1e-300).
 // On return `active` marks the rows with f_k > 0 (or w_k == 0 at the solution).
+// f and w [p] must not alias A or b.
+LcpResult solve_lcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double rank_tolerance,
+                    double tolerance, Eigen::VectorXd& f, Eigen::VectorXd& w,
+                    std::vector<bool>& active, LcpScratch scratch);
+
+// The same with scratch of its own (allocates; for planning and tests).
 LcpResult solve_lcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double rank_tolerance,
                     double tolerance, Eigen::VectorXd& f, Eigen::VectorXd& w,
                     std::vector<bool>& active);

@@ -1,9 +1,10 @@
 #include "engine/contact/projection.hpp"
 
-#include <Eigen/QR>
-
 #include "engine/contact/constraint_rows.hpp"
+#include "engine/contact/detection.hpp"
+#include "engine/contact/min_norm_solve.hpp"
 #include "engine/dynamics/crba.hpp"
+#include "engine/dynamics/energy.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/run/state_layout.hpp"
 
@@ -11,14 +12,20 @@ namespace elbowsim {
 
 namespace {
 
-// Minimum-norm, mass-weighted correction dx with Jc dx = -residual.
-Eigen::VectorXd weighted_correction(const Model& model, Data& data, const Eigen::VectorXd& residual) {
+// Minimum-norm, mass-weighted correction ws.dx with Jc dx = -residual.
+const Eigen::VectorXd& weighted_correction(const Model& model, Data& data, ConstVec residual) {
+  ContactData& c = data.contact;
+  SolverWorkspace& ws = c.solver(c.rows());
   mass_matrix_crba(model, data);
   data.llt.compute(data.mass_matrix);
-  const Eigen::MatrixXd MinvJt = data.llt.solve(data.contact.Jc.transpose());
-  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(data.contact.Jc * MinvJt);
-  cod.setThreshold(model.contact.rank_tolerance);
-  return -MinvJt * cod.solve(residual);
+  ws.MinvJt = c.Jc.transpose();
+  data.llt.solveInPlace(ws.MinvJt);
+  ws.block.noalias() = c.Jc * ws.MinvJt;
+  ws.cod.compute(ws.block);
+  ws.cod.setThreshold(model.contact.rank_tolerance);
+  min_norm_solve(ws, residual, ws.x);
+  ws.dx.noalias() = -ws.MinvJt * ws.x;
+  return ws.dx;
 }
 
 }  // namespace
@@ -40,6 +47,23 @@ double project_onto_constraints(const Model& model, Data& data) {
   worst = data.contact.C.cwiseAbs().maxCoeff();
   qd += weighted_correction(model, data, data.contact.Cd);
   return worst;
+}
+
+void stabilise(const Model& model, Data& data) {
+  ContactData& c = data.contact;
+  c.active.clear();
+  for (int k = 0; k < int(c.resting.size()); ++k)
+    if (c.resting[k]) c.active.push_back(k);
+  if (c.active.empty()) return;
+  const StateLayout s(model);
+  const auto qd = data.x.segment(s.qd(), s.n);
+  EnergyTerms before, after;
+  forward_kinematics(model, data, data.x.segment(s.q(), s.n));
+  stored_energy(model, data, qd, data.current, before);  // only the mechanical part is used
+  project_onto_constraints(model, data);
+  stored_energy(model, data, qd, data.current, after);
+  c.projection_energy += after.mechanical() - before.mechanical();
+  detect_contacts(model, data);
 }
 
 }  // namespace elbowsim

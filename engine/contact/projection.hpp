@@ -10,7 +10,12 @@ namespace elbowsim {
 
 // Projects data.x for the elbows in data.contact.active (normals and
 // surface points in data.contact). Returns max |C| after the position pass.
-// Leaves forward_kinematics at the projected q.
+// Leaves forward_kinematics at the projected q. Allocates nothing.
 double project_onto_constraints(const Model& model, Data& data);
+
+// The stabilisation stage of a step (stabilization: projection): projects
+// onto the resting elbows' constraints, adds the stored-energy change it made
+// to data.contact.projection_energy and detects contacts again.
+void stabilise(const Model& model, Data& data);
 
 }  // namespace elbowsim

@@ -22,7 +22,7 @@ void stiff_rates(const Model& model, Eigen::Ref<Eigen::ArrayXd> lambda) {
 namespace {
 
 // Powers that feed the energy integrals: electrical input, Joule loss, viscous loss.
-void energy_rates(const Model& model, const Data& data, ConstVec qd, Eigen::Ref<Eigen::VectorXd> out) {
+void energy_rates(const Model& model, Data& data, ConstVec qd, Eigen::Ref<Eigen::VectorXd> out) {
   if (model.has_motor()) {
     out[0] = data.voltage.dot(data.current);
     out[1] = data.current.dot(model.resistance.cwiseProduct(data.current));
@@ -40,7 +40,8 @@ void energy_rates(const Model& model, const Data& data, ConstVec qd, Eigen::Ref<
     return;
   }
   const double normal = c.fn.dot(c.Cd);
-  out[3] = normal - c.fn.dot(c.Jf * qd);
+  data.contact.Jf_qd.noalias() = c.Jf * qd;
+  out[3] = normal - c.fn.dot(c.Jf_qd);
   out[4] = normal;
 }
 

@@ -1,0 +1,123 @@
+#include "engine/contact/active_set.hpp"
+
+#include "engine/contact/constrained_dynamics.hpp"
+#include "engine/contact/constraint_rows.hpp"
+#include "engine/contact/detection.hpp"
+#include "engine/contact/lcp.hpp"
+#include "engine/control/controller.hpp"
+#include "engine/dynamics/crba.hpp"
+#include "engine/dynamics/motor.hpp"
+#include "engine/dynamics/walker_orin.hpp"
+#include "engine/run/state_layout.hpp"
+
+namespace elbowsim {
+
+namespace {
+
+// Mass matrix, bias and applied torques at the state in data.x.
+void prepare_mechanics(const Model& model, Data& data) {
+  const StateLayout s(model);
+  const auto qd = data.x.segment(s.qd(), s.n);
+  command(model, data, data.t, data.x.segment(s.q(), s.n), qd);
+  if (s.current >= 0)
+    motor_stage(model, data, qd, data.x.segment(s.current, s.n));
+  else
+    motor_stage(model, data, qd, data.current);
+  if (model.options.dynamics == DynamicsMethod::walker_orin)
+    mass_matrix_walker_orin(model, data);
+  else
+    mass_matrix_crba(model, data);
+  bias_torques(model, data, qd);
+}
+
+// Elbows at or into the table and not separating, and those already resting.
+void touching_elbows(const Model& model, Data& data) {
+  ContactData& c = data.contact;
+  c.candidates.clear();
+  for (int k = 0; k < int(model.elbows.size()); ++k) {
+    const bool touching = c.detected[k].distance <= model.contact.touch_distance &&
+                          normal_speed(model, data, k) <= model.contact.separation_velocity;
+    if (c.resting[k] || touching) c.candidates.push_back(k);
+  }
+}
+
+// Warns once per run about dependent rows, with their rank.
+void warn_dependent(const Model& model, Data& data) {
+  ContactData& c = data.contact;
+  ++c.dependent_steps;
+  if (c.dependent_warned) return;
+  SolverWorkspace& ws = c.solver(c.rows());
+  ws.rows_rank.compute(c.Jc);
+  ws.rows_rank.setThreshold(model.contact.rank_tolerance);
+  Warning w;
+  w.kind = Warning::Kind::dependent_rows;
+  w.t = data.t;
+  w.count = static_cast<int>(c.candidates.size());
+  w.rank = static_cast<int>(ws.rows_rank.rank());
+  data.log.warnings.push_back(w);
+  c.dependent_warned = true;
+}
+
+// Switches rows on and off as the LCP decided, with their events.
+void apply_decision(const Model& model, Data& data) {
+  ContactData& c = data.contact;
+  c.active.clear();
+  for (std::size_t r = 0; r < c.candidates.size(); ++r) {
+    const int k = c.candidates[r];
+    const bool on = c.lcp_active[r];
+    if (on) {
+      c.active.push_back(k);
+      if (!c.resting[k])
+        data.log.events.push_back({data.t, k, ContactEvent::Kind::landing,
+                                   std::max(0.0, -normal_speed(model, data, k)), 0, 0});
+    } else if (c.resting[k]) {
+      data.log.events.push_back({data.t, k, ContactEvent::Kind::release, 0, 0, 0});
+    }
+    c.resting[k] = on;
+  }
+}
+
+void fail(Data& data, Failure::Kind kind) {
+  data.failure.kind = kind;
+  data.failure.t = data.t;
+  data.failure.step = data.steps;
+}
+
+}  // namespace
+
+bool select_active_set(const Model& model, Data& data) {
+  ContactData& c = data.contact;
+  detect_contacts(model, data);
+  touching_elbows(model, data);
+  c.active = c.candidates;
+  if (c.candidates.empty()) return true;
+
+  const StateLayout s(model);
+  prepare_mechanics(model, data);
+  constraint_rows(model, data, data.x.segment(s.qd(), s.n));
+  contact_lcp_terms(model, data, data.actuation);
+  if (model.effects.friction && (c.A.diagonal().array() <= 0).any()) {
+    fail(data, Failure::Kind::painleve);
+    return false;
+  }
+  // Dependent rows make the forces non-unique: start from all rows on, so the
+  // minimum-norm split is kept whenever it is complementary. The Schur solve
+  // above already checked the rank of M~ = Jc M^-1 Jc^T (pivots against
+  // rank_tolerance), so no second factorisation here.
+  const bool dependent = c.dependent;
+  c.lcp_active.assign(c.candidates.size(), true);
+  if (!dependent)
+    for (std::size_t r = 0; r < c.candidates.size(); ++r)
+      c.lcp_active[r] = c.resting[c.candidates[r]];
+  const LcpResult lcp = solve_lcp(c.A, c.lcp_b, model.contact.rank_tolerance, 1e-9, c.lcp_f,
+                                  c.lcp_w, c.lcp_active, LcpScratch{c.solvers, c.lcp_index});
+  if (!lcp.solved) {
+    fail(data, Failure::Kind::no_contact_solution);
+    return false;
+  }
+  if (dependent || lcp.dependent) warn_dependent(model, data);
+  apply_decision(model, data);
+  return true;
+}
+
+}  // namespace elbowsim

@@ -1,0 +1,60 @@
+#include "engine/contact/contact_data.hpp"
+
+namespace elbowsim {
+
+ContactRows::ContactRows(int p, int n)
+    : Jc(Eigen::MatrixXd::Zero(p, n)), Jf(Jc), gamma(Eigen::VectorXd::Zero(p)), C(gamma),
+      Cd(gamma), fn(gamma), slide(gamma), Jf_qd(gamma), Y(Eigen::MatrixXd::Zero(n, p)), Z(Y),
+      A(Eigen::MatrixXd::Zero(p, p)), rhs(gamma), lcp_b(gamma), lcp_f(gamma), lcp_w(gamma) {}
+
+void ContactRows::swap(ContactRows& o) {
+  Jc.swap(o.Jc), Jf.swap(o.Jf), gamma.swap(o.gamma), C.swap(o.C), Cd.swap(o.Cd);
+  fn.swap(o.fn), slide.swap(o.slide), Jf_qd.swap(o.Jf_qd), Y.swap(o.Y), Z.swap(o.Z);
+  A.swap(o.A), rhs.swap(o.rhs), lcp_b.swap(o.lcp_b), lcp_f.swap(o.lcp_f), lcp_w.swap(o.lcp_w);
+}
+
+SolverWorkspace::SolverWorkspace(int m, int n)
+    : llt(m), lu(m), cod(m, m), rows_rank(m, n), block(Eigen::MatrixXd::Zero(m, m)),
+      rhs(Eigen::VectorXd::Zero(m)), x(rhs), work(rhs), work_cols(rhs),
+      Jc(Eigen::MatrixXd::Zero(m, n)), MinvJt(Eigen::MatrixXd::Zero(n, m)),
+      dx(Eigen::VectorXd::Zero(n)), A(block), b(rhs), impulse(rhs), speed_before(rhs), speed_after(rhs),
+      energy_lost(rhs), w(rhs) {}
+
+ContactData::ContactData(int elbows, int links, int boxes, int n) {
+  const auto e = static_cast<std::size_t>(elbows);
+  resting.assign(e, 0);
+  active.reserve(e);
+  detected.resize(e);
+  normal.assign(e, Eigen::Vector3d::UnitZ());
+  surface.assign(e, Eigen::Vector3d::Zero());
+  a_free = Eigen::VectorXd::Zero(n);
+  J3 = Matrix3Xd::Zero(3, n);
+  link_inside.assign(static_cast<std::size_t>(links), 0);
+  for (auto* list : {&candidates, &landing, &impact_rows, &lcp_index}) list->reserve(e);
+  lcp_active.reserve(e);
+  penetrations.reserve(static_cast<std::size_t>(links) * static_cast<std::size_t>(boxes));
+  solvers.reserve(e + 1);  // built in place: copying a factorisation reads its unset status
+  spare_.reserve(e + 1);
+  for (int m = 0; m <= elbows; ++m) {
+    solvers.emplace_back(m, n);
+    spare_.emplace_back(m, n);
+  }
+  use_rows(0);
+}
+
+void ContactData::swap_rows(ContactRows& set) {
+  Jc.swap(set.Jc), Jf.swap(set.Jf), gamma.swap(set.gamma), C.swap(set.C), Cd.swap(set.Cd);
+  fn.swap(set.fn), slide.swap(set.slide), Jf_qd.swap(set.Jf_qd), Y.swap(set.Y), Z.swap(set.Z);
+  A.swap(set.A), rhs.swap(set.rhs), lcp_b.swap(set.lcp_b), lcp_f.swap(set.lcp_f);
+  lcp_w.swap(set.lcp_w);
+}
+
+void ContactData::use_rows(int p) {
+  if (p == rows_in_use_) return;
+  if (rows_in_use_ >= 0) swap_rows(spare_[static_cast<std::size_t>(rows_in_use_)]);  // give back
+  swap_rows(spare_[static_cast<std::size_t>(p)]);  // take the set of size p
+  rows_in_use_ = p;
+  fn.setZero();
+}
+
+}  // namespace elbowsim

@@ -1,0 +1,124 @@
+// Per-run contact state and scratch (effects.contact), part of Data. Sized once
+// from the model for every row count p = 0 .. elbows, so a contact step
+// allocates nothing: the rows of M* for the p resting elbows live in the flat
+// members below, and changing p swaps them with a pre-sized set (swap moves
+// pointers, it does not allocate).
+#pragma once
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <Eigen/QR>
+#include <memory>
+#include <vector>
+
+#include "engine/eigen_types.hpp"
+
+namespace elbowsim {
+
+class CollisionWorld;
+
+// Closest approach of one elbow sphere to the table (the nearest box).
+struct ElbowContact {
+  int elbow = -1;          // index into model.elbows
+  int box = -1;            // nearest table box (-1, distance +inf when the table is empty)
+  double distance = 0;     // [m] signed: sphere surface to box surface, < 0 when penetrating
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, world, from the table toward the elbow
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // [m] world, the point on the table surface
+};
+
+// A link capsule (from data.origin[i] to the link's tip, radius link.radius) that reaches
+// into the table.
+struct LinkPenetration {
+  int link = -1;     // index into model.links
+  int box = -1;      // index into model.table
+  double depth = 0;  // [m] > 0, the shortest move of the capsule that frees it from the box
+};
+
+// The rows of M* for p resting elbows (constraint_rows.hpp) and the Schur
+// solve's p-sized scratch (constrained_dynamics.hpp).
+struct ContactRows {
+  Eigen::MatrixXd Jc;      // [p x n] rows j_ck = n_k^T J_k (eq. 8)
+  Eigen::MatrixXd Jf;      // [p x n] Jc - mu Jt: where the normal force acts, with friction (eq. 9)
+  Eigen::VectorXd gamma;   // [p] -n^T Jdot qd (eq. 15, 31), plus Baumgarte terms
+  Eigen::VectorXd C, Cd;   // [p] constraint value [m] and rate [m/s]
+  Eigen::VectorXd fn;      // [p] normal forces [N], > 0 when the table pushes
+  Eigen::VectorXd slide;   // [p] sliding speed of each contact point [m/s]
+  Eigen::VectorXd Jf_qd;   // [p] scratch: Jf qd (friction power)
+  Eigen::MatrixXd Y, Z;    // [n x p] scratch: L^-1 Jc^T, L^-1 Jf^T
+  Eigen::MatrixXd A;       // [p x p] Jc M^-1 Jf^T (the paper's M~, eq. 49)
+  Eigen::VectorXd rhs;     // [p] scratch
+  Eigen::VectorXd lcp_b, lcp_f, lcp_w;  // [p] the active-set LCP: w = A f + b
+
+  ContactRows() = default;
+  ContactRows(int p, int n);
+  void swap(ContactRows& other);
+};
+
+// Factorisations and scratch for one m x m system of contact rows (m fixed
+// per workspace; one workspace per m = 1 .. elbows).
+struct SolverWorkspace {
+  Eigen::LLT<Eigen::MatrixXd> llt;                          // A without friction (symmetric)
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;                  // A with friction
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;       // [m x m] minimum-norm solves
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> rows_rank; // [m x n] rank of Jc (warnings)
+  Eigen::MatrixXd block;         // [m x m] an LCP block, an impact's Delassus matrix
+  Eigen::VectorXd rhs, x, work;  // [m]
+  Eigen::VectorXd work_cols;     // [m] Householder scratch of the minimum-norm solve
+  Eigen::MatrixXd Jc;            // [m x n] impact rows
+  Eigen::MatrixXd MinvJt;        // [n x m] (M + Jm)^-1 Jc^T (impacts, projection)
+  Eigen::VectorXd dx;            // [n] a correction of q or qd (projection)
+  // An impact on m rows (impact.hpp): its LCP and result, kept here so that it allocates nothing.
+  Eigen::MatrixXd A;                                                   // [m x m]
+  Eigen::VectorXd b, impulse, speed_before, speed_after, energy_lost, w;  // [m]
+
+  SolverWorkspace(int m, int n);
+};
+
+struct ContactData {
+  ContactData() = default;
+  ContactData(int elbows, int links, int boxes, int n);
+
+  // --- which elbows rest ----------------------------------------------------
+  std::vector<char> resting;              // [elbows] row of M* on
+  std::vector<int> active;                // [p] elbow index of each row (capacity: elbows)
+  // --- detection (contact/detection.hpp), at the last detected state -------
+  std::vector<ElbowContact> detected;     // [elbows] distance, normal, surface point
+  std::vector<Eigen::Vector3d> normal;    // [elbows] table normal under the elbow (world, unit)
+  std::vector<Eigen::Vector3d> surface;   // [elbows] a point of the table surface there [m]
+  // --- rows of M* for the p active elbows (flat: the ContactRows of size p) --
+  Eigen::MatrixXd Jc, Jf;
+  Eigen::VectorXd gamma, C, Cd, fn, slide, Jf_qd;
+  Eigen::MatrixXd Y, Z, A;
+  Eigen::VectorXd rhs, lcp_b, lcp_f, lcp_w;
+  Eigen::VectorXd a_free;        // [n] scratch: L^-1 (tau - B_J)
+  Matrix3Xd J3;                  // [3 x n] scratch point Jacobian
+  bool dependent = false;        // last solve met dependent rows
+  // --- run totals -----------------------------------------------------------
+  double impact_loss = 0;        // [J] kinetic energy lost in impacts so far
+  double projection_energy = 0;  // [J] stored-energy change made by projection so far
+  double max_abs_C = 0;          // [m] over resting elbows, sampled after each step
+  double max_abs_Cd = 0;         // [m/s]
+  long dependent_steps = 0;      // steps whose active rows were dependent
+  bool dependent_warned = false; // the dependent-rows warning was given
+  std::vector<char> link_inside; // [links] link capsule in the table after the last step
+  // --- scratch of the stages (capacities reserved) ---------------------------
+  std::vector<int> candidates, landing, impact_rows;  // elbow indices
+  std::vector<bool> lcp_active;                       // [<= elbows]
+  std::vector<int> lcp_index;                         // [<= elbows]
+  std::vector<LinkPenetration> penetrations;          // [<= links x boxes]
+  std::vector<SolverWorkspace> solvers;               // [elbows + 1], index m
+  // The collision world (Bullet), built by reset() for a contact scene.
+  std::shared_ptr<CollisionWorld> world;
+
+  // Puts the rows for p elbows into the flat members (no allocation).
+  void use_rows(int p);
+  int rows() const { return rows_in_use_; }
+  SolverWorkspace& solver(int m) { return solvers[static_cast<std::size_t>(m)]; }
+
+ private:
+  std::vector<ContactRows> spare_;  // [elbows + 1] index p; the in-use size holds empty matrices
+  int rows_in_use_ = -1;            // p of the flat members
+  void swap_rows(ContactRows& set);
+};
+
+}  // namespace elbowsim

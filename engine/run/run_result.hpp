@@ -1,0 +1,38 @@
+// What a run returns: the recorded trajectory and the run's outcome (whether
+// it completed, why not, warnings, contact events and statistics, energies).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "engine/data.hpp"
+#include "engine/recording/metrics.hpp"
+#include "engine/recording/recording.hpp"
+
+namespace elbowsim {
+
+// Contact statistics over the run (effects.contact).
+struct ContactStats {
+  double max_abs_C = 0;         // [m] over resting elbows, sampled after each step
+  double max_abs_Cd = 0;        // [m/s]
+  long dependent_steps = 0;     // steps whose active rows were dependent
+};
+
+struct RunResult {
+  Recording trajectory;
+  bool completed = false;       // false: stopped early, see failure
+  std::string failure;          // why the run stopped early
+  std::vector<std::string> warnings;
+  std::vector<ContactEvent> events;  // landings and releases, in time order
+  long steps = 0;
+  double final_time = 0;        // [s]
+  double wall_seconds = 0;      // [s]
+  EnergyTerms energy_initial, energy_final;
+  double balance_residual = 0;      // [J] at the end
+  double max_abs_balance_residual = 0;  // [J] over recorded samples
+  ContactStats contact;
+  long collision_worlds_built = 0;  // by this run
+  Metrics metrics;                  // computed from the trajectory at the end
+};
+
+}  // namespace elbowsim

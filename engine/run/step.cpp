@@ -1,0 +1,118 @@
+#include "engine/run/step.hpp"
+
+#include <algorithm>
+
+#include "engine/contact/active_set.hpp"
+#include "engine/contact/collision.hpp"
+#include "engine/contact/contact_checks.hpp"
+#include "engine/contact/events.hpp"
+#include "engine/contact/impact.hpp"
+#include "engine/contact/projection.hpp"
+#include "engine/control/controller.hpp"
+#include "engine/control/plan.hpp"
+#include "engine/dynamics/energy.hpp"
+#include "engine/run/derivative.hpp"
+#include "engine/run/integrator.hpp"
+#include "engine/run/state_layout.hpp"
+
+namespace elbowsim {
+
+namespace {
+
+Eigen::VectorXd or_zeros(const Eigen::VectorXd& v, int n) {
+  return v.size() == n ? v : Eigen::VectorXd::Zero(n);
+}
+
+// The length of the coming step: the scene's, or what is left before the end.
+double step_length(const Model& model, const Data& data) {
+  const double left = model.options.duration - data.t;
+  return left > 1e-3 * model.options.step ? std::min(model.options.step, left) : model.options.step;
+}
+
+// A non-finite state, or one beyond 1e12 in any component, stops the run.
+void check_state(Data& data) {
+  if (data.x.allFinite() && data.x.cwiseAbs().maxCoeff() < 1e12) return;
+  data.failure.kind = Failure::Kind::diverged;
+  data.failure.t = data.t;
+  data.failure.step = data.steps;
+}
+
+// Landings and releases inside the step, impacts, drift control and the
+// contact checks, after the state was integrated from data.x_start (t0).
+void contact_after_step(const Model& model, Data& data, double t0) {
+  locate_first_event(model, data, t0);
+  land_touching_elbows(model, data);
+  if (model.effects.stabilization == Stabilization::projection) stabilise(model, data);
+  check_contacts(model, data);
+}
+
+}  // namespace
+
+void reset_state(const Model& model, Data& data) {
+  const StateLayout s(model);
+  data.t = 0;
+  data.steps = 0;
+  data.x.setZero();
+  data.x.segment(s.q(), s.n) = or_zeros(model.initial.q, s.n);
+  data.x.segment(s.qd(), s.n) = or_zeros(model.initial.qd, s.n);
+  if (s.current >= 0) data.x.segment(s.current, s.n) = or_zeros(model.initial.current, s.n);
+  const Controller* controller = data.controller.get();
+  if (!controller || !controller->plan || controller->spec.kind == ControllerSpec::Kind::open_loop)
+    return;
+  const Plan& plan = *controller->plan;
+  data.x.segment(s.q(), s.n) = plan.q[0];
+  data.x.segment(s.qd(), s.n) = plan.qd[0];
+  if (s.current >= 0 && controller->spec.kind != ControllerSpec::Kind::pd)
+    data.x.segment(s.current, s.n) =
+        (plan.v_ff[0] - model.km.cwiseProduct(plan.qd[0])).cwiseQuotient(model.resistance);
+}
+
+void evaluate_outputs(const Model& model, Data& data) {
+  const StateLayout s(model);
+  nonstiff_rates(model, data, data.t, data.x, data.k1);
+  data.q = data.x.segment(s.q(), s.n);
+  data.qd = data.x.segment(s.qd(), s.n);
+  if (s.current >= 0) data.current = data.x.segment(s.current, s.n);
+  // nonstiff_rates leaves the full di/dt in data.current_rate (motor_stage).
+  stored_energy(model, data, data.qd, data.current, data.energy);
+  data.energy.electrical_in = data.x[s.energy];
+  data.energy.joule = data.x[s.energy + 1];
+  data.energy.viscous = data.x[s.energy + 2];
+  if (s.external >= 0) data.energy.external = data.x[s.external];
+  if (!model.effects.contact) return;
+  data.energy.friction = data.x[s.energy + 3];
+  data.energy.normal_work = data.x[s.energy + 4];
+  data.energy.impact_loss = data.contact.impact_loss;
+  data.energy.projection = data.contact.projection_energy;
+}
+
+void reset(const Model& model, Data& data) {
+  check_data(model, data);
+  prepare_integrator(model, data);
+  reset_state(model, data);
+  data.failure = Failure{};
+  data.log.clear();
+  if (model.effects.contact) {
+    if (!data.contact.world) data.contact.world = std::make_shared<CollisionWorld>(model);
+    select_active_set(model, data);
+  }
+  evaluate_outputs(model, data);
+  data.energy_initial = data.energy;
+}
+
+bool finished(const Model& model, const Data& data) {
+  return model.options.duration - data.t <= 1e-3 * model.options.step;
+}
+
+void step(const Model& model, Data& data) {
+  check_data(model, data);
+  data.log.clear();
+  if (model.effects.contact && !select_active_set(model, data)) return;
+  const double t0 = data.t;
+  data.x_start = data.x;
+  integrate_step(model, data, step_length(model, data));
+  if (model.effects.contact) contact_after_step(model, data, t0);
+  check_state(data);
+}
+
+}  // namespace elbowsim
