@@ -25,7 +25,7 @@ void step_cost(benchmark::State& state, const Model& model) {
   reset_state(model, data);
   for (auto _ : state) {
     integrate_step(model, data);
-    if (data.steps % 1000 == 0) reset_state(model, data);  // stay near the start
+    if (data.step_count % 1000 == 0) reset_state(model, data);  // stay near the start
     benchmark::DoNotOptimize(data.x.data());
   }
 }

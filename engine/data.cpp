@@ -37,7 +37,7 @@ Data::Data(const Model& model)
   state_size = m;
   x = x_start = k1 = k2 = k3 = k4 = x_a = x_b = x_c = Eigen::VectorXd::Zero(m);
   lambda = Eigen::ArrayXd::Zero(m);
-  for (StepCoefficients* c : {&step, &partial})
+  for (EtdCoefficients* c : {&etd_full, &etd_short})
     c->exp_h = c->exp_half = c->phi1_half = c->phi1_h = c->f1 = c->f2 = c->f3 = lambda;
 }
 

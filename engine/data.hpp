@@ -84,11 +84,11 @@ struct Data {
   Eigen::VectorXd x, x_start, k1, k2, k3, k4, x_a, x_b, x_c;
   Eigen::ArrayXd lambda;  // stiff linear rates per component of x (derivative.hpp)
   // Exponential-integrator coefficients for one step length h (integrator.cpp):
-  // `step` for the scene's step, `partial` for shortened steps (events, the end).
-  struct StepCoefficients {
+  // `etd_full` for the scene's step, `etd_short` for shortened steps (events, the end).
+  struct EtdCoefficients {
     double h = 0;
     Eigen::ArrayXd exp_h, exp_half, phi1_half, phi1_h, f1, f2, f3;
-  } step, partial;
+  } etd_full, etd_short;
 
   ContactData contact;
 
@@ -98,7 +98,7 @@ struct Data {
 
   EnergyTerms energy;           // at time t
   EnergyTerms energy_initial;   // at t = 0
-  long steps = 0;
+  long step_count = 0;      // steps taken since reset()
 
   // --- what the last step reported, and why the run must stop --------------
   StepLog log;

@@ -80,7 +80,7 @@ void apply_decision(const Model& model, Data& data) {
 void fail(Data& data, Failure::Kind kind) {
   data.failure.kind = kind;
   data.failure.t = data.t;
-  data.failure.step = data.steps;
+  data.failure.step = data.step_count;
 }
 
 }  // namespace

@@ -37,6 +37,10 @@ class CollisionWorld {
   // build none).
   static long worlds_built();
 
+  // How many blocks Bullet has allocated in this process (its btAlignedAlloc, which
+  // bypasses operator new): a query must not add to it once the world exists.
+  static long bullet_allocations();
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

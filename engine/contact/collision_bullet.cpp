@@ -25,10 +25,12 @@
 // 0 so that the box is exactly the table box. Then, while a sphere's centre is outside the
 // box (distance > -radius), the distance is exact to rounding.
 //
-// The btCollisionWorld (dispatcher, Dbvt broadphase) owns the objects and their poses; its
-// broadphase picks the link-box pairs worth a narrow-phase query. Elbow queries cannot use
-// it (the nearest box may be far away): they try every box whose bounding sphere could still
-// beat the best distance found so far.
+// Broad phase. A link-box pair goes to GJK only when their axis-aligned bounding boxes
+// (btCollisionShape::getAabb at the current poses) overlap, so links far from every box
+// cost a few comparisons. We do not use btCollisionWorld's Dbvt broadphase: for a handful
+// of links and boxes its tree and pair cache cost more than the direct test, and they grow
+// (allocate) as pairs appear. Elbow queries cannot use AABBs (the nearest box may be far
+// away): they try every box whose bounding sphere could still beat the best distance so far.
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
@@ -38,6 +40,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <limits>
 
 #include "engine/contact/collision.hpp"
@@ -52,11 +55,19 @@ namespace {
 
 std::atomic<long> g_worlds_built{0};
 
-// Collision filter groups: only link-table pairs ever enter the broadphase pair cache.
-constexpr int kLinkGroup = 1 << 6;
-constexpr int kTableGroup = 1 << 7;
-constexpr int kElbowGroup = 1 << 8;
-// What a collision object stands for (its user index 2; user index 1 is its number).
+// Bullet's allocations, counted (they go to malloc, unseen by operator new).
+std::atomic<long> g_bullet_allocations{0};
+void* counting_alloc(std::size_t size) {
+  ++g_bullet_allocations;
+  return std::malloc(size);
+}
+void counting_free(void* block) { std::free(block); }
+const bool g_counting_installed = [] {
+  btAlignedAllocSetCustom(counting_alloc, counting_free);
+  return true;
+}();
+
+// What a collision object stands for.
 enum Kind { kElbow = 0, kLink = 1, kBox = 2 };
 
 btVector3 to_bt(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
@@ -101,47 +112,30 @@ ClosestPoints closest_points(const btCollisionObject& a, const btCollisionObject
 }  // namespace
 
 struct CollisionWorld::Impl {
-  // Declared before the world: the world's destructor still reads the objects, and the
-  // world needs the dispatcher and broadphase to exist.
-  btDefaultCollisionConfiguration configuration;
-  btCollisionDispatcher dispatcher{&configuration};
-  btDbvtBroadphase broadphase;
   std::vector<std::unique_ptr<btConvexShape>> shapes;
   std::vector<std::unique_ptr<btCollisionObject>> elbows, links, boxes;  // one per model item
   std::vector<btTransform> capsule_in_link;  // [links] capsule frame in the link frame
   std::vector<Eigen::Vector3d> box_center;   // [boxes] world [m]
   std::vector<double> box_reach;             // [boxes] half diagonal [m]
-  btCollisionWorld world{&dispatcher, &broadphase, &configuration};
+  std::vector<btVector3> box_min, box_max;   // [boxes] world AABB [m]
   btVoronoiSimplexSolver simplex;
   btGjkEpaPenetrationDepthSolver epa;
 
-  // Adds one object to the world; only objects whose group and mask match make broadphase pairs.
-  void add(std::unique_ptr<btConvexShape> shape, const btTransform& pose, Kind kind, int index,
-           int group, int mask) {
+  void add(std::unique_ptr<btConvexShape> shape, const btTransform& pose, Kind kind) {
     auto object = std::make_unique<btCollisionObject>();
     object->setCollisionShape(shape.get());
     object->setWorldTransform(pose);
-    object->setUserIndex(index);
-    object->setUserIndex2(kind);
-    if (kind == kBox) object->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
-    world.addCollisionObject(object.get(), group, mask);
     shapes.push_back(std::move(shape));
     (kind == kElbow ? elbows : kind == kLink ? links : boxes).push_back(std::move(object));
-  }
-
-  ~Impl() {
-    for (auto* list : {&elbows, &links, &boxes})
-      for (auto& object : *list) world.removeCollisionObject(object.get());
   }
 };
 
 CollisionWorld::CollisionWorld(const Model& model) : impl_(std::make_unique<Impl>()) {
   Impl& w = *impl_;
-  w.world.setForceUpdateAllAabbs(false);  // boxes are static; links are updated by hand
-  // Elbow spheres (poses set per query; they never pair in the broadphase).
+  // Elbow spheres (poses set per query).
   for (int k = 0; k < static_cast<int>(model.elbows.size()); ++k)
     w.add(std::make_unique<btSphereShape>(model.elbows[k].radius), btTransform::getIdentity(),
-          kElbow, k, kElbowGroup, 0);
+          kElbow);
   // Link capsules along the link, from its frame origin to its tip (a sphere if tip = 0).
   for (int i = 0; i < model.dof; ++i) {
     const Link& link = model.links[i];
@@ -151,17 +145,21 @@ CollisionWorld::CollisionWorld(const Model& model) : impl_(std::make_unique<Impl
                          .toRotationMatrix()
                    : Eigen::Matrix3d::Identity();
     w.capsule_in_link.push_back(to_bt(R, 0.5 * link.tip));
-    w.add(std::make_unique<btCapsuleShapeX>(link.radius, length), btTransform::getIdentity(), kLink,
-          i, kLinkGroup, kTableGroup);
+    w.add(std::make_unique<btCapsuleShapeX>(link.radius, length), btTransform::getIdentity(), kLink);
   }
   // Table boxes with sharp edges (margin 0), fixed in the world.
   for (int b = 0; b < static_cast<int>(model.table.size()); ++b) {
     const TableBox& box = model.table[b];
     auto shape = std::make_unique<btBoxShape>(to_bt(0.5 * box.size));
     shape->setMargin(0);
-    w.add(std::move(shape), to_bt(box.rotation, box.center), kBox, b, kTableGroup, kLinkGroup);
+    const btTransform pose = to_bt(box.rotation, box.center);
+    btVector3 lo, hi;
+    shape->getAabb(pose, lo, hi);
+    w.add(std::move(shape), pose, kBox);
     w.box_center.push_back(box.center);
     w.box_reach.push_back(0.5 * box.size.norm());
+    w.box_min.push_back(lo);
+    w.box_max.push_back(hi);
   }
   ++g_worlds_built;
 }
@@ -169,6 +167,11 @@ CollisionWorld::CollisionWorld(const Model& model) : impl_(std::make_unique<Impl
 CollisionWorld::~CollisionWorld() = default;
 
 long CollisionWorld::worlds_built() { return g_worlds_built.load(); }
+
+long CollisionWorld::bullet_allocations() {
+  (void)g_counting_installed;
+  return g_bullet_allocations.load();
+}
 
 void CollisionWorld::elbow_contacts(const Model& model, const Data& data,
                                     std::vector<ElbowContact>& out) {
@@ -206,27 +209,19 @@ void CollisionWorld::link_penetrations(const Model& model, const Data& data,
   out.clear();
   if (out.capacity() < w.links.size() * w.boxes.size())
     out.reserve(w.links.size() * w.boxes.size());
-  // Place each capsule (link pose times its fixed offset) and refresh its broadphase box.
+  // Place each capsule (link pose times its fixed offset); GJK for the boxes its AABB meets.
+  // Pairs come out sorted by link, then box.
   for (int i = 0; i < static_cast<int>(w.links.size()); ++i) {
     btCollisionObject& capsule = *w.links[i];
     capsule.setWorldTransform(to_bt(data.rotation[i], data.origin[i]) * w.capsule_in_link[i]);
-    w.world.updateSingleAabb(&capsule);
+    btVector3 lo, hi;
+    capsule.getCollisionShape()->getAabb(capsule.getWorldTransform(), lo, hi);
+    for (int b = 0; b < static_cast<int>(w.boxes.size()); ++b) {
+      if (!TestAabbAgainstAabb2(lo, hi, w.box_min[b], w.box_max[b])) continue;
+      const ClosestPoints c = closest_points(capsule, *w.boxes[b], w.simplex, w.epa);
+      if (c.valid && -c.distance > model.contact.link_warning_depth) out.push_back({i, b, -c.distance});
+    }
   }
-  // Candidates: link-box pairs whose (padded) bounding boxes overlap; then exact depths.
-  w.world.computeOverlappingPairs();
-  btBroadphasePairArray& pairs = w.world.getPairCache()->getOverlappingPairArray();
-  for (int p = 0; p < pairs.size(); ++p) {
-    auto* a = static_cast<const btCollisionObject*>(pairs[p].m_pProxy0->m_clientObject);
-    auto* b = static_cast<const btCollisionObject*>(pairs[p].m_pProxy1->m_clientObject);
-    if (a->getUserIndex2() == kBox) std::swap(a, b);
-    if (a->getUserIndex2() != kLink || b->getUserIndex2() != kBox) continue;
-    const ClosestPoints c = closest_points(*a, *b, w.simplex, w.epa);
-    if (c.valid && -c.distance > model.contact.link_warning_depth)
-      out.push_back({a->getUserIndex(), b->getUserIndex(), -c.distance});
-  }
-  std::sort(out.begin(), out.end(), [](const LinkPenetration& x, const LinkPenetration& y) {
-    return x.link != y.link ? x.link < y.link : x.box < y.box;
-  });
 }
 
 }  // namespace elbowsim

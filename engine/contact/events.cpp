@@ -27,7 +27,7 @@ void redo_step(const Model& model, Data& data, double t0, double tau) {
   data.x = data.x_start;
   data.t = t0;
   integrate_step(model, data, tau);
-  --data.steps;
+  --data.step_count;
 }
 
 // Illinois (modified regula falsi) on the event function over the step, each

@@ -26,7 +26,7 @@ double phi(int k, double z) {
 
 namespace {
 
-using Coefficients = Data::StepCoefficients;
+using Coefficients = Data::EtdCoefficients;
 
 void compute_coefficients(const Eigen::ArrayXd& lambda, double h, Coefficients& c) {
   c.h = h;
@@ -82,7 +82,7 @@ void step_with(const Model& model, Data& data, const Coefficients& c) {
     case IntegratorKind::semi_implicit_euler: semi_implicit_euler_step(model, data, c); break;
     case IntegratorKind::rk4: etdrk4_step(model, data, c); break;
   }
-  ++data.steps;
+  ++data.step_count;
   data.t += c.h;
 }
 
@@ -90,15 +90,15 @@ void step_with(const Model& model, Data& data, const Coefficients& c) {
 
 void prepare_integrator(const Model& model, Data& data) {
   stiff_rates(model, data.lambda);
-  compute_coefficients(data.lambda, model.options.step, data.step);
+  compute_coefficients(data.lambda, model.options.step, data.etd_full);
 }
 
-void integrate_step(const Model& model, Data& data) { step_with(model, data, data.step); }
+void integrate_step(const Model& model, Data& data) { step_with(model, data, data.etd_full); }
 
 void integrate_step(const Model& model, Data& data, double h) {
-  if (h == data.step.h) return step_with(model, data, data.step);
-  if (h != data.partial.h) compute_coefficients(data.lambda, h, data.partial);
-  step_with(model, data, data.partial);
+  if (h == data.etd_full.h) return step_with(model, data, data.etd_full);
+  if (h != data.etd_short.h) compute_coefficients(data.lambda, h, data.etd_short);
+  step_with(model, data, data.etd_short);
 }
 
 }  // namespace elbowsim

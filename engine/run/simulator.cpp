@@ -29,7 +29,7 @@ void record(const Model& model, Data& data, RunResult& result) {
 void finish(const Model& model, const Data& data, RunResult& result) {
   result.completed = !data.failure;
   result.failure = describe(model, data.failure);
-  result.steps = data.steps;
+  result.steps = data.step_count;
   result.final_time = data.t;
   result.energy_initial = data.energy_initial;
   result.energy_final = data.energy;
@@ -62,8 +62,8 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
     step(model, data);
     collect_log(model, data, result);
     if (data.failure) break;
-    if (data.steps % every == 0 || finished(model, data)) record(model, data, result);
-    if (options.progress && data.steps % progress_every == 0)
+    if (data.step_count % every == 0 || finished(model, data)) record(model, data, result);
+    if (options.progress && data.step_count % progress_every == 0)
       options.progress(data.t / model.options.duration);
   }
   finish(model, data, result);

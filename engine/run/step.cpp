@@ -34,7 +34,7 @@ void check_state(Data& data) {
   if (data.x.allFinite() && data.x.cwiseAbs().maxCoeff() < 1e12) return;
   data.failure.kind = Failure::Kind::diverged;
   data.failure.t = data.t;
-  data.failure.step = data.steps;
+  data.failure.step = data.step_count;
 }
 
 // Landings and releases inside the step, impacts, drift control and the
@@ -51,7 +51,7 @@ void contact_after_step(const Model& model, Data& data, double t0) {
 void reset_state(const Model& model, Data& data) {
   const StateLayout s(model);
   data.t = 0;
-  data.steps = 0;
+  data.step_count = 0;
   data.x.setZero();
   data.x.segment(s.q(), s.n) = or_zeros(model.initial.q, s.n);
   data.x.segment(s.qd(), s.n) = or_zeros(model.initial.qd, s.n);
