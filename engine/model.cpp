@@ -169,7 +169,7 @@ void finalize(Model& model) {
   require(!model.effects.friction || model.effects.contact, "friction needs contact");
   if (model.damping.size() == 0) model.damping = Eigen::VectorXd::Zero(n);
 
-  // Reflected motor constants (DESIGN.md §1): Km = K k, Jm = Im k^2, Dm = dm k^2.
+  // Reflected motor constants (docs/model.md, Motors): Km = K k, Jm = Im k^2, Dm = dm k^2.
   model.km = model.armature = model.resistance = model.inductance = model.voltage_limit =
       Eigen::VectorXd::Zero(n);
   model.viscous = model.effects.damping ? model.damping : Eigen::VectorXd::Zero(n);

@@ -24,7 +24,7 @@ const char* to_string(DynamicsMethod d);
 const char* to_string(Stabilization s);
 const char* to_string(EventTiming e);
 
-// Which physical effects the scene simulates (DESIGN.md §3). An effect that is
+// Which physical effects the scene simulates (docs/model.md, Effects). An effect that is
 // off costs nothing: its terms are skipped, not multiplied by zero.
 struct Effects {
   bool gravity = true;        // G(q)
@@ -84,7 +84,7 @@ struct Link {
   Eigen::Vector3d tip = Eigen::Vector3d::Zero();           // [m] far end of the link
 };
 
-// DC servo of one joint (DESIGN.md §1, paper eq. 16-27). Reflected to the joint
+// DC servo of one joint (docs/model.md, Motors; paper eq. 16-27). Reflected to the joint
 // through the gear ratio k: Km = K k, Jm = Im k^2, Dm = dm k^2.
 struct Motor {
   double resistance = 1.0;         // R [ohm] > 0

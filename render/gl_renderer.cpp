@@ -362,7 +362,7 @@ void collect(const Scene& s, std::array<std::vector<float>, shape_count>& out) {
               s.desired_hand_path.color);
 }
 
-// Key light mostly from above (world z, DESIGN.md §4), a little from the
+// Key light mostly from above (world z, docs/conventions.md), a little from the
 // viewer's side and left, so that tops are brighter than the faces toward
 // the camera in every view; a dim fill from the viewer's right.
 void set_lights(GLuint program, const Camera& camera) {

@@ -1,7 +1,8 @@
 // An offscreen OpenGL 3.3 core context from OSMesa (Mesa's llvmpipe or
 // softpipe): no X, no window, no GPU. The only file that includes osmesa.h
-// (STYLE.md lesson 5). Drawing goes to framebuffer objects the renderer makes
-// (gl_renderer.hpp); the context's own buffer is a 1x1 placeholder.
+// (one file per library, docs/architecture.md). Drawing goes to framebuffer
+// objects the renderer makes (gl_renderer.hpp); the context's own buffer is a
+// 1x1 placeholder.
 #pragma once
 
 #include <string>

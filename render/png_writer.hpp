@@ -1,4 +1,4 @@
-// PNG files via libpng: the only file that includes png.h (STYLE.md lesson 5).
+// PNG files via libpng: the only file that includes png.h (docs/architecture.md).
 #pragma once
 
 #include <cstdint>

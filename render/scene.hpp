@@ -1,5 +1,5 @@
 // The abstract scene of one frame: what to draw, where, in which colour, with
-// no GL (STYLE.md lesson 12, after MuJoCo's mjv_updateScene). Built from the
+// no GL, so tests can read it (after MuJoCo's mjv_updateScene). Built from the
 // Model and one played-back state; gl_renderer.hpp draws it, tests read it.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Scenario loader, bad input: one case per class of error, each naming file,
-// line, column and key path (STYLE.md §6). Fixtures and CHECK_ERROR are in
+// line, column and key path, so a user can find the mistake. Fixtures and CHECK_ERROR are in
 // test_scenario_helpers.hpp; line numbers count from the fixture's first line.
 #include <doctest/doctest.h>
 

@@ -1,6 +1,6 @@
 // robot.planar and robot.joints: the joints and links of the arm.
 //
-// Planar shorthand (DESIGN.md §4): the arm lies in the x-z plane, every joint
+// Planar shorthand (docs/conventions.md): the arm lies in the x-z plane, every joint
 // axis is -y (a positive angle turns +x toward +z), joint i sits at the tip of
 // link i-1, and each link's frame has x along the link:
 //

@@ -1,4 +1,4 @@
-// motors: DC servo parameters (DESIGN.md §1, paper eq. 16-27), a default for
+// motors: DC servo parameters (docs/model.md, Motors; paper eq. 16-27), a default for
 // all joints plus optional per-joint overrides. Read and validated even when
 // effects.motor is none, so that switching the motor on later cannot fail.
 #include "app/scenario/checks.hpp"
