@@ -42,29 +42,24 @@ Model prototype_arm() {
 
 // 5 s at 1 kHz / 10 (like output.every: 10): the arm waves, elbows rest and lift.
 Recording prototype_recording(const Model& model) {
-  Recording rec;
-  rec.columns.push_back({"time", "s"});
-  for (int j = 0; j < 8; ++j)
-    rec.columns.push_back({std::string("q").append(std::to_string(j)), "rad"});
-  for (const char* c : {"hand_x", "hand_y", "hand_z"}) rec.columns.push_back({c, "m"});
-  for (const Elbow& e : model.elbows) {
-    rec.columns.push_back({"fn_" + e.name, "N"});
-    rec.columns.push_back({"rest_" + e.name, "1"});
-  }
-  rec.columns.push_back({"E_in", "J"});
+  TrajectoryLayout::Groups groups{8, false, false, true, {}};
+  for (const Elbow& e : model.elbows) groups.elbows.push_back(e.name);
+  Recording rec{TrajectoryLayout(groups)};
+  const TrajectoryLayout& L = rec.layout;
   for (int k = 0; k <= 500; ++k) {
     const double t = 0.01 * k;
-    rec.values.push_back(t);
-    for (int j = 0; j < 8; ++j)
-      rec.values.push_back(0.35 * std::sin(2 * std::numbers::pi * 0.4 * t + 0.7 * j) - 0.05);
-    const double hx = 0.7 + 0.1 * std::sin(t), hz = 0.1 + 0.05 * std::cos(2 * t);
-    rec.values.insert(rec.values.end(), {hx, 0.0, hz});
+    std::vector<double> row(static_cast<std::size_t>(L.size()), 0.0);
+    row[L.time()] = t;
+    for (int j = 0; j < 8; ++j) row[L.q(j)] = 0.35 * std::sin(2 * std::numbers::pi * 0.4 * t + 0.7 * j) - 0.05;
+    row[L.hand(0)] = 0.7 + 0.1 * std::sin(t);
+    row[L.hand(2)] = 0.1 + 0.05 * std::cos(2 * t);
     for (int e = 0; e < 3; ++e) {
       const bool rest = std::sin(2 * t + e) > -0.3;
-      rec.values.insert(rec.values.end(),
-                        {rest ? 8.0 + 3 * std::sin(3 * t + e) : 0.0, rest ? 1.0 : 0.0});
+      row[L.elbow_force(e)] = rest ? 8.0 + 3 * std::sin(3 * t + e) : 0.0;
+      row[L.elbow_resting(e)] = rest ? 1.0 : 0.0;
     }
-    rec.values.push_back(2.0 * t);
+    row[L.energy(Energy::in)] = 2.0 * t;
+    rec.values.insert(rec.values.end(), row.begin(), row.end());
   }
   return rec;
 }

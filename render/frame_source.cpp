@@ -21,11 +21,13 @@ double reach(const Model& model) {
 Eigen::AlignedBox3d swept_bounds(const Model& model, const Playback& playback,
                                  const SceneOptions& options) {
   Eigen::AlignedBox3d out;
+  Data kinematics(model);
   const std::size_t rows = playback.samples();
   const std::size_t stride = std::max<std::size_t>(1, rows / 240);
   for (std::size_t r = 0; r < rows; r += stride)
-    out.extend(arm_bounds(build_scene(model, playback.at(playback.time(r)), {}, options)));
-  out.extend(arm_bounds(build_scene(model, playback.at(playback.end_time()), {}, options)));
+    out.extend(
+        arm_bounds(build_scene(model, kinematics, playback.at(playback.time(r)), {}, options)));
+  out.extend(arm_bounds(build_scene(model, kinematics, playback.at(playback.end_time()), {}, options)));
   for (const Eigen::Vector3d& p : playback.hand_path(playback.end_time())) out.extend(p);
   for (const Eigen::Vector3d& p : playback.desired_hand_path()) out.extend(p);
   return out;
@@ -66,6 +68,7 @@ void place_grid(SceneOptions& options, const Eigen::AlignedBox3d& frame, bool ta
 FrameSource::FrameSource(const Model& model, const Recording& recording,
                          const RenderSettings& settings, std::string title)
     : model_(model),
+      kinematics_(model),
       playback_(model, recording),
       camera_(settings.camera),
       title_(std::move(title)) {
@@ -81,7 +84,7 @@ FrameSource::FrameSource(const Model& model, const Recording& recording,
 }
 
 Scene FrameSource::scene(double t) const {
-  return build_scene(model_, playback_.at(t), playback_.hand_path(t), options_,
+  return build_scene(model_, kinematics_, playback_.at(t), playback_.hand_path(t), options_,
                      playback_.desired_hand_path());
 }
 

@@ -36,6 +36,7 @@ class FrameSource {
 
  private:
   const Model& model_;
+  mutable Data kinematics_;  // forward-kinematics scratch for scene(); one per source
   Playback playback_;
   CameraSettings camera_;
   std::string title_;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/meshes.hpp"
+#include "render/scene.hpp"
 
 namespace elbowsim {
 
@@ -128,16 +129,6 @@ void add_instance(std::vector<float>& out, const Eigen::Matrix3d& linear, const 
   out.insert(out.end(), model.data(), model.data() + 16);
   out.insert(out.end(), normal.data(), normal.data() + 9);
   out.insert(out.end(), {color.r, color.g, color.b, 1.0f});
-}
-
-// Rotation whose z axis is the unit vector n.
-Eigen::Matrix3d frame_with_z(const Eigen::Vector3d& n) {
-  const Eigen::Vector3d helper =
-      std::abs(n.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
-  const Eigen::Vector3d x = helper.cross(n).normalized();
-  Eigen::Matrix3d r;
-  r << x, n.cross(x), n;
-  return r;
 }
 
 // A unit shape along z from a to b with the given radius.

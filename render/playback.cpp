@@ -8,9 +8,8 @@ namespace elbowsim {
 
 namespace {
 
-// The values of a named column, or empty if the recording has none.
-std::vector<double> column(const Recording& rec, const std::string& name, std::size_t rows) {
-  const int c = rec.column(name);
+// The first `rows` values of column c (a layout index), or empty when c < 0.
+std::vector<double> column(const Recording& rec, int c, std::size_t rows) {
   std::vector<double> out;
   if (c < 0) return out;
   out.reserve(rows);
@@ -18,17 +17,10 @@ std::vector<double> column(const Recording& rec, const std::string& name, std::s
   return out;
 }
 
-std::vector<double> required(const Recording& rec, const std::string& name, std::size_t rows,
-                             const std::string& why) {
-  if (rec.column(name) < 0)
-    throw std::invalid_argument("the trajectory has no column \"" + name + "\"" + why);
-  return column(rec, name, rows);
-}
-
 // Rows up to (not including) the first one with a non-finite value.
 std::size_t finite_rows(const Recording& rec) {
   for (std::size_t r = 0; r < rec.rows(); ++r)
-    for (std::size_t c = 0; c < rec.columns.size(); ++c)
+    for (std::size_t c = 0; c < rec.columns().size(); ++c)
       if (!std::isfinite(rec.at(r, c))) return r;
   return rec.rows();
 }
@@ -44,21 +36,22 @@ std::vector<double> rising_edges(const std::vector<double>& flag, const std::vec
 }  // namespace
 
 Playback::Playback(const Model& model, const Recording& rec) : dof_(model.dof) {
+  const TrajectoryLayout& L = rec.layout;
+  if (L.dof() != dof_)
+    throw std::invalid_argument("the trajectory has " + std::to_string(L.dof()) +
+                                " joints, the model " + std::to_string(dof_));
   const std::size_t rows = finite_rows(rec);
-  time_ = required(rec, "time", rows, "");
+  time_ = column(rec, L.time(), rows);
   if (time_.empty()) throw std::invalid_argument("the trajectory has no (finite) samples");
-  const std::string why = " (the model has " + std::to_string(dof_) + " joints)";
-  // Names appended piece by piece: `"q" + std::to_string(j)` trips GCC 12's -Wrestrict.
-  for (int j = 0; j < dof_; ++j)
-    q_.push_back(required(rec, std::string("q").append(std::to_string(j)), rows, why));
-  for (const char* axis : {"hand_x", "hand_y", "hand_z"}) hand_.push_back(column(rec, axis, rows));
-  if (hand_[0].empty() || hand_[1].empty() || hand_[2].empty()) hand_.clear();
+  for (int j = 0; j < dof_; ++j) q_.push_back(column(rec, L.q(j), rows));
+  for (int axis = 0; axis < 3; ++axis) hand_.push_back(column(rec, L.hand(axis), rows));
   for (const Elbow& e : model.elbows) {
-    fn_.push_back(column(rec, "fn_" + e.name, rows));
-    rest_.push_back(column(rec, "rest_" + e.name, rows));
+    const int k = L.elbow(e.name);  // -1: contact was off, nothing recorded
+    fn_.push_back(column(rec, k < 0 ? -1 : L.elbow_force(k), rows));
+    rest_.push_back(column(rec, k < 0 ? -1 : L.elbow_resting(k), rows));
     landings_.push_back(rising_edges(rest_.back(), time_));
   }
-  energy_in_ = column(rec, "E_in", rows);
+  energy_in_ = column(rec, L.energy(Energy::in), rows);
   // Hand path: drop samples closer than 1 mm to the last kept one.
   for (std::size_t r = 0; !hand_.empty() && r < rows; ++r) {
     const Eigen::Vector3d p(hand_[0][r], hand_[1][r], hand_[2][r]);
@@ -72,7 +65,7 @@ Playback::Playback(const Model& model, const Recording& rec) : dof_(model.dof) {
   }
   // Desired hand path: all of it, thinned the same way, the last sample kept.
   std::vector<std::vector<double>> d;
-  for (const char* axis : {"hand_d_x", "hand_d_y", "hand_d_z"}) d.push_back(column(rec, axis, rows));
+  for (int axis = 0; axis < 3; ++axis) d.push_back(column(rec, L.hand_desired(axis), rows));
   if (!d[0].empty() && !d[1].empty() && !d[2].empty()) {
     for (std::size_t r = 0; r < rows; ++r) {
       const Eigen::Vector3d p(d[0][r], d[1][r], d[2][r]);

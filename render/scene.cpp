@@ -31,7 +31,8 @@ double distance_to_box(const TableBox& box, const Eigen::Vector3d& p) {
   return outside.norm();
 }
 
-// Unit vectors orthogonal to n (n unit).
+}  // namespace
+
 Eigen::Matrix3d frame_with_z(const Eigen::Vector3d& n) {
   const Eigen::Vector3d helper =
       std::abs(n.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
@@ -40,6 +41,8 @@ Eigen::Matrix3d frame_with_z(const Eigen::Vector3d& n) {
   r << x, n.cross(x), n;
   return r;
 }
+
+namespace {
 
 // A plate behind joint 0: its normal along the joint axis, on the side the
 // axis points away from (for a planar arm, behind the arm as seen from the front).
@@ -150,8 +153,15 @@ Eigen::Vector3d table_up(const Model& model, const Eigen::Vector3d& point) {
 Scene build_scene(const Model& model, const PlaybackState& state,
                   const std::vector<Eigen::Vector3d>& hand_path, const SceneOptions& options,
                   const std::vector<Eigen::Vector3d>& desired_path) {
+  Data kinematics(model);
+  return build_scene(model, kinematics, state, hand_path, options, desired_path);
+}
+
+Scene build_scene(const Model& model, Data& kinematics, const PlaybackState& state,
+                  const std::vector<Eigen::Vector3d>& hand_path, const SceneOptions& options,
+                  const std::vector<Eigen::Vector3d>& desired_path) {
   const SceneStyle& style = options.style;
-  Data data(model);
+  Data& data = kinematics;
   forward_kinematics(model, data, state.q);
   Scene scene;
   scene.background = style.background;

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+#include "engine/data.hpp"
 #include "engine/model.hpp"
 #include "render/playback.hpp"
 
@@ -112,12 +113,20 @@ struct Scene {
   LineSet grid;                     // ground grid at floor_z
 };
 
-// The scene of `state` (joint angles placed with forward_kinematics on a Data
-// made here), with the traced `hand_path` (Playback::hand_path) and the whole
-// `desired_path` (Playback::desired_hand_path; empty: none drawn).
+// The scene of `state` (joint angles placed with forward_kinematics in
+// `kinematics`, a Data of the model kept by the caller), with the traced
+// `hand_path` (Playback::hand_path) and the whole `desired_path`
+// (Playback::desired_hand_path; empty: none drawn).
+Scene build_scene(const Model& model, Data& kinematics, const PlaybackState& state,
+                  const std::vector<Eigen::Vector3d>& hand_path, const SceneOptions& options,
+                  const std::vector<Eigen::Vector3d>& desired_path = {});
+// The same with a Data made for the call (one scene; frame loops keep one Data).
 Scene build_scene(const Model& model, const PlaybackState& state,
                   const std::vector<Eigen::Vector3d>& hand_path, const SceneOptions& options,
                   const std::vector<Eigen::Vector3d>& desired_path = {});
+
+// A rotation whose z axis is the unit vector n (x and y: any orthonormal pair).
+Eigen::Matrix3d frame_with_z(const Eigen::Vector3d& n);
 
 // Axis-aligned bounds of the arm: links, joints, elbows, base and forces [m].
 Eigen::AlignedBox3d arm_bounds(const Scene& scene);

@@ -5,48 +5,22 @@
 
 namespace elbowsim::report {
 
-std::vector<double> column(const Recording& rec, const std::string& name) {
-  const int c = rec.column(name);
-  if (c < 0) return {};
-  std::vector<double> values(rec.rows());
-  for (std::size_t row = 0; row < rec.rows(); ++row) values[row] = rec.at(row, c);
-  return values;
+std::vector<double> column(const Recording& rec, int index) { return rec.series(index); }
+
+std::string column_name(const Recording& rec, int index) {
+  return index < 0 ? "" : rec.columns()[static_cast<std::size_t>(index)].name;
 }
 
-std::string column_unit(const Recording& rec, const std::string& name) {
-  const int c = rec.column(name);
-  return c < 0 ? "" : rec.columns[c].unit;
-}
-
-std::vector<std::string> indexed_columns(const Recording& rec, const std::string& prefix) {
-  std::vector<std::string> names;
-  while (rec.column(prefix + std::to_string(names.size())) >= 0)
-    names.push_back(prefix + std::to_string(names.size()));
-  return names;
-}
-
-std::vector<std::string> elbow_names(const Recording& rec) {
-  std::vector<std::string> names;
-  for (const Column& c : rec.columns) {
-    for (const char* prefix : {"fn_", "d_", "rest_"}) {
-      const std::string p = prefix;
-      if (c.name.rfind(p, 0) != 0 || c.name.size() == p.size()) continue;
-      const std::string elbow = c.name.substr(p.size());
-      bool known = false;
-      for (const std::string& n : names) known = known || n == elbow;
-      if (!known) names.push_back(elbow);
-    }
-  }
-  return names;
+std::string column_unit(const Recording& rec, int index) {
+  return index < 0 ? "" : rec.columns()[static_cast<std::size_t>(index)].unit;
 }
 
 std::vector<double> electrical_power(const Recording& rec) {
-  const auto volts = indexed_columns(rec, "v");
-  const auto amps = indexed_columns(rec, "i");
-  if (volts.empty() || volts.size() != amps.size()) return {};
+  const TrajectoryLayout& L = rec.layout;
+  if (!L.has_motors()) return {};
   std::vector<double> power(rec.rows(), 0.0);
-  for (std::size_t j = 0; j < volts.size(); ++j) {
-    const auto v = column(rec, volts[j]), i = column(rec, amps[j]);
+  for (int j = 0; j < L.dof(); ++j) {
+    const auto v = column(rec, L.voltage(j)), i = column(rec, L.current(j));
     for (std::size_t row = 0; row < power.size(); ++row) power[row] += v[row] * i[row];
   }
   return power;

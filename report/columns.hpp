@@ -1,6 +1,6 @@
-// Reading series out of a recorded trajectory by column name, and the few
-// series the report derives from them (electrical power, running integrals,
-// resting intervals).
+// Series read out of a recorded trajectory through its layout
+// (engine/recording/trajectory_layout.hpp), and the few series the report
+// derives from them (electrical power, running integrals, resting intervals).
 #pragma once
 
 #include <string>
@@ -11,17 +11,12 @@
 
 namespace elbowsim::report {
 
-// The values of a named column, one per row; empty when there is no such column.
-std::vector<double> column(const Recording& rec, const std::string& name);
+// The values of column `index` (from rec.layout), one per row; empty when index < 0.
+std::vector<double> column(const Recording& rec, int index);
 
-// The unit of a named column ("" when absent).
-std::string column_unit(const Recording& rec, const std::string& name);
-
-// Columns named prefix + 0, 1, 2, ... in order ("q" -> q0, q1; not qd0).
-std::vector<std::string> indexed_columns(const Recording& rec, const std::string& prefix);
-
-// Elbow names, from the fn_<elbow>, d_<elbow> and rest_<elbow> columns, in column order.
-std::vector<std::string> elbow_names(const Recording& rec);
+// The name and unit of column `index` ("" when index < 0).
+std::string column_name(const Recording& rec, int index);
+std::string column_unit(const Recording& rec, int index);
 
 // Electrical power into the motors, sum_j v_j i_j [W], per row; empty without
 // motor columns.

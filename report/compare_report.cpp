@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 #include "report/html.hpp"
 
@@ -123,13 +124,15 @@ std::string notices(const std::vector<RunData>& runs) {
 }
 
 std::string page(const std::vector<RunData>& runs, const Comparison& c, const FigureSet& figures,
-                 const fs::path& out) {
+                 const fs::path& out, const fs::path& json) {
   std::string names;
   for (const std::string& label : c.labels) names += (names.empty() ? "" : " vs ") + label;
   std::string p = html::page_begin("elbowsim comparison: " + names);
   p += "<header>\n<h1>Comparison: " + html::escape(names) + "</h1>\n<p class=\"meta\">" +
        std::to_string(runs.size()) + " recorded runs; relative differences are to " +
-       html::escape(c.labels[0]) + ". Numbers in comparison.json.</p>\n</header>\n";
+       html::escape(c.labels[0]) + ". Numbers in <a href=\"" +
+       html::escape(fs::relative(json, out).generic_string()) + "\">" +
+       html::escape(fs::relative(json, out).generic_string()) + "</a>.</p>\n</header>\n";
   p += html::notice("verdict", "Verdict", c.verdict, "verdict") + notices(runs);
   p += "<section id=\"runs-section\">\n<h2>Runs</h2>\n" + runs_table(runs, out) + "</section>\n";
   p += "<section id=\"metrics-section\">\n<h2>Metrics</h2>\n" + metrics_table(c) + "</section>\n";
@@ -142,15 +145,27 @@ std::string page(const std::vector<RunData>& runs, const Comparison& c, const Fi
 
 }  // namespace
 
-ComparisonFiles write_comparison_report(const std::vector<RunData>& runs, const fs::path& out) {
+std::pair<fs::path, fs::path> write_comparison_tables(const Comparison& comparison,
+                                                      const ComparisonTables& tables) {
+  const fs::path json = tables.folder / "comparison.json", csv = tables.folder / "comparison.csv";
+  html::write_file(json, comparison_json(comparison).dump(2) + "\n");
+  std::ostringstream text;
+  write_comparison_csv(text, comparison, tables.first_header);
+  html::write_file(csv, text.str());
+  return {json, csv};
+}
+
+ComparisonFiles write_comparison_report(const std::vector<RunData>& runs, const fs::path& out,
+                                        const ComparisonTables& tables) {
   fs::create_directories(out);
+  ComparisonTables where = tables;
+  if (where.folder.empty()) where.folder = out;
   ComparisonFiles files;
   files.comparison = compare_runs(runs);
+  std::tie(files.json, files.csv) = write_comparison_tables(files.comparison, where);
   files.figures = write_comparison_plots(runs, out);
-  files.json = out / "comparison.json";
-  html::write_file(files.json, comparison_json(files.comparison).dump(2) + "\n");
   files.html = out / "report.html";
-  html::write_file(files.html, page(runs, files.comparison, files.figures, out));
+  html::write_file(files.html, page(runs, files.comparison, files.figures, out, files.json));
   return files;
 }
 

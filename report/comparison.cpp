@@ -27,8 +27,10 @@ std::optional<double> relative_difference(const nlohmann::ordered_json& value,
   return (v - ref) / std::abs(ref);
 }
 
+// Numbers only: flags (completed, contact.enabled, ...) are not metrics to compare.
 void add_rows(const std::vector<std::vector<Metric>>& per_run, std::vector<ComparedMetric>& out) {
   for (const Metric& m : union_of(per_run)) {
+    if (m.value.is_boolean()) continue;
     ComparedMetric row{m.path, m.unit, {}, {}};
     for (const auto& metrics : per_run) {
       const Metric* found = find_metric(metrics, m.path);
@@ -136,12 +138,10 @@ std::vector<std::string> verdict(const std::vector<RunData>& runs, const Compari
     for (auto& s :
          smaller_is_better(table, "energy_final.electrical_in", "less", "electrical energy"))
       sentences.push_back(std::move(s));
-  // Accuracy: the engine's RMS hand error (summary.json metrics) when the runs
-  // have it, else the one computed from the recorded hand_error column.
+  // Accuracy: the RMS hand error of the runs' metrics.
   const char* accuracy = nullptr;
-  for (const char* path : {"trajectory.rms_hand_error", "metrics.hand_error_rms"})
-    for (const ComparedMetric& m : table.metrics)
-      if (m.path == path) accuracy = path;
+  for (const ComparedMetric& m : table.metrics)
+    if (m.path == "metrics.hand_error_rms") accuracy = "metrics.hand_error_rms";
   if (!accuracy)
     sentences.push_back("Hand accuracy is not compared: no run recorded a hand_error column.");
   else
@@ -152,34 +152,92 @@ std::vector<std::string> verdict(const std::vector<RunData>& runs, const Compari
 
 Comparison compare_runs(const std::vector<RunData>& runs) {
   Comparison c;
-  std::vector<std::vector<Metric>> from_summary, from_trajectory;
+  std::vector<std::vector<Metric>> per_run;
   for (const RunData& run : runs) {
     c.labels.push_back(run.label);
-    from_summary.push_back(summary_metrics(run.summary));
-    from_trajectory.push_back(trajectory_metrics(run.trajectory));
+    c.folders.push_back(run.folder.generic_string());
+    c.completed.push_back(run.has_summary() && run.summary.value("completed", false));
+    c.failures.push_back(run.has_summary() ? run.summary.value("failure", "") : "no summary.json");
+    // A run that stopped before its first step (its task could not be planned)
+    // has no numbers to compare, only zeros in its summary.
+    const bool ran = c.completed.back() || (run.has_summary() && run.summary.value("steps", 0L) > 0);
+    per_run.push_back(ran ? run_metrics(run) : std::vector<Metric>());
   }
-  add_rows(from_summary, c.metrics);
-  add_rows(from_trajectory, c.metrics);
+  add_rows(per_run, c.metrics);
   c.verdict = verdict(runs, c);
   return c;
 }
 
-nlohmann::ordered_json comparison_json(const Comparison& comparison) {
-  nlohmann::ordered_json j;
-  j["runs"] = comparison.labels;
-  j["reference"] = comparison.labels.empty() ? "" : comparison.labels[0];
-  j["verdict"] = comparison.verdict;
-  j["metrics"] = nlohmann::ordered_json::array();
-  for (const ComparedMetric& m : comparison.metrics) {
-    nlohmann::ordered_json row = {{"path", m.path}, {"unit", m.unit}};
-    for (std::size_t r = 0; r < comparison.labels.size(); ++r) {
-      row["values"][comparison.labels[r]] = m.values[r];
-      row["relative"][comparison.labels[r]] =
-          m.relative[r] ? nlohmann::ordered_json(*m.relative[r]) : nlohmann::ordered_json();
+nlohmann::ordered_json comparison_json(const Comparison& c) {
+  using Json = nlohmann::ordered_json;
+  Json j;
+  j["runs"] = c.labels;
+  j["reference"] = c.labels.empty() ? "" : c.labels[0];
+  for (const char* key : {"folder", "completed", "failure"}) j[key] = Json::object();
+  for (std::size_t r = 0; r < c.labels.size(); ++r) {
+    j["folder"][c.labels[r]] = c.folders[r];
+    j["completed"][c.labels[r]] = bool(c.completed[r]);
+    j["failure"][c.labels[r]] = c.failures[r];
+  }
+  j["verdict"] = c.verdict;
+  j["metrics"] = Json::array();
+  for (const ComparedMetric& m : c.metrics) {
+    Json row = {{"path", m.path}, {"unit", m.unit}};
+    for (std::size_t r = 0; r < c.labels.size(); ++r) {
+      row["values"][c.labels[r]] = m.values[r];
+      row["relative"][c.labels[r]] = m.relative[r] ? Json(*m.relative[r]) : Json();
     }
     j["metrics"].push_back(std::move(row));
   }
   return j;
+}
+
+namespace {
+
+// A number as summary.json writes it (shortest round trip); "" for null.
+std::string csv_cell(const nlohmann::ordered_json& v) { return v.is_number() ? v.dump() : ""; }
+
+// A CSV field, quoted when it holds a comma, quote or line break.
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char ch : s) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return out + "\"";
+}
+
+std::string csv_header(const ComparedMetric& m) {
+  return csv_field(m.unit.empty() ? m.path : m.path + " [" + m.unit + "]");
+}
+
+}  // namespace
+
+void write_comparison_csv(std::ostream& out, const Comparison& c, const std::string& first_header) {
+  out << csv_field(first_header) << ",completed";
+  for (const ComparedMetric& m : c.metrics) out << ',' << csv_header(m);
+  for (const ComparedMetric& m : c.metrics) out << ',' << csv_field(m.path + " rel");
+  out << '\n';
+  for (std::size_t r = 0; r < c.labels.size(); ++r) {
+    out << csv_field(c.labels[r]) << ',' << (c.completed[r] ? "true" : "false");
+    for (const ComparedMetric& m : c.metrics) out << ',' << csv_cell(m.values[r]);
+    for (const ComparedMetric& m : c.metrics)
+      out << ',' << (m.relative[r] ? nlohmann::ordered_json(*m.relative[r]).dump() : "");
+    out << '\n';
+  }
+}
+
+void write_sweep_csv(std::ostream& out, const std::string& key,
+                     const std::vector<std::string>& values,
+                     const std::vector<std::string>& variants, const std::vector<RunData>& runs) {
+  const Comparison c = compare_runs(runs);
+  out << csv_field(key) << ",variant,completed";
+  for (const ComparedMetric& m : c.metrics) out << ',' << csv_header(m);
+  out << '\n';
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    out << csv_field(values[r]) << ',' << csv_field(variants[r]) << ','
+        << (c.completed[r] ? "true" : "false");
+    for (const ComparedMetric& m : c.metrics) out << ',' << csv_cell(m.values[r]);
+    out << '\n';
+  }
 }
 
 }  // namespace elbowsim::report

@@ -1,11 +1,13 @@
-// Comparing recorded runs: every metric side by side with its relative
-// difference to the first run, and verdict sentences computed from the
-// numbers ("elbow_on: 38 % less electrical energy than elbow_off"). Variants
-// (elbow on/off, integrators, ...) and work-precision studies reuse this.
+// Comparing recorded runs: every number of their summaries side by side with
+// its relative difference to the first run, and verdict sentences computed
+// from the numbers ("elbow_on: 38 % less electrical energy than elbow_off").
+// The one writer of comparison.json and comparison.csv (`compare`, variants)
+// and of sweep.csv (`sweep`).
 #pragma once
 
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -24,7 +26,10 @@ struct ComparedMetric {
 
 struct Comparison {
   std::vector<std::string> labels;      // [runs]
-  std::vector<ComparedMetric> metrics;  // summary.json metrics, then trajectory.* ones
+  std::vector<std::string> folders;     // [runs] run folders, as given
+  std::vector<bool> completed;          // [runs] summary.json "completed"
+  std::vector<std::string> failures;    // [runs] summary.json "failure"
+  std::vector<ComparedMetric> metrics;  // the numbers of summary.json (run_metrics), in order
   std::vector<std::string> verdict;     // sentences, most important first
 };
 
@@ -36,8 +41,23 @@ Comparison compare_runs(const std::vector<RunData>& runs);
 // The verdict alone (what compare_runs puts in Comparison::verdict).
 std::vector<std::string> verdict(const std::vector<RunData>& runs, const Comparison& table);
 
-// The comparison as JSON (comparison.json): labels, metrics with values and
-// relative differences, verdict.
+// comparison.json: runs (labels), reference (the first), folder, completed
+// and failure per run, verdict, and metrics: a list of {path, unit, values:
+// {run: x}, relative: {run: (x - x_ref)/|x_ref|}}, null where undefined.
 nlohmann::ordered_json comparison_json(const Comparison& comparison);
+
+// comparison.csv: one row per run: its label (under `first_header`),
+// completed, each metric ("path [unit]"), then each metric's relative
+// difference to the first run ("path rel"). Numbers as in summary.json (the
+// shortest round trip); an undefined one is an empty cell.
+void write_comparison_csv(std::ostream& out, const Comparison& comparison,
+                          const std::string& first_header = "run");
+
+// sweep.csv: one row per run of a sweep: the swept key's value, the run's
+// variant ("" without variants), completed, then each metric ("path [unit]").
+// values[k] and variants[k] belong to runs[k].
+void write_sweep_csv(std::ostream& out, const std::string& key,
+                     const std::vector<std::string>& values,
+                     const std::vector<std::string>& variants, const std::vector<RunData>& runs);
 
 }  // namespace elbowsim::report

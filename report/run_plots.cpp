@@ -1,6 +1,8 @@
 #include "report/run_plots.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -53,16 +55,27 @@ LinePlot time_plot(const RunData& run, const std::string& title, Axis y) {
   return p;
 }
 
-// One line per column named prefix + j, against time.
-Planned per_joint(const RunData& run, const std::string& name, const std::string& prefix,
+// A per-joint column of the layout: q, current, voltage, torque.
+using JointColumn = int (TrajectoryLayout::*)(int) const;
+
+// The per-joint columns of a run (empty when it did not record them).
+std::vector<int> joint_columns(const Recording& rec, JointColumn which) {
+  std::vector<int> out;
+  for (int j = 0; j < rec.layout.dof(); ++j)
+    if ((rec.layout.*which)(j) >= 0) out.push_back((rec.layout.*which)(j));
+  return out;
+}
+
+// One line per joint's column, against time.
+Planned per_joint(const RunData& run, const std::string& name, JointColumn which,
                   const std::string& title, const std::string& quantity, const std::string& caption,
                   const std::string& why_missing) {
-  const auto names = indexed_columns(run.trajectory, prefix);
-  if (names.empty()) return skip(name, why_missing);
-  LinePlot p =
-      time_plot(run, title, plot::linear_axis(quantity, column_unit(run.trajectory, names[0])));
-  const auto t = column(run.trajectory, "time");
-  for (const std::string& c : names) p.series.push_back(series(c, t, column(run.trajectory, c)));
+  const Recording& rec = run.trajectory;
+  const auto columns = joint_columns(rec, which);
+  if (columns.empty()) return skip(name, why_missing);
+  LinePlot p = time_plot(run, title, plot::linear_axis(quantity, column_unit(rec, columns[0])));
+  const auto t = column(rec, rec.layout.time());
+  for (int c : columns) p.series.push_back(series(column_name(rec, c), t, column(rec, c)));
   return {name, std::move(p), caption, ""};
 }
 
@@ -72,30 +85,31 @@ bool all_zero(const std::vector<double>& values) {
   return true;
 }
 
-// hand_x, hand_z and hand_y, leaving out hand_y when it is 0 throughout (planar arms).
-std::vector<std::string> hand_columns(const std::vector<const Recording*>& recordings) {
+// The hand axes to draw: x, z and y, leaving out y when it is 0 throughout (planar arms).
+std::vector<int> hand_axes(const std::vector<const Recording*>& recordings) {
   bool planar = true;
-  for (const Recording* rec : recordings) planar = planar && all_zero(column(*rec, "hand_y"));
-  if (planar) return {"hand_x", "hand_z"};
-  return {"hand_x", "hand_z", "hand_y"};
+  for (const Recording* rec : recordings)
+    planar = planar && all_zero(column(*rec, rec->layout.hand(1)));
+  if (planar) return {0, 2};
+  return {0, 2, 1};
 }
 
 Planned hand_position(const RunData& run) {
   const Recording& rec = run.trajectory;
-  if (rec.column("hand_x") < 0) return skip("hand_position", "no hand_x/y/z columns");
   LinePlot p = time_plot(run, "Hand position", plot::linear_axis("position", "m"));
-  const auto t = column(rec, "time");
-  const auto columns = hand_columns({&rec});
+  const auto t = column(rec, rec.layout.time());
+  const auto axes = hand_axes({&rec});
   bool desired = false;
-  for (std::size_t k = 0; k < columns.size(); ++k) {
+  for (std::size_t k = 0; k < axes.size(); ++k) {
     const auto color = plot::palette(static_cast<int>(k));
-    Series s = series(columns[k], t, column(rec, columns[k]));
+    const int hand = rec.layout.hand(axes[k]);
+    Series s = series(column_name(rec, hand), t, column(rec, hand));
     s.color = color;
     p.series.push_back(std::move(s));
     // The desired path (hand_d_x, ...) dashed in the same colour, when the task records one.
-    const std::string wanted = "hand_d_" + columns[k].substr(5);
-    if (rec.column(wanted) < 0) continue;
-    Series d = series(wanted + " (desired)", t, column(rec, wanted));
+    const int wanted = rec.layout.hand_desired(axes[k]);
+    if (wanted < 0) continue;
+    Series d = series(column_name(rec, wanted) + " (desired)", t, column(rec, wanted));
     d.color = color;
     d.dash = Dash::dashed;
     d.width = 1.2;
@@ -105,17 +119,18 @@ Planned hand_position(const RunData& run) {
   return {"hand_position", std::move(p),
           std::string("World coordinates of the hand point") +
               (desired ? "; dashed: the desired path" : "") +
-              (columns.size() == 2 ? " (hand_y is 0 throughout, not drawn)." : "."),
+              (axes.size() == 2 ? " (hand_y is 0 throughout, not drawn)." : "."),
           ""};
 }
 
 Planned hand_error(const RunData& run) {
-  const auto e = column(run.trajectory, "hand_error");
+  const Recording& rec = run.trajectory;
+  const auto e = column(rec, rec.layout.hand_error());
   if (e.empty()) return skip("hand_error", "no hand_error column (no desired hand path)");
   LinePlot p = time_plot(run, "Hand error", plot::log_axis("|hand error|", "m"));
   std::vector<double> magnitude(e.size());
   for (std::size_t k = 0; k < e.size(); ++k) magnitude[k] = std::abs(e[k]);
-  p.series.push_back(series("|hand_error|", column(run.trajectory, "time"), magnitude));
+  p.series.push_back(series("|hand_error|", column(rec, rec.layout.time()), magnitude));
   p.empty_message = "no data: the hand error is 0 at every sample";
   return {"hand_error", std::move(p), "Distance from the hand to its desired path (log axis).", ""};
 }
@@ -124,20 +139,20 @@ Planned power(const RunData& run) {
   const auto total = electrical_power(run.trajectory);
   if (total.empty()) return skip("electrical_power", "no motor columns (effects.motor: none)");
   LinePlot p = time_plot(run, "Electrical power", plot::linear_axis("power", "W"));
-  const auto t = column(run.trajectory, "time");
+  const Recording& rec = run.trajectory;
+  const auto t = column(rec, rec.layout.time());
   Series sum = series("Σ v·i", t, total);
   sum.width = 2.4;
   sum.color = plot::Color{0.15, 0.15, 0.15};
   p.series.push_back(std::move(sum));
-  const auto volts = indexed_columns(run.trajectory, "v");
-  for (std::size_t j = 0; j < volts.size(); ++j) {
-    const auto v = column(run.trajectory, volts[j]);
-    const auto i = column(run.trajectory, "i" + std::to_string(j));
+  for (int j = 0; j < rec.layout.dof(); ++j) {
+    const auto v = column(rec, rec.layout.voltage(j));
+    const auto i = column(rec, rec.layout.current(j));
     std::vector<double> pj(v.size());
     for (std::size_t k = 0; k < v.size(); ++k) pj[k] = v[k] * i[k];
     Series s = series("v" + std::to_string(j) + "·i" + std::to_string(j), t, pj);
     s.width = 1.2;
-    s.color = plot::palette(static_cast<int>(j));
+    s.color = plot::palette(j);
     p.series.push_back(std::move(s));
   }
   return {"electrical_power", std::move(p),
@@ -148,13 +163,11 @@ Planned power(const RunData& run) {
 
 Planned energy(const RunData& run) {
   const Recording& rec = run.trajectory;
-  const auto e_in = column(rec, "E_in");
-  if (e_in.empty()) return skip("energy", "no E_in column");
+  const auto e_in = column(rec, rec.layout.energy(Energy::in));
   LinePlot p = time_plot(run, "Cumulative energy", plot::linear_axis("energy", "J"));
-  const auto t = column(rec, "time");
+  const auto t = column(rec, rec.layout.time());
   p.series.push_back(series("E_in (electrical in)", t, e_in));
-  if (rec.column("E_joule") >= 0)
-    p.series.push_back(series("E_joule (Joule loss)", t, column(rec, "E_joule")));
+  p.series.push_back(series("E_joule (Joule loss)", t, column(rec, rec.layout.energy(Energy::joule))));
   const auto power = electrical_power(rec);
   if (!power.empty()) {
     Series check = series("∫ Σ v·i dt (from samples)", t, running_integral(t, power));
@@ -171,20 +184,17 @@ Planned energy(const RunData& run) {
 
 Planned contact_forces(const RunData& run) {
   const Recording& rec = run.trajectory;
-  const auto elbows = elbow_names(rec);
-  if (elbows.empty()) return skip("contact_forces", "no elbow columns (effects.contact off)");
+  const TrajectoryLayout& L = rec.layout;
+  if (L.elbows() == 0) return skip("contact_forces", "no elbow columns (effects.contact off)");
   LinePlot p = time_plot(run, "Elbow normal forces", plot::linear_axis("normal force", "N"));
   p.y.include_zero = true;
-  const auto t = column(rec, "time");
-  for (std::size_t k = 0; k < elbows.size(); ++k) {
-    const auto color = plot::palette(static_cast<int>(k));
-    if (rec.column("fn_" + elbows[k]) >= 0) {
-      Series s = series("fn_" + elbows[k], t, column(rec, "fn_" + elbows[k]));
-      s.color = color;
-      p.series.push_back(std::move(s));
-    }
-    if (rec.column("rest_" + elbows[k]) >= 0)
-      p.lanes.push_back({elbows[k], intervals_on(t, column(rec, "rest_" + elbows[k])), color});
+  const auto t = column(rec, L.time());
+  for (int k = 0; k < L.elbows(); ++k) {
+    const auto color = plot::palette(k);
+    Series s = series(column_name(rec, L.elbow_force(k)), t, column(rec, L.elbow_force(k)));
+    s.color = color;
+    p.series.push_back(std::move(s));
+    p.lanes.push_back({L.groups().elbows[k], intervals_on(t, column(rec, L.elbow_resting(k))), color});
   }
   return {"contact_forces", std::move(p),
           "Normal force the table exerts on each elbow (f_n > 0 pushes); the strips below mark "
@@ -194,18 +204,17 @@ Planned contact_forces(const RunData& run) {
 
 Planned constraint_residual(const RunData& run) {
   const Recording& rec = run.trajectory;
-  const auto elbows = elbow_names(rec);
-  if (elbows.empty() || rec.column("d_" + elbows[0]) < 0)
+  const TrajectoryLayout& L = rec.layout;
+  if (L.elbows() == 0)
     return skip("constraint_residual", "no d_<elbow> columns (effects.contact off)");
   LinePlot p = time_plot(run, "Constraint residual while resting", plot::log_axis("|d|", "m"));
   p.empty_message = "no data: no elbow rests with |d| > 0 (exactly on the table)";
-  const auto t = column(rec, "time");
-  for (const std::string& elbow : elbows) {
-    auto d = column(rec, "d_" + elbow);
-    const auto rest = column(rec, "rest_" + elbow);
-    for (std::size_t k = 0; k < d.size(); ++k)
-      d[k] = k < rest.size() && rest[k] >= 0.5 ? std::abs(d[k]) : kNaN;
-    p.series.push_back(series("|d_" + elbow + "|", t, d));
+  const auto t = column(rec, L.time());
+  for (int e = 0; e < L.elbows(); ++e) {
+    auto d = column(rec, L.elbow_distance(e));
+    const auto rest = column(rec, L.elbow_resting(e));
+    for (std::size_t k = 0; k < d.size(); ++k) d[k] = rest[k] >= 0.5 ? std::abs(d[k]) : kNaN;
+    p.series.push_back(series("|" + column_name(rec, L.elbow_distance(e)) + "|", t, d));
   }
   return {"constraint_residual", std::move(p),
           "Distance of each resting elbow from the table surface, |C(q)|: the constraint drift "
@@ -214,12 +223,12 @@ Planned constraint_residual(const RunData& run) {
 }
 
 Planned balance(const RunData& run) {
-  auto r = column(run.trajectory, "balance_residual");
-  if (r.empty()) return skip("energy_balance", "no balance_residual column");
+  const Recording& rec = run.trajectory;
+  auto r = column(rec, rec.layout.balance_residual());
   for (double& v : r) v = std::abs(v);
   LinePlot p = time_plot(run, "Energy-balance residual", plot::log_axis("|balance residual|", "J"));
   p.empty_message = "no data: the energy balance closes exactly (residual 0) at every sample";
-  p.series.push_back(series("|balance_residual|", column(run.trajectory, "time"), r));
+  p.series.push_back(series("|balance_residual|", column(rec, rec.layout.time()), r));
   return {"energy_balance", std::move(p),
           "What the energy account leaves unexplained: energy in minus stored minus dissipated "
           "(log axis). Small and smooth means the integration conserves energy as modelled.",
@@ -228,18 +237,19 @@ Planned balance(const RunData& run) {
 
 std::vector<Planned> plan_run(const RunData& run) {
   return {
-      per_joint(run, "joint_angles", "q", "Joint angles", "angle",
+      per_joint(run, "joint_angles", &TrajectoryLayout::q, "Joint angles", "angle",
                 "Joint angles q, relative to "
                 "the previous link.",
                 "no q columns"),
       hand_position(run),
       hand_error(run),
-      per_joint(run, "motor_currents", "i", "Motor currents", "current", "Motor winding currents.",
+      per_joint(run, "motor_currents", &TrajectoryLayout::current, "Motor currents", "current",
+                "Motor winding currents.",
                 "no current columns (effects.motor: none)"),
-      per_joint(run, "motor_voltages", "v", "Motor voltages", "voltage",
+      per_joint(run, "motor_voltages", &TrajectoryLayout::voltage, "Motor voltages", "voltage",
                 "Voltages applied to the motors (after the voltage limit).",
                 "no voltage columns (effects.motor: none)"),
-      per_joint(run, "joint_torques", "tau", "Joint torques", "torque",
+      per_joint(run, "joint_torques", &TrajectoryLayout::torque, "Joint torques", "torque",
                 "Torques the motors (or torque inputs) apply at the joints.", "no tau columns"),
       power(run),
       energy(run),
@@ -282,38 +292,45 @@ namespace {
 
 const Dash kDashes[] = {Dash::solid, Dash::dashed, Dash::dotted, Dash::dash_dot};
 
+// A column chosen in each run's own layout (runs may differ in layout).
+using ColumnOf = std::function<int(const TrajectoryLayout&)>;
+
 // One line per (run, column): colour by run, dash by column; |values| on a log axis.
 Planned overlay(const std::vector<RunData>& runs, const std::string& name, const std::string& title,
-                Axis y, const std::vector<std::string>& columns, const std::string& caption) {
+                Axis y, const std::vector<ColumnOf>& columns, const std::string& caption) {
   const bool magnitude = y.scale == plot::Scale::log;
   if (columns.empty()) return skip(name, "no run has these columns");
   LinePlot p;
   p.title = title;
   p.y = std::move(y);
   for (std::size_t r = 0; r < runs.size(); ++r) {
-    const auto t = column(runs[r].trajectory, "time");
+    const Recording& rec = runs[r].trajectory;
+    const auto t = column(rec, rec.layout.time());
     for (std::size_t c = 0; c < columns.size(); ++c) {
-      if (runs[r].trajectory.column(columns[c]) < 0) continue;
-      auto values = column(runs[r].trajectory, columns[c]);
+      const int index = rec.layout.size() > 0 ? columns[c](rec.layout) : -1;
+      if (index < 0) continue;
+      auto values = column(rec, index);
       if (magnitude)
         for (double& v : values) v = std::abs(v);
-      Series s = series(runs[r].label + " " + columns[c], t, std::move(values));
+      Series s = series(runs[r].label + " " + column_name(rec, index), t, std::move(values));
       s.color = plot::palette(static_cast<int>(r));
       s.dash = kDashes[c % 4];
       p.series.push_back(std::move(s));
     }
   }
-  if (p.series.empty()) return skip(name, "no run has " + columns[0]);
+  if (p.series.empty()) return skip(name, "no run has these columns");
   return {name, std::move(p), caption, ""};
 }
 
-std::vector<std::string> all_indexed(const std::vector<RunData>& runs, const std::string& prefix) {
-  std::vector<std::string> widest;
-  for (const RunData& run : runs) {
-    auto names = indexed_columns(run.trajectory, prefix);
-    if (names.size() > widest.size()) widest = std::move(names);
-  }
-  return widest;
+// The motor currents of the widest arm among the runs.
+std::vector<ColumnOf> all_currents(const std::vector<RunData>& runs) {
+  int widest = 0;
+  for (const RunData& run : runs)
+    if (run.trajectory.layout.has_motors()) widest = std::max(widest, run.trajectory.layout.dof());
+  std::vector<ColumnOf> out;
+  for (int j = 0; j < widest; ++j)
+    out.push_back([j](const TrajectoryLayout& L) { return j < L.dof() ? L.current(j) : -1; });
+  return out;
 }
 
 plot::BarChart totals(const std::vector<RunData>& runs) {
@@ -342,24 +359,28 @@ plot::BarChart totals(const std::vector<RunData>& runs) {
 FigureSet write_comparison_plots(const std::vector<RunData>& runs, const fs::path& report_folder) {
   std::vector<Planned> planned;
   planned.push_back(overlay(runs, "energy", "Cumulative energy", plot::linear_axis("energy", "J"),
-                            {"E_in", "E_joule"},
+                            {[](const TrajectoryLayout& L) { return L.energy(Energy::in); },
+                             [](const TrajectoryLayout& L) { return L.energy(Energy::joule); }},
                             "Electrical energy in (solid) and Joule loss (dashed), per run."));
   std::vector<const Recording*> recordings;
   for (const RunData& run : runs) recordings.push_back(&run.trajectory);
-  const auto hand = hand_columns(recordings);
+  std::vector<ColumnOf> hand;
+  for (int axis : hand_axes(recordings))
+    hand.push_back([axis](const TrajectoryLayout& L) { return L.hand(axis); });
   planned.push_back(
       overlay(runs, "hand_position", "Hand position", plot::linear_axis("position", "m"), hand,
               hand.size() == 2 ? "Hand x (solid) and z (dashed), per run (y is 0 throughout)."
                                : "Hand x (solid), z (dashed) and y (dotted), per run."));
   planned.push_back(overlay(runs, "motor_currents", "Motor currents",
-                            plot::linear_axis("current", "A"), all_indexed(runs, "i"),
+                            plot::linear_axis("current", "A"), all_currents(runs),
                             "Winding currents; colour by run, dash by motor (i0 solid, i1 "
                             "dashed, i2 dotted, i3 dash-dot, then again)."));
   bool any_error = false;
-  for (const RunData& run : runs) any_error = any_error || run.trajectory.column("hand_error") >= 0;
+  for (const RunData& run : runs)
+    any_error = any_error || run.trajectory.layout.has_desired_hand();
   if (any_error)
     planned.push_back(overlay(runs, "hand_error", "Hand error", plot::log_axis("|hand error|", "m"),
-                              {"hand_error"},
+                              {[](const TrajectoryLayout& L) { return L.hand_error(); }},
                               "Distance from the hand to its desired path (log axis)."));
   FigureSet set = draw(std::move(planned), report_folder);
   const plot::BarChart bars = totals(runs);

@@ -179,12 +179,10 @@ std::string run_report_html(const RunData& run, const FigureSet& figures) {
   page += run.has_summary()
               ? "<p class=\"meta\">In summary.json's order, named as <code>--expect</code> "
                 "names them.</p>\n" +
-                    html::metrics_table(summary_metrics(run.summary), "metrics")
-              : "<p>No summary.json in this run folder.</p>\n";
-  const auto derived = trajectory_metrics(run.trajectory);
-  if (!derived.empty())
-    page += "<h3>Derived from trajectory.csv</h3>\n" +
-            html::metrics_table(derived, "trajectory-metrics");
+                    html::metrics_table(run_metrics(run), "metrics")
+              : "<p>No summary.json in this run folder; the run's metrics, computed from "
+                "trajectory.csv:</p>\n" +
+                    html::metrics_table(run_metrics(run), "metrics");
   page += "</section>\n" + events_section(run) + files_section(run);
   return page + html::page_end();
 }

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "support/recordings.hpp"
 #include "engine/data.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/recording/recording.hpp"
@@ -37,14 +38,13 @@ inline elbowsim::Model arm(int dof = 2) {
 }
 
 // Rows every 0.1 s from 0 to 1 s: q0 = 0; q1 = 0, pi/4, pi/2 (to 0.4 s), then 0;
-// the elbow rests from 0.5 s on, fn = 6, 7, 8, 12, 12, 12 N; E_in = t [J].
-inline elbowsim::Recording recording() {
+// the elbow rests from 0.5 s on, fn = 6, 7, 8, 12, 12, 12 N; E_in = t [J]; the
+// other columns 0. With `desired_hand` the layout has the desired hand columns (0).
+inline elbowsim::Recording recording(bool desired_hand = false) {
   using namespace elbowsim;
   const Model model = arm();
-  Recording rec;
-  rec.columns = {{"time", "s"},       {"q0", "rad"},   {"q1", "rad"},     {"hand_x", "m"},
-                 {"hand_y", "m"},     {"hand_z", "m"}, {"fn_elbow", "N"}, {"d_elbow", "m"},
-                 {"rest_elbow", "1"}, {"E_in", "J"}};
+  Recording rec = testing::zero_recording({2, false, desired_hand, true, {"elbow"}}, 11);
+  const TrajectoryLayout& L = rec.layout;
   const double pi = std::numbers::pi;
   const double q1[11] = {0, pi / 4, pi / 2, pi / 2, pi / 2, 0, 0, 0, 0, 0, 0};
   const double fn[11] = {0, 0, 0, 0, 0, 6, 7, 8, 12, 12, 12};
@@ -54,8 +54,12 @@ inline elbowsim::Recording recording() {
     const Eigen::Vector2d q(0, q1[k]);
     forward_kinematics(model, data, q);
     const Eigen::Vector3d hand = point_position(data, model.hand_link, model.hand_point);
-    rec.values.insert(rec.values.end(), {t, q[0], q[1], hand.x(), hand.y(), hand.z(), fn[k], 0.0,
-                                         k >= 5 ? 1.0 : 0.0, t});
+    testing::set(rec, k, L.time(), t);
+    testing::set(rec, k, L.q(1), q[1]);
+    for (int a = 0; a < 3; ++a) testing::set(rec, k, L.hand(a), hand[a]);
+    testing::set(rec, k, L.elbow_force(0), fn[k]);
+    testing::set(rec, k, L.elbow_resting(0), k >= 5 ? 1.0 : 0.0);
+    testing::set(rec, k, L.energy(Energy::in), t);
   }
   return rec;
 }

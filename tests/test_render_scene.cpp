@@ -107,7 +107,7 @@ TEST_CASE("render playback: linear between samples, clamped outside; the hand pa
   REQUIRE(path.size() == 3);  // samples at 0, 0.1 and the point at 0.15
   CHECK(approx(path.back(), *playback.at(0.15).hand, 1e-12));
   CHECK_THROWS_WITH_AS(Playback(render_fixture::arm(3), render_fixture::recording()),
-                       doctest::Contains("no column \"q2\""), std::invalid_argument);
+                       doctest::Contains("2 joints, the model 3"), std::invalid_argument);
 }
 
 TEST_CASE("render scene: the whole desired hand path in grey, only when hand_d_* is recorded") {
@@ -115,12 +115,10 @@ TEST_CASE("render scene: the whole desired hand path in grey, only when hand_d_*
   const Recording plain = render_fixture::recording();
   // The fixture plus a desired hand position: a straight line from
   // (0.75, 0, 0) at t = 0 to (0.55, 0, 0.1) at t = 1 s (2 cm and 1 cm per row).
-  Recording rec;
-  rec.columns = plain.columns;
-  rec.columns.insert(rec.columns.end(), {{"hand_d_x", "m"}, {"hand_d_y", "m"}, {"hand_d_z", "m"}});
-  for (std::size_t r = 0; r < plain.rows(); ++r) {
-    for (std::size_t c = 0; c < plain.columns.size(); ++c) rec.values.push_back(plain.at(r, c));
-    rec.values.insert(rec.values.end(), {0.75 - 0.02 * double(r), 0.0, 0.01 * double(r)});
+  Recording rec = render_fixture::recording(true);
+  for (std::size_t r = 0; r < rec.rows(); ++r) {
+    testing::set(rec, r, rec.layout.hand_desired(0), 0.75 - 0.02 * double(r));
+    testing::set(rec, r, rec.layout.hand_desired(2), 0.01 * double(r));
   }
   const Playback playback(model, rec);
   const SceneOptions options;

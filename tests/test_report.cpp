@@ -14,6 +14,7 @@
 #include "report/metrics.hpp"
 #include "report_test_helpers.hpp"
 #include "support/approx.hpp"
+#include "support/recordings.hpp"
 
 using elbowsim::Recording;
 using elbowsim::testing::approx;
@@ -24,13 +25,18 @@ namespace t = elbowsim::testing;
 
 namespace {
 
-// time, v0, i0, rest_elbow, d_elbow: 1 V into 2 A for 1 s; the elbow rests on [0.5, 1].
+// One motor: 1 V into 2 A for 1 s; the elbow rests on [0.5, 1], 1e-8 m deep at
+// the end (d = -1e-9 k while resting, 0.2 m before); other columns 0.
 Recording small_recording() {
-  Recording rec;
-  rec.columns = {{"time", "s"}, {"v0", "V"}, {"i0", "A"}, {"rest_elbow", "1"}, {"d_elbow", "m"}};
-  for (int k = 0; k <= 10; ++k)
-    rec.values.insert(rec.values.end(),
-                      {0.1 * k, 1.0, 2.0, k >= 5 ? 1.0 : 0.0, k >= 5 ? -1e-9 * k : 0.2});
+  Recording rec = t::zero_recording({1, true, false, true, {"elbow"}}, 11);
+  const elbowsim::TrajectoryLayout& L = rec.layout;
+  for (int k = 0; k <= 10; ++k) {
+    t::set(rec, k, L.time(), 0.1 * k);
+    t::set(rec, k, L.voltage(0), 1.0);
+    t::set(rec, k, L.current(0), 2.0);
+    t::set(rec, k, L.elbow_resting(0), k >= 5 ? 1.0 : 0.0);
+    t::set(rec, k, L.elbow_distance(0), k >= 5 ? -1e-9 * k : 0.2);
+  }
   return rec;
 }
 
@@ -46,16 +52,18 @@ r::RunData run_with(const std::string& label, double e_in, bool completed = true
 
 }  // namespace
 
-TEST_CASE("columns: indexed names, power, running integral, resting intervals") {
+TEST_CASE("columns: names through the layout, power, running integral, resting intervals") {
   const Recording rec = small_recording();
-  CHECK(r::indexed_columns(rec, "i") == std::vector<std::string>{"i0"});
-  CHECK(r::indexed_columns(rec, "q").empty());
-  CHECK(r::elbow_names(rec) == std::vector<std::string>{"elbow"});
+  CHECK(r::column_name(rec, rec.layout.current(0)) == "i0");
+  CHECK(r::column_unit(rec, rec.layout.current(0)) == "A");
+  CHECK(rec.layout.q(1) >= rec.layout.qd(0));  // one joint only: q1 is not a q column
+  CHECK(rec.layout.groups().elbows == std::vector<std::string>{"elbow"});
   const auto power = r::electrical_power(rec);
   REQUIRE(power.size() == 11);
   CHECK(power[3] == 2.0);
-  CHECK(approx(r::running_integral(r::column(rec, "time"), power).back(), 2.0, 1e-12));
-  const auto on = r::intervals_on(r::column(rec, "time"), r::column(rec, "rest_elbow"));
+  const auto time = r::column(rec, rec.layout.time());
+  CHECK(approx(r::running_integral(time, power).back(), 2.0, 1e-12));
+  const auto on = r::intervals_on(time, r::column(rec, rec.layout.elbow_resting(0)));
   REQUIRE(on.size() == 1);
   CHECK(approx(on[0].begin, 0.5, 1e-12));
   CHECK(approx(on[0].end, 1.0, 1e-12));
@@ -75,16 +83,19 @@ TEST_CASE("metrics: summary.json leaves in file order with units; trajectory fig
   CHECK(metrics[5].path == "metrics.current_peak.1");
   CHECK(metrics[5].unit == "A");
 
-  const auto derived = r::trajectory_metrics(small_recording());
+  // A run folder whose summary.json has no metrics: computed from its trajectory.
+  r::RunData run;
+  run.trajectory = small_recording();
+  const auto derived = r::run_metrics(run);
   const auto value = [&](const std::string& path) {
     const r::Metric* m = r::find_metric(derived, path);
     REQUIRE_MESSAGE(m != nullptr, path);
     return m->value.get<double>();
   };
-  CHECK(approx(value("trajectory.rms_current.i0"), 2.0, 1e-12));
-  CHECK(approx(value("trajectory.electrical_energy_from_samples"), 2.0, 1e-12));
-  CHECK(approx(value("trajectory.rest_fraction.elbow"), 0.5, 1e-12));
-  CHECK(approx(value("trajectory.max_abs_d_resting.elbow"), 1e-8, 1e-20));
+  CHECK(approx(value("metrics.current_rms.0"), 2.0, 1e-12));
+  CHECK(approx(value("metrics.energy_in_per_joint.0"), 2.0, 1e-12));
+  CHECK(approx(value("metrics.rest_fraction.elbow"), 0.5, 1e-12));
+  CHECK(approx(value("metrics.elbow_drift_max.elbow"), 1e-8, 1e-20));
 }
 
 TEST_CASE("verdict: computed from the numbers") {
@@ -121,10 +132,12 @@ TEST_CASE("verdict: computed from the numbers") {
   }
   SUBCASE("relative differences are to the first run") {
     const auto c = r::compare_runs({run_with("a", 4.0), run_with("b", 5.0)});
-    const auto& row = c.metrics[2];  // completed, final_time, then energy_final.electrical_in
+    // Numbers only (the flag "completed" is per run): final_time, then energy_final.electrical_in.
+    const auto& row = c.metrics[1];
     REQUIRE(row.path == "energy_final.electrical_in");
     CHECK(approx(*row.relative[1], 0.25, 1e-12));
-    CHECK(r::comparison_json(c)["metrics"][2]["relative"]["b"] == 0.25);
+    CHECK(r::comparison_json(c)["metrics"][1]["relative"]["b"] == 0.25);
+    CHECK(r::comparison_json(c)["completed"]["a"] == true);
   }
   CHECK(r::unique_labels({"run", "x", "run"}) == std::vector<std::string>{"run", "x", "run_2"});
 }

@@ -95,8 +95,7 @@ TEST_CASE("step() driven by hand reproduces simulate() bit for bit on a contact 
   const RunResult run = simulate(m, RunOptions{1, {}});
   REQUIRE(run.completed);
 
-  Recording by_hand;
-  by_hand.columns = trajectory_columns(m, false);
+  Recording by_hand(trajectory_layout(m, false));
   Data data(m);
   reset(m, data);
   record_sample(m, data, by_hand);

@@ -52,13 +52,13 @@ std::vector<std::vector<std::string>> read_csv(const fs::path& path) {
 // The summary.json value a table column names: "name [unit]" -> name, looked
 // up in "metrics" if the summary has it, else as a dotted path
 // ("energy_final.joule"); "name[i]" is item i of an array.
+// The summary.json value at a comparison column or metric path
+// ("energy_final.joule [J]", "metrics.current_peak.0").
 nlohmann::json summary_value(const nlohmann::json& summary, std::string column) {
   column = column.substr(0, column.find(" ["));
   std::string pointer;
-  for (char c : column) pointer += c == '.' || c == '[' ? '/' : c == ']' ? '\0' : c;
-  std::erase(pointer, '\0');
-  const nlohmann::json& root = summary.contains("metrics") ? summary["metrics"] : summary;
-  return root.at(nlohmann::json::json_pointer("/" + pointer));
+  for (char c : column) pointer += c == '.' ? '/' : c;
+  return summary.at(nlohmann::json::json_pointer("/" + pointer));
 }
 
 // Every metric cell of `row` (columns from `first` on, up to " rel" ones)

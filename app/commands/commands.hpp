@@ -14,7 +14,12 @@ namespace elbowsim {
 
 struct Scenario;
 struct Recording;
-struct RunRecord;  // app/output/comparison.hpp
+
+// A run folder a command wrote: its variant ("" without variants) and where it is.
+struct RunRecord {
+  std::string variant;
+  std::filesystem::path folder;
+};
 
 enum ExitCode {
   exit_ok = 0,

@@ -10,7 +10,6 @@
 #include "app/output/atomic_file.hpp"
 #include "app/output/run_folder.hpp"
 #include "report/compare_report.hpp"
-#include "app/output/comparison.hpp"
 #include "app/output/events_csv.hpp"
 #include "app/output/summary_json.hpp"
 #include "app/output/trajectory_csv.hpp"
@@ -106,9 +105,38 @@ RunOutcome run_one(const Scenario& scenario, const std::filesystem::path& folder
   return outcome;
 }
 
+// The variants' comparison: comparison.json and comparison.csv in `folder`
+// (report/comparison.hpp writes both), and with the report compare/ beside
+// them (report.html, plots, and with output.video a side-by-side video).
+int compare_variants(const RunArguments& args, const std::vector<Scenario>& variants,
+                     const std::filesystem::path& folder) {
+  try {
+    std::vector<report::RunData> loaded;
+    for (const Scenario& v : variants) loaded.push_back(load_run_folder(folder / v.variant));
+    const report::ComparisonTables tables{folder, "variant"};
+    if (!args.report) {
+      report::write_comparison_tables(report::compare_runs(loaded), tables);
+    } else {
+      if (args.render && variants.front().output.video) {
+        std::vector<std::filesystem::path> folders;
+        for (const Scenario& v : variants) folders.push_back(folder / v.variant);
+        if (render_side_by_side(folders, folder / "compare") != exit_ok) return exit_io;
+      }
+      const auto files = report::write_comparison_report(loaded, folder / "compare", tables);
+      std::cout << "comparison report: " << files.html.string() << '\n';
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_io;
+  }
+  std::cout << variants.front().model.name << ": " << variants.size() << " variants compared in "
+            << (folder / "comparison.csv").string() << '\n';
+  return exit_ok;
+}
+
 // Each variant into folder/<variant>/ (all loaded first: a bad one writes
-// nothing), then comparison.csv and comparison.json. A failed run does not
-// stop the others; an I/O error does.
+// nothing), then their comparison. A failed run does not stop the others; an
+// I/O error does.
 int run_variants(const RunArguments& args, const Scenario& scenario,
                  const std::filesystem::path& folder, std::vector<RunRecord>& records) {
   std::vector<Scenario> variants;
@@ -119,7 +147,6 @@ int run_variants(const RunArguments& args, const Scenario& scenario,
     std::cerr << "error: " << e.what() << '\n';
     return exit_bad_input;
   }
-  std::vector<RunRecord> runs;
   int code = exit_ok;
   nlohmann::ordered_json summaries;  // variant -> summary, for --expect
   for (const Scenario& v : variants) {
@@ -127,39 +154,9 @@ int run_variants(const RunArguments& args, const Scenario& scenario,
     if (outcome.code == exit_io) return exit_io;
     if (code == exit_ok) code = outcome.code;
     summaries[v.variant] = outcome.summary;
-    runs.push_back({v.variant, v.variant, std::move(outcome.summary)});
+    records.push_back({v.variant, folder / v.variant});
   }
-  try {
-    write_atomically(folder / "comparison.csv",
-                     [&](std::ostream& out) { write_comparison_csv(out, runs); });
-    write_atomically(folder / "comparison.json", [&](std::ostream& out) {
-      out << comparison_json(scenario.model.name, runs).dump(2) << '\n';
-    });
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return exit_io;
-  }
-  std::cout << scenario.model.name << ": " << runs.size() << " variants compared in "
-            << (folder / "comparison.csv").string() << '\n';
-  // One HTML report across the variants, in its own folder so its
-  // comparison.json does not replace the one above.
-  if (args.report) {
-    try {
-      std::vector<report::RunData> loaded;
-      for (const Scenario& v : variants) loaded.push_back(load_run_folder(folder / v.variant));
-      if (args.render && variants.front().output.video) {
-        std::vector<std::filesystem::path> folders;
-        for (const Scenario& v : variants) folders.push_back(folder / v.variant);
-        if (render_side_by_side(folders, folder / "compare") != exit_ok) return exit_io;
-      }
-      const auto files = report::write_comparison_report(loaded, folder / "compare");
-      std::cout << "comparison report: " << files.html.string() << '\n';
-    } catch (const std::exception& e) {
-      std::cerr << "error: " << e.what() << '\n';
-      return exit_io;
-    }
-  }
-  records.insert(records.end(), runs.begin(), runs.end());
+  if (compare_variants(args, variants, folder) == exit_io) return exit_io;
   // Expectations name the variant first: "elbow_on.energy_final.joule < ...".
   const int checked = check_expectations(args.expect, summaries);
   return code != exit_ok ? code : checked;
@@ -173,7 +170,7 @@ int run_scenario(const RunArguments& args, const Scenario& scenario,
   RunOutcome outcome = run_one(scenario, folder, args);
   if (outcome.code == exit_io) return exit_io;
   const int checked = check_expectations(args.expect, outcome.summary);
-  records.push_back({"", ".", std::move(outcome.summary)});
+  records.push_back({"", folder});
   return outcome.code != exit_ok ? outcome.code : checked;
 }
 

@@ -12,7 +12,8 @@
 #include "app/commands/commands.hpp"
 #include "report/sweep_plots.hpp"
 #include "app/output/atomic_file.hpp"
-#include "app/output/comparison.hpp"
+#include "app/output/run_folder.hpp"
+#include "report/comparison.hpp"
 #include "app/scenario/scenario.hpp"
 
 namespace elbowsim {
@@ -75,35 +76,38 @@ int sweep_command(const SweepArguments& args) {
   }
   const std::filesystem::path folder =
       args.run.out.value_or(scenarios.front().output.folder + "/sweep");
-  std::vector<SweepRow> rows;
+  // One row per run: the value, the variant, the run folder as written.
+  std::vector<std::string> row_values, row_variants;
+  std::vector<report::RunData> row_runs;
   int code = exit_ok;
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    const std::string sub = args.key + "=" + values[i];
-    std::vector<RunRecord> records;
-    const int c = run_scenario(runs[i], scenarios[i], folder / sub, records);
-    if (c == exit_io) return exit_io;
-    if (code == exit_ok) code = c;
-    for (RunRecord& r : records) {
-      r.folder = r.folder == "." ? sub : sub + "/" + r.folder;
-      rows.push_back({values[i], std::move(r)});
-    }
-  }
   try {
-    write_atomically(folder / "sweep.csv",
-                     [&](std::ostream& out) { write_sweep_csv(out, args.key, rows); });
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      std::vector<RunRecord> records;
+      const int c = run_scenario(runs[i], scenarios[i], folder / (args.key + "=" + values[i]), records);
+      if (c == exit_io) return exit_io;
+      if (code == exit_ok) code = c;
+      for (const RunRecord& r : records) {
+        row_values.push_back(values[i]);
+        row_variants.push_back(r.variant);
+        row_runs.push_back(load_run_folder(r.folder));
+      }
+    }
+    write_atomically(folder / "sweep.csv", [&](std::ostream& out) {
+      report::write_sweep_csv(out, args.key, row_values, row_variants, row_runs);
+    });
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_io;
   }
-  std::cout << "sweep of " << args.key << ": " << rows.size() << " runs; table in "
+  std::cout << "sweep of " << args.key << ": " << row_runs.size() << " runs; table in "
             << (folder / "sweep.csv").string() << '\n';
   // Plots against the value, when every value is a number.
   std::vector<report::SweepPoint> points;
-  for (const SweepRow& row : rows) {
+  for (std::size_t r = 0; r < row_runs.size(); ++r) {
     char* end = nullptr;
-    const double x = std::strtod(row.value.c_str(), &end);
-    if (end == row.value.c_str() || *end) return code;
-    points.push_back({x, row.run.variant, row.run.summary});
+    const double x = std::strtod(row_values[r].c_str(), &end);
+    if (end == row_values[r].c_str() || *end) return code;
+    points.push_back({x, row_variants[r], row_runs[r].summary});
   }
   try {
     for (const auto& png : report::write_sweep_plots(args.key, points, folder))

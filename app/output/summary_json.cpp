@@ -1,6 +1,7 @@
 #include "app/output/summary_json.hpp"
 
 #include "engine/dynamics/energy.hpp"
+#include "report/metrics.hpp"
 
 namespace elbowsim {
 
@@ -39,33 +40,6 @@ nlohmann::ordered_json contact_json(const Model& m, const RunResult& r) {
   return j;
 }
 
-std::vector<double> as_list(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
-
-// The experiment's metrics (engine/metrics.hpp): what comparisons and
-// sweeps tabulate. Units: m, J, A, N, s.
-nlohmann::ordered_json metrics_json(const Model& model, const Metrics& x) {
-  nlohmann::ordered_json j;
-  if (x.has_task) {
-    j["hand_error_rms"] = x.hand_error_rms;
-    j["hand_error_max"] = x.hand_error_max;
-    j["hand_error_final"] = x.hand_error_final;
-  }
-  j["energy_in"] = x.energy_in;
-  j["joule"] = x.joule;
-  if (model.has_motor()) {
-    j["energy_in_per_joint"] = as_list(x.energy_in_per_joint);
-    j["current_peak"] = as_list(x.current_peak);
-    j["current_rms"] = as_list(x.current_rms);
-  }
-  if (x.has_contact) {
-    j["elbow_force_mean"] = x.elbow_force_mean;
-    j["elbow_force_min"] = x.elbow_force_min;
-    j["elbow_force_max"] = x.elbow_force_max;
-    j["time_in_contact"] = x.time_in_contact;
-  }
-  return j;
-}
-
 nlohmann::ordered_json settings_json(const Options& o) {
   return {{"integrator", to_string(o.integrator)}, {"dynamics", to_string(o.dynamics)},
           {"step", o.step}, {"duration", o.duration}};
@@ -93,7 +67,7 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   j["balance_residual"] = result.balance_residual;
   j["max_abs_balance_residual"] = result.max_abs_balance_residual;
   j["balance_residual_relative"] = e_in != 0 ? std::abs(result.balance_residual / e_in) : 0.0;
-  j["metrics"] = metrics_json(m, result.metrics);
+  j["metrics"] = report::metrics_json(result.metrics);  // the vocabulary of engine/recording/metrics.hpp
   j["controller"] = to_string(scenario.experiment.controller.kind);
   j["contact"] = contact_json(m, result);
   j["warnings"] = result.warnings;

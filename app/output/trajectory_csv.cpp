@@ -11,9 +11,10 @@
 namespace elbowsim {
 
 void write_trajectory_csv(std::ostream& out, const Recording& recording) {
-  const std::size_t cols = recording.columns.size();
+  const std::vector<Column>& columns = recording.columns();
+  const std::size_t cols = columns.size();
   for (std::size_t c = 0; c < cols; ++c)
-    out << (c ? "," : "") << recording.columns[c].name << " [" << recording.columns[c].unit << "]";
+    out << (c ? "," : "") << columns[c].name << " [" << columns[c].unit << "]";
   out << '\n';
   // 12 significant digits: far below any modelling error, and the same bytes
   // for the same numbers on every run.
@@ -47,16 +48,22 @@ std::vector<std::string> split(const std::string& line) {
 }  // namespace
 
 Recording read_trajectory_csv(std::istream& in, const std::string& file) {
-  Recording rec;
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(file + ": empty trajectory file");
-  for (const std::string& cell : split(line)) rec.columns.push_back(parse_header_cell(cell));
+  std::vector<Column> columns;
+  for (const std::string& cell : split(line)) columns.push_back(parse_header_cell(cell));
+  Recording rec;
+  try {
+    rec.layout = TrajectoryLayout::from_columns(columns);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(file + ":1: " + e.what());
+  }
   for (long number = 2; std::getline(in, line); ++number) {
     if (line.empty()) continue;
     const std::vector<std::string> cells = split(line);
-    if (cells.size() != rec.columns.size())
+    if (cells.size() != columns.size())
       throw std::runtime_error(file + ":" + std::to_string(number) + ": expected " +
-                               std::to_string(rec.columns.size()) + " values, got " +
+                               std::to_string(columns.size()) + " values, got " +
                                std::to_string(cells.size()));
     for (const std::string& cell : cells) {
       char* end = nullptr;

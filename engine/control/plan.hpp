@@ -21,6 +21,14 @@ struct Plan {
   std::vector<Eigen::VectorXd> f_ff;    // [samples][p] elbow forces the feed-forward assumes [N]
   std::vector<int> resting;             // elbows the plan keeps on the table (clearance 0, contact on)
 
+  // The desired hand position at time t, linear between samples (clamped to the ends).
+  Eigen::Vector3d hand_at(double t) const {
+    const double u = std::clamp(t / dt, 0.0, double(hand.size() - 1));
+    const std::size_t k = std::min(std::size_t(u), hand.size() - 1);
+    const std::size_t k1 = std::min(k + 1, hand.size() - 1);
+    return hand[k] + (u - double(k)) * (hand[k1] - hand[k]);
+  }
+
   // Linear interpolation of sampled vectors at time t (clamped to the
   // ends) into `out`, which has the right size: allocates nothing.
   void at(const std::vector<Eigen::VectorXd>& samples, double t, Eigen::Ref<Eigen::VectorXd> out) const {

@@ -1,90 +1,177 @@
 #include "engine/recording/metrics.hpp"
 
-#include "engine/recording/recording.hpp"
-
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace elbowsim {
 
 namespace {
 
+struct Vocabulary {
+  const char* name;
+  const char* unit;
+};
+
+constexpr Vocabulary kVocabulary[] = {
+    {"samples", ""},          {"hand_error_rms", "m"},      {"hand_error_max", "m"},
+    {"hand_error_final", "m"}, {"hand_path_length", "m"},    {"energy_in", "J"},
+    {"joule", "J"},            {"power_peak", "W"},          {"energy_in_per_joint", "J"},
+    {"current_peak", "A"},     {"current_rms", "A"},         {"elbow_force_mean", "N"},
+    {"elbow_force_min", "N"},  {"elbow_force_max", "N"},     {"time_in_contact", "s"},
+    {"rest_fraction", ""},    {"elbow_force_peak", "N"},    {"elbow_drift_max", "m"}};
+
+// Sampled series of one recording, with the integrals metrics need.
 struct Series {
   const Recording& rec;
-  int time;
+  std::vector<double> t;
+
+  explicit Series(const Recording& r) : rec(r), t(r.series(r.layout.time())) {}
+  std::size_t rows() const { return t.size(); }
   double at(std::size_t row, int column) const { return rec.at(row, std::size_t(column)); }
-  double dt(std::size_t row) const { return row == 0 ? 0.0 : at(row, time) - at(row - 1, time); }
+  double span() const { return rows() > 1 ? t.back() - t.front() : 0.0; }
   // Trapezoid integral of f(row) over time.
   template <typename F>
   double integral(F f) const {
     double sum = 0;
-    for (std::size_t r = 1; r < rec.rows(); ++r) sum += 0.5 * dt(r) * (f(r) + f(r - 1));
+    for (std::size_t r = 1; r < rows(); ++r) sum += 0.5 * (t[r] - t[r - 1]) * (f(r) + f(r - 1));
     return sum;
   }
-  double span() const { return rec.rows() > 1 ? at(rec.rows() - 1, time) - at(0, time) : 0.0; }
+  // Time for which flag(row) holds, each sample holding until the next.
+  template <typename F>
+  double held(F flag) const {
+    double sum = 0;
+    for (std::size_t r = 0; r + 1 < rows(); ++r)
+      if (flag(r)) sum += t[r + 1] - t[r];
+    return sum;
+  }
   double rms(int column) const {
     const double T = span();
     if (T <= 0) return std::abs(at(0, column));
     return std::sqrt(integral([&](std::size_t r) { return at(r, column) * at(r, column); }) / T);
   }
+  double max_abs(int column) const {
+    double m = 0;
+    for (std::size_t r = 0; r < rows(); ++r) m = std::max(m, std::abs(at(r, column)));
+    return m;
+  }
 };
 
+void add(Metrics& m, const char* name, Metric::Shape shape, std::vector<double> values) {
+  m.list.push_back({name, metric_unit(name), shape, std::move(values)});
+}
+
+void add(Metrics& m, const char* name, double value) { add(m, name, Metric::Shape::one, {value}); }
+
 void hand_metrics(const Series& s, Metrics& m) {
-  const int e = s.rec.column("hand_error");
-  if (e < 0) return;
-  m.has_task = true;
-  m.hand_error_rms = s.rms(e);
-  for (std::size_t r = 0; r < s.rec.rows(); ++r) m.hand_error_max = std::max(m.hand_error_max, s.at(r, e));
-  m.hand_error_final = s.at(s.rec.rows() - 1, e);
+  const TrajectoryLayout& L = s.rec.layout;
+  const int e = L.hand_error();
+  if (e >= 0) {
+    add(m, "hand_error_rms", s.rms(e));
+    add(m, "hand_error_max", s.max_abs(e));
+    add(m, "hand_error_final", s.at(s.rows() - 1, e));
+  }
+  double length = 0;
+  for (std::size_t r = 1; r < s.rows(); ++r)
+    length += std::hypot(s.at(r, L.hand(0)) - s.at(r - 1, L.hand(0)),
+                         s.at(r, L.hand(1)) - s.at(r - 1, L.hand(1)),
+                         s.at(r, L.hand(2)) - s.at(r - 1, L.hand(2)));
+  add(m, "hand_path_length", length);
 }
 
-void motor_metrics(const Model& model, const Series& s, Metrics& m) {
-  if (!model.has_motor()) return;
-  const int n = model.dof;
-  m.energy_in_per_joint = m.current_peak = m.current_rms = Eigen::VectorXd::Zero(n);
+void energy_metrics(const Series& s, Metrics& m) {
+  const TrajectoryLayout& L = s.rec.layout;
+  const std::size_t last = s.rows() - 1;
+  add(m, "energy_in", s.at(last, L.energy(Energy::in)));
+  add(m, "joule", s.at(last, L.energy(Energy::joule)));
+}
+
+void motor_metrics(const Series& s, Metrics& m) {
+  const TrajectoryLayout& L = s.rec.layout;
+  if (!L.has_motors()) return;
+  const int n = L.dof();
+  auto power = [&](std::size_t r) {
+    double p = 0;
+    for (int j = 0; j < n; ++j) p += s.at(r, L.voltage(j)) * s.at(r, L.current(j));
+    return p;
+  };
+  double peak = -INFINITY;
+  for (std::size_t r = 0; r < s.rows(); ++r) peak = std::max(peak, power(r));
+  add(m, "power_peak", peak);
+  std::vector<double> energy(n), current_peak(n), current_rms(n);
   for (int j = 0; j < n; ++j) {
-    const int i = s.rec.column("i" + std::to_string(j)), v = s.rec.column("v" + std::to_string(j));
-    m.energy_in_per_joint[j] = s.integral([&](std::size_t r) { return s.at(r, v) * s.at(r, i); });
-    for (std::size_t r = 0; r < s.rec.rows(); ++r)
-      m.current_peak[j] = std::max(m.current_peak[j], std::abs(s.at(r, i)));
-    m.current_rms[j] = s.rms(i);
+    const int i = L.current(j), v = L.voltage(j);
+    energy[j] = s.integral([&](std::size_t r) { return s.at(r, v) * s.at(r, i); });
+    current_peak[j] = s.max_abs(i);
+    current_rms[j] = s.rms(i);
   }
+  add(m, "energy_in_per_joint", Metric::Shape::per_joint, energy);
+  add(m, "current_peak", Metric::Shape::per_joint, current_peak);
+  add(m, "current_rms", Metric::Shape::per_joint, current_rms);
 }
 
-void contact_metrics(const Model& model, const Series& s, Metrics& m) {
-  if (!model.effects.contact) return;
-  m.has_contact = true;
-  double sum = 0, weight = 0;
-  m.elbow_force_min = 1e300;
-  for (const Elbow& e : model.elbows) {
-    const int f = s.rec.column("fn_" + e.name), rest = s.rec.column("rest_" + e.name);
-    for (std::size_t r = 0; r < s.rec.rows(); ++r) {
-      if (s.at(r, rest) < 0.5) continue;
-      sum += s.at(r, f), weight += 1;
-      m.elbow_force_min = std::min(m.elbow_force_min, s.at(r, f));
-      m.elbow_force_max = std::max(m.elbow_force_max, s.at(r, f));
+void contact_metrics(const Series& s, Metrics& m) {
+  const TrajectoryLayout& L = s.rec.layout;
+  if (!L.has_contact()) return;
+  const int elbows = L.elbows();
+  auto resting = [&](std::size_t r, int k) { return s.at(r, L.elbow_resting(k)) >= 0.5; };
+  double sum = 0, count = 0, low = INFINITY, high = 0;
+  std::vector<double> fraction(elbows), peak(elbows), drift(elbows);
+  for (int k = 0; k < elbows; ++k) {
+    for (std::size_t r = 0; r < s.rows(); ++r) {
+      const double f = s.at(r, L.elbow_force(k));
+      peak[k] = std::max(peak[k], std::abs(f));
+      if (!resting(r, k)) continue;
+      sum += f, count += 1, low = std::min(low, f), high = std::max(high, f);
+      drift[k] = std::max(drift[k], std::abs(s.at(r, L.elbow_distance(k))));
     }
+    const double T = s.span();
+    const double held = s.held([&](std::size_t r) { return resting(r, k); });
+    fraction[k] = T > 0 ? held / T : (resting(0, k) ? 1.0 : 0.0);
   }
-  m.elbow_force_mean = weight > 0 ? sum / weight : 0.0;
-  if (weight == 0) m.elbow_force_min = 0;
-  m.time_in_contact = s.integral([&](std::size_t r) {
-    for (const Elbow& e : model.elbows)
-      if (s.at(r, s.rec.column("rest_" + e.name)) > 0.5) return 1.0;
-    return 0.0;
-  });
+  add(m, "elbow_force_mean", count > 0 ? sum / count : 0.0);
+  add(m, "elbow_force_min", count > 0 ? low : 0.0);
+  add(m, "elbow_force_max", high);
+  add(m, "time_in_contact", s.held([&](std::size_t r) {
+    for (int k = 0; k < elbows; ++k)
+      if (resting(r, k)) return true;
+    return false;
+  }));
+  add(m, "rest_fraction", Metric::Shape::per_elbow, fraction);
+  add(m, "elbow_force_peak", Metric::Shape::per_elbow, peak);
+  add(m, "elbow_drift_max", Metric::Shape::per_elbow, drift);
 }
 
 }  // namespace
 
-Metrics compute_metrics(const Model& model, const Recording& recording) {
+const Metric* Metrics::find(const std::string& name) const {
+  for (const Metric& m : list)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+double Metrics::operator[](const std::string& name) const {
+  const Metric* m = find(name);
+  if (!m || m->shape != Metric::Shape::one) throw std::out_of_range("no metric " + name);
+  return m->values[0];
+}
+
+std::string metric_unit(const std::string& name) {
+  for (const Vocabulary& v : kVocabulary)
+    if (name == v.name) return v.unit;
+  return "";
+}
+
+Metrics compute_metrics(const Recording& recording) {
   Metrics m;
   if (recording.rows() == 0) return m;
-  const Series s{recording, recording.column("time")};
+  m.elbows = recording.layout.groups().elbows;
+  const Series s(recording);
+  add(m, "samples", double(s.rows()));
   hand_metrics(s, m);
-  motor_metrics(model, s, m);
-  contact_metrics(model, s, m);
-  const std::size_t last = recording.rows() - 1;
-  m.energy_in = recording.at(last, recording.column("E_in"));
-  m.joule = recording.at(last, recording.column("E_joule"));
+  energy_metrics(s, m);
+  motor_metrics(s, m);
+  contact_metrics(s, m);
   return m;
 }
 

@@ -1,28 +1,60 @@
-// Per-run metrics of the experiment (hand accuracy, energy, currents, elbow
-// forces), computed from the recording so they equal what the CSV holds.
+// The metrics of a run, computed from its recording alone, so that
+// summary.json, comparisons, sweeps and reports all quote the same numbers
+// under the same names (a report can recompute them from trajectory.csv).
+//
+// Integrals over time use the trapezoid rule over the recorded samples;
+// RMS values are time-weighted, sqrt(integral y^2 dt / duration). A 0/1
+// flag (resting) holds from its sample to the next.
+//
+// The vocabulary (shape: one value, one per joint j, one per elbow e):
+//   name                 unit  shape   what
+//   samples              -     one     recorded rows
+//   hand_error_rms       m     one     RMS distance hand - desired hand (a task)
+//   hand_error_max       m     one     largest distance (a task)
+//   hand_error_final     m     one     distance at the last sample (a task)
+//   hand_path_length     m     one     length of the hand's recorded path
+//   energy_in            J     one     electrical energy in (E_in at the end)
+//   joule                J     one     Joule loss (E_joule at the end)
+//   power_peak           W     one     largest sum_j v_j i_j (motors)
+//   energy_in_per_joint  J     joint   integral of v_j i_j (motors)
+//   current_peak         A     joint   largest |i_j| (motors)
+//   current_rms          A     joint   RMS of i_j (motors)
+//   elbow_force_mean     N     one     mean normal force over resting samples of all elbows (contact)
+//   elbow_force_min      N     one     smallest of them (0 when none rests)
+//   elbow_force_max      N     one     largest of them
+//   time_in_contact      s     one     time some elbow rests (contact)
+//   rest_fraction        -     elbow   share of the run the elbow rests (contact)
+//   elbow_force_peak     N     elbow   largest normal force on the elbow (contact)
+//   elbow_drift_max      m     elbow   largest |d| (signed distance) while it rests (contact)
 #pragma once
 
-#include <Eigen/Core>
+#include <string>
+#include <vector>
 
-#include "engine/model.hpp"
+#include "engine/recording/recording.hpp"
 
 namespace elbowsim {
 
-struct Recording;
-
-struct Metrics {
-  bool has_task = false;
-  double hand_error_rms = 0, hand_error_max = 0, hand_error_final = 0;  // [m]
-  double energy_in = 0, joule = 0;                                      // [J]
-  Eigen::VectorXd energy_in_per_joint;        // [J] integral of v_j i_j (motors)
-  Eigen::VectorXd current_peak, current_rms;  // [A] per joint (motors)
-  bool has_contact = false;
-  double elbow_force_mean = 0, elbow_force_min = 0, elbow_force_max = 0;  // [N] resting samples
-  double time_in_contact = 0;  // [s] some elbow resting
+struct Metric {
+  enum class Shape { one, per_joint, per_elbow };
+  std::string name;            // from the vocabulary above
+  std::string unit;            // "m", "J", ...; "" for ratios and counts
+  Shape shape = Shape::one;
+  std::vector<double> values;  // 1, dof or elbows values
 };
 
-// Time integrals by the trapezoid rule over the recorded samples (exact up
-// to the recording interval); RMS values are time-weighted the same way.
-Metrics compute_metrics(const Model& model, const Recording& recording);
+struct Metrics {
+  std::vector<Metric> list;          // in vocabulary order; absent ones left out
+  std::vector<std::string> elbows;   // the names behind per_elbow values
+
+  const Metric* find(const std::string& name) const;  // nullptr when absent
+  // The value of a one-value metric; throws std::out_of_range when absent.
+  double operator[](const std::string& name) const;
+};
+
+Metrics compute_metrics(const Recording& recording);
+
+// The unit of a metric of the vocabulary, "" for an unknown name.
+std::string metric_unit(const std::string& name);
 
 }  // namespace elbowsim

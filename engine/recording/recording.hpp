@@ -1,28 +1,32 @@
 // What a run records: a table of samples over time (one row per recorded
-// step). Plain data: writers, the renderer and the report read it; none of
-// them reach back into the engine.
+// step) and its layout (trajectory_layout.hpp), which owns every column's
+// name, unit and index. Plain data: writers, the renderer and the report read
+// it; none of them reach back into the engine.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "engine/recording/trajectory_layout.hpp"
+
 namespace elbowsim {
 
-struct Column {
-  std::string name;  // e.g. "q0"
-  std::string unit;  // e.g. "rad"
-};
-
 struct Recording {
-  std::vector<Column> columns;
-  std::vector<double> values;  // row-major, rows x columns.size()
+  TrajectoryLayout layout;
+  std::vector<double> values;  // row-major, rows x layout.size()
 
-  std::size_t rows() const { return columns.empty() ? 0 : values.size() / columns.size(); }
+  Recording() = default;
+  explicit Recording(TrajectoryLayout l) : layout(std::move(l)) {}
+
+  const std::vector<Column>& columns() const { return layout.columns(); }
+  std::size_t rows() const { return layout.size() == 0 ? 0 : values.size() / layout.columns().size(); }
   double at(std::size_t row, std::size_t column) const {
-    return values[row * columns.size() + column];
+    return values[row * layout.columns().size() + column];
   }
   // Index of a named column, or -1.
   int column(const std::string& name) const;
+  // The values of column `c` (an index from the layout), one per row; empty when c < 0.
+  std::vector<double> series(int c) const;
 };
 
 }  // namespace elbowsim

@@ -1,6 +1,6 @@
 #include "engine/run/recorder.hpp"
 
-#include <algorithm>
+#include <limits>
 
 #include "engine/control/controller.hpp"
 #include "engine/control/plan.hpp"
@@ -9,93 +9,82 @@
 
 namespace elbowsim {
 
-namespace {
-
-void add_columns(std::vector<Column>& cols, const char* prefix, const char* unit, int n) {
-  for (int j = 0; j < n; ++j) cols.push_back({prefix + std::to_string(j), unit});
+TrajectoryLayout trajectory_layout(const Model& model, bool desired_hand) {
+  TrajectoryLayout::Groups g;
+  g.dof = model.dof;
+  g.motors = model.has_motor();
+  g.desired_hand = desired_hand;
+  g.contact = model.effects.contact;
+  if (g.contact)
+    for (const Elbow& e : model.elbows) g.elbows.push_back(e.name);
+  return TrajectoryLayout(std::move(g));
 }
 
-}  // namespace
+namespace {
 
-std::vector<Column> trajectory_columns(const Model& model, bool has_plan) {
-  const int n = model.dof;
-  std::vector<Column> cols{{"time", "s"}};
-  add_columns(cols, "q", "rad", n);
-  add_columns(cols, "qd", "rad/s", n);
-  add_columns(cols, "qdd", "rad/s^2", n);
-  if (model.has_motor()) {
-    add_columns(cols, "i", "A", n);
-    add_columns(cols, "v", "V", n);
-  }
-  add_columns(cols, "tau", "N m", n);
-  for (const char* axis : {"hand_x", "hand_y", "hand_z"}) cols.push_back({axis, "m"});
-  if (has_plan) {
-    for (const char* axis : {"hand_d_x", "hand_d_y", "hand_d_z", "hand_error"}) cols.push_back({axis, "m"});
-  }
-  if (model.effects.contact) {
-    for (const Elbow& e : model.elbows) {
-      cols.push_back({"fn_" + e.name, "N"});
-      cols.push_back({"d_" + e.name, "m"});
-      cols.push_back({"rest_" + e.name, "1"});
+void write_joints(const TrajectoryLayout& L, const Data& data, double* row) {
+  for (int j = 0; j < L.dof(); ++j) {
+    row[L.q(j)] = data.q[j];
+    row[L.qd(j)] = data.qd[j];
+    row[L.qdd(j)] = data.qdd[j];
+    if (L.has_motors()) {
+      row[L.current(j)] = data.current[j];
+      row[L.voltage(j)] = data.voltage[j];
     }
+    row[L.torque(j)] = data.actuation[j];
   }
-  for (const char* e : {"E_in", "E_joule", "E_viscous", "KE_links", "KE_rotors", "PE",
-                        "E_magnetic"})
-    cols.push_back({e, "J"});
-  if (model.effects.contact)
-    for (const char* e : {"E_friction", "E_normal", "E_impact", "E_projection"})
-      cols.push_back({e, "J"});
-  cols.push_back({"balance_residual", "J"});
-  return cols;
 }
 
-namespace {
+// The hand, and where the plan wants it (linear between plan samples).
+void write_hand(const Model& model, const TrajectoryLayout& L, const Data& data, double* row) {
+  const Eigen::Vector3d hand = point_position(data, model.hand_link, model.hand_point);
+  for (int a = 0; a < 3; ++a) row[L.hand(a)] = hand[a];
+  if (!L.has_desired_hand() || !data.controller || !data.controller->plan) return;
+  const Eigen::Vector3d desired = data.controller->plan->hand_at(data.t);
+  for (int a = 0; a < 3; ++a) row[L.hand_desired(a)] = desired[a];
+  row[L.hand_error()] = (hand - desired).norm();
+}
 
 // Per elbow: normal force (0 unless its row is on), signed distance, resting flag.
-void append_contacts(const Model& model, const Data& data, std::vector<double>& row) {
+void write_contacts(const TrajectoryLayout& L, const Data& data, double* row) {
   const ContactData& c = data.contact;
-  for (int k = 0; k < int(model.elbows.size()); ++k) {
+  for (int k = 0; k < L.elbows(); ++k) {
     double fn = 0;
     for (std::size_t r = 0; r < c.active.size(); ++r)
       if (c.active[r] == k) fn = c.fn[r];
-    row.insert(row.end(), {fn, c.detected[k].distance, c.resting[k] ? 1.0 : 0.0});
+    row[L.elbow_force(k)] = fn;
+    row[L.elbow_distance(k)] = c.detected[k].distance;
+    row[L.elbow_resting(k)] = c.resting[k] ? 1.0 : 0.0;
   }
 }
 
-void append(std::vector<double>& row, const Eigen::VectorXd& v) {
-  row.insert(row.end(), v.data(), v.data() + v.size());
+void write_energies(const TrajectoryLayout& L, const Data& data, double* row) {
+  const EnergyTerms& e = data.energy;
+  const std::pair<Energy, double> terms[] = {
+      {Energy::in, e.electrical_in},       {Energy::joule, e.joule},
+      {Energy::viscous, e.viscous},        {Energy::kinetic_links, e.kinetic_links},
+      {Energy::kinetic_rotors, e.kinetic_rotors}, {Energy::potential, e.potential},
+      {Energy::magnetic, e.magnetic},      {Energy::friction, e.friction},
+      {Energy::normal, e.normal_work},     {Energy::impact, e.impact_loss},
+      {Energy::projection, e.projection}};
+  for (const auto& [column, value] : terms)
+    if (L.energy(column) >= 0) row[L.energy(column)] = value;
+  row[L.balance_residual()] = balance_residual(e, data.energy_initial);
 }
 
 }  // namespace
 
 void record_sample(const Model& model, const Data& data, Recording& rec) {
-  std::vector<double>& row = rec.values;
-  row.push_back(data.t);
-  append(row, data.q);
-  append(row, data.qd);
-  append(row, data.qdd);
-  if (model.has_motor()) {
-    append(row, data.current);
-    append(row, data.voltage);
-  }
-  append(row, data.actuation);
-  const Eigen::Vector3d hand = point_position(data, model.hand_link, model.hand_point);
-  row.insert(row.end(), {hand.x(), hand.y(), hand.z()});
-  if (data.controller && data.controller->plan) {
-    const Plan& plan = *data.controller->plan;
-    const double u = std::clamp(data.t / plan.dt, 0.0, double(plan.hand.size() - 1));
-    const std::size_t k = std::min(std::size_t(u), plan.hand.size() - 1);
-    const std::size_t k1 = std::min(k + 1, plan.hand.size() - 1);
-    const Eigen::Vector3d desired = plan.hand[k] + (u - double(k)) * (plan.hand[k1] - plan.hand[k]);
-    row.insert(row.end(), {desired.x(), desired.y(), desired.z(), (hand - desired).norm()});
-  }
-  if (model.effects.contact) append_contacts(model, data, row);
-  const EnergyTerms& e = data.energy;
-  row.insert(row.end(), {e.electrical_in, e.joule, e.viscous, e.kinetic_links, e.kinetic_rotors,
-                         e.potential, e.magnetic});
-  if (model.effects.contact)
-    row.insert(row.end(), {e.friction, e.normal_work, e.impact_loss, e.projection});
-  row.push_back(balance_residual(e, data.energy_initial));
+  const TrajectoryLayout& L = rec.layout;
+  const std::size_t start = rec.values.size();
+  rec.values.resize(start + static_cast<std::size_t>(L.size()),
+                    std::numeric_limits<double>::quiet_NaN());
+  double* row = rec.values.data() + start;
+  row[L.time()] = data.t;
+  write_joints(L, data, row);
+  write_hand(model, L, data, row);
+  if (L.has_contact()) write_contacts(L, data, row);
+  write_energies(L, data, row);
 }
 
 }  // namespace elbowsim

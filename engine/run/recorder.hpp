@@ -1,5 +1,6 @@
 // Recording a run: one row of the trajectory table per recorded step, read
-// from Data after evaluate_outputs(); the columns depend on the model.
+// from Data after evaluate_outputs() and written column by column through the
+// trajectory layout (recording/trajectory_layout.hpp).
 #pragma once
 
 #include "engine/data.hpp"
@@ -7,11 +8,12 @@
 
 namespace elbowsim {
 
-// The columns of a run's trajectory (name and unit each).
-std::vector<Column> trajectory_columns(const Model& model, bool has_plan);
+// The layout of a run of `model`; desired_hand: the run follows a plan (a
+// hand task), so the desired hand and the hand error are recorded.
+TrajectoryLayout trajectory_layout(const Model& model, bool desired_hand);
 
 // Appends one row at the state in data (stage outputs evaluated, contacts
-// detected there).
+// detected there). Every column of rec.layout is written.
 void record_sample(const Model& model, const Data& data, Recording& rec);
 
 }  // namespace elbowsim

@@ -35,7 +35,7 @@ void finish(const Model& model, const Data& data, RunResult& result) {
   result.energy_final = data.energy;
   result.balance_residual = balance_residual(data.energy, data.energy_initial);
   result.contact = {data.contact.max_abs_C, data.contact.max_abs_Cd, data.contact.dependent_steps};
-  result.metrics = compute_metrics(model, result.trajectory);
+  result.metrics = compute_metrics(result.trajectory);
 }
 
 }  // namespace
@@ -48,7 +48,7 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
   const auto start = std::chrono::steady_clock::now();
   const long worlds_before = model.effects.contact ? CollisionWorld::worlds_built() : 0;
   RunResult result;
-  result.trajectory.columns = trajectory_columns(model, experiment.needs_plan());
+  result.trajectory = Recording(trajectory_layout(model, experiment.needs_plan()));
   Data data(model);
   data.controller = make_controller(model, experiment);  // may throw PlanError
   reset(model, data);

@@ -1,0 +1,101 @@
+#include "engine/recording/trajectory_layout.hpp"
+
+#include <stdexcept>
+
+namespace elbowsim {
+
+namespace {
+
+void add_joint_columns(std::vector<Column>& cols, const char* prefix, const char* unit, int n) {
+  for (int j = 0; j < n; ++j) cols.push_back({prefix + std::to_string(j), unit});
+}
+
+constexpr const char* kEnergyNames[] = {"E_in",  "E_joule",   "E_viscous", "KE_links",
+                                        "KE_rotors", "PE",    "E_magnetic", "E_friction",
+                                        "E_normal", "E_impact", "E_projection"};
+
+bool starts_with(const std::string& s, const std::string& prefix) {
+  return s.size() > prefix.size() && s.compare(0, prefix.size(), prefix) == 0;
+}
+
+}  // namespace
+
+TrajectoryLayout::TrajectoryLayout(Groups groups) : groups_(std::move(groups)) {
+  const int n = groups_.dof;
+  std::vector<Column>& cols = columns_;
+  cols.push_back({"time", "s"});
+  add_joint_columns(cols, "q", "rad", n);
+  add_joint_columns(cols, "qd", "rad/s", n);
+  add_joint_columns(cols, "qdd", "rad/s^2", n);
+  if (groups_.motors) {
+    current_ = size();
+    add_joint_columns(cols, "i", "A", n);
+    add_joint_columns(cols, "v", "V", n);
+  }
+  torque_ = size();
+  add_joint_columns(cols, "tau", "N m", n);
+  hand_ = size();
+  for (const char* axis : {"hand_x", "hand_y", "hand_z"}) cols.push_back({axis, "m"});
+  if (groups_.desired_hand) {
+    desired_ = size();
+    for (const char* name : {"hand_d_x", "hand_d_y", "hand_d_z", "hand_error"})
+      cols.push_back({name, "m"});
+  }
+  if (groups_.contact) {
+    elbow_ = size();
+    for (const std::string& e : groups_.elbows) {
+      cols.push_back({"fn_" + e, "N"});
+      cols.push_back({"d_" + e, "m"});
+      cols.push_back({"rest_" + e, "1"});
+    }
+  }
+  energy_ = size();
+  const int energies = groups_.contact ? 11 : 7;
+  for (int k = 0; k < energies; ++k) cols.push_back({kEnergyNames[k], "J"});
+  cols.push_back({"balance_residual", "J"});
+}
+
+int TrajectoryLayout::energy(Energy e) const {
+  const int k = static_cast<int>(e);
+  if (k >= static_cast<int>(Energy::friction) && !groups_.contact) return -1;
+  return energy_ + k;
+}
+
+int TrajectoryLayout::elbow(const std::string& name) const {
+  for (std::size_t k = 0; k < groups_.elbows.size(); ++k)
+    if (groups_.elbows[k] == name) return static_cast<int>(k);
+  return -1;
+}
+
+TrajectoryLayout TrajectoryLayout::from_columns(const std::vector<Column>& columns) {
+  // Infer the groups from the names, then require the columns to be exactly
+  // that layout's.
+  Groups g;
+  auto has = [&](const std::string& name) {
+    for (const Column& c : columns)
+      if (c.name == name) return true;
+    return false;
+  };
+  while (has("q" + std::to_string(g.dof))) ++g.dof;
+  g.motors = has("i0");
+  g.desired_hand = has("hand_error");
+  for (const Column& c : columns)
+    if (starts_with(c.name, "fn_")) g.elbows.push_back(c.name.substr(3));
+  g.contact = has("E_friction") || !g.elbows.empty();
+  TrajectoryLayout layout(std::move(g));
+  const std::vector<Column>& expected = layout.columns();
+  auto text = [](const Column& c) { return "'" + c.name + " [" + c.unit + "]'"; };
+  for (std::size_t k = 0; k < std::max(expected.size(), columns.size()); ++k) {
+    const std::string where = "trajectory column " + std::to_string(k + 1);
+    if (k >= columns.size())
+      throw std::invalid_argument(where + " is missing: expected " + text(expected[k]));
+    if (k >= expected.size())
+      throw std::invalid_argument(where + " " + text(columns[k]) + " is not a trajectory column");
+    if (text(columns[k]) != text(expected[k]))
+      throw std::invalid_argument(where + " is " + text(columns[k]) + ", expected " +
+                                  text(expected[k]));
+  }
+  return layout;
+}
+
+}  // namespace elbowsim
