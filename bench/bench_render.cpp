@@ -10,13 +10,18 @@
 // ground grid. Protocol: one warm-up render, then 3 timed renders per
 // configuration; reports the median and where the time went in that run.
 //
-// Run: build/bench/bench_render [runs]   (output in /tmp/elbowsim_bench_render)
+// Run: build/bench/bench_render [runs] [--json FILE]
+//   (renders go to /tmp/elbowsim_bench_render; --json also writes every run's
+//   numbers and the medians to FILE, as bench/run.sh and bench/tables.py use them)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "render/frame_source.hpp"
@@ -69,10 +74,15 @@ struct Config {
   bool video;
 };
 
-void print_row(const Config& c, std::vector<RenderStats> runs) {
+// Runs sorted by wall time, fastest first; the median is the middle one.
+void sort_runs(std::vector<RenderStats>& runs) {
   std::sort(runs.begin(), runs.end(), [](const RenderStats& a, const RenderStats& b) {
     return a.wall_seconds < b.wall_seconds;
   });
+}
+
+void print_row(const Config& c, std::vector<RenderStats> runs) {
+  sort_runs(runs);
   const RenderStats& m = runs[runs.size() / 2];
   const double per = 1000.0 / m.frames;  // ms per frame
   std::printf(
@@ -86,10 +96,62 @@ void print_row(const Config& c, std::vector<RenderStats> runs) {
   std::fflush(stdout);
 }
 
+std::string json_string(const std::string& text) {
+  std::string out = "\"";
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c == '"' || c == '\\') out += '\\', out += ch;
+    else if (c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else out += ch;
+  }
+  return out + "\"";
+}
+
+// One configuration's runs (sorted) as a JSON object: the median run's numbers
+// (fps, ms per frame in each stage), the fastest and slowest fps, every run's fps.
+void write_json_row(std::FILE* f, const Config& c, std::vector<RenderStats> runs, bool last) {
+  sort_runs(runs);
+  const RenderStats& m = runs[runs.size() / 2];
+  const double per = 1000.0 / m.frames;
+  std::fprintf(f,
+               "    {\"name\": \"%dx%d_msaa%d_%s\", \"width\": %d, \"height\": %d, "
+               "\"msaa\": %d, \"samples\": %d, \"output\": \"%s\", \"frames\": %d,\n"
+               "     \"ffmpeg_missing\": %s, \"runs\": %zu,\n"
+               "     \"median_fps\": %.4f, \"min_fps\": %.4f, \"max_fps\": %.4f,\n"
+               "     \"median_ms_per_frame\": {\"wall\": %.4f, \"scene\": %.4f, \"draw\": %.4f, "
+               "\"end\": %.4f, \"fetch\": %.4f, \"compose\": %.4f, \"output\": %.4f},\n"
+               "     \"fps_per_run\": [",
+               c.width, c.height, c.msaa, c.video ? "mp4" : "none", c.width, c.height, c.msaa,
+               m.samples, c.video ? "mp4" : "none", m.frames, m.ffmpeg_missing ? "true" : "false",
+               runs.size(), m.frames / m.wall_seconds,
+               runs.back().frames / runs.back().wall_seconds,
+               runs.front().frames / runs.front().wall_seconds, m.wall_seconds * per,
+               m.scene_seconds * per, m.draw_seconds * per, m.finish_seconds * per,
+               m.readback_seconds * per, m.compose_seconds * per, m.output_seconds * per);
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    std::fprintf(f, "%s%.4f", k ? ", " : "", runs[k].frames / runs[k].wall_seconds);
+  std::fprintf(f, "]}%s\n", last ? "" : ",");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
+  int runs = 3;
+  const char* json_path = nullptr;
+  for (int k = 1; k < argc; ++k) {
+    if (std::strcmp(argv[k], "--json") == 0 && k + 1 < argc) json_path = argv[++k];
+    else if (std::strcmp(argv[k], "--help") == 0 || std::strcmp(argv[k], "-h") == 0 ||
+             std::strcmp(argv[k], "--json") == 0) {
+      std::fprintf(stderr, "usage: %s [runs (default 3)] [--json FILE]\n", argv[0]);
+      return 2;
+    } else runs = std::max(1, std::atoi(argv[k]));
+  }
+  double load[3] = {-1, -1, -1};
+  getloadavg(load, 3);
+  const std::time_t started = std::time(nullptr);
   const Model model = prototype_arm();
   const Recording recording = prototype_recording(model);
   const std::filesystem::path folder =
@@ -102,6 +164,8 @@ int main(int argc, char** argv) {
                                        {1280, 720, 1, true},  {1280, 720, 4, true},
                                        {1280, 720, 1, false}, {1280, 720, 4, false}};
   bool warmed = false;
+  std::vector<std::vector<RenderStats>> all;
+  std::string gl;
   for (const Config& c : configs) {
     settings.width = c.width;
     settings.height = c.height;
@@ -113,5 +177,26 @@ int main(int argc, char** argv) {
     for (int r = 0; r < runs; ++r) stats.push_back(render_panels({&source}, settings, request));
     if (c.width == 1280 && c.msaa == 4 && c.video) std::printf("(%s)\n", stats[0].gl.c_str());
     print_row(c, stats);
+    gl = stats[0].gl;
+    all.push_back(std::move(stats));
   }
+  if (!json_path) return 0;
+  std::FILE* f = std::fopen(json_path, "w");
+  if (!f) {
+    std::perror(json_path);
+    return 1;
+  }
+  char date[32];
+  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&started));
+  std::fprintf(f,
+               "{\n  \"context\": {\"program\": \"bench_render\", \"date\": \"%s\", "
+               "\"runs_per_config\": %d, \"warmup_renders\": 1, \"frames_per_render\": %d,\n"
+               "              \"load_avg\": [%.2f, %.2f, %.2f], \"gl\": %s},\n"
+               "  \"configs\": [\n",
+               date, runs, all.empty() ? 0 : all[0][0].frames, load[0], load[1], load[2],
+               json_string(gl).c_str());
+  for (std::size_t k = 0; k < all.size(); ++k)
+    write_json_row(f, configs[k], all[k], k + 1 == all.size());
+  std::fprintf(f, "  ]\n}\n");
+  return std::fclose(f) == 0 ? 0 : 1;
 }
