@@ -21,13 +21,17 @@ void stiff_rates(const Model& model, Eigen::Ref<Eigen::ArrayXd> lambda) {
 
 namespace {
 
-// Powers that feed the energy integrals: electrical input, Joule loss, viscous loss.
-void energy_rates(const Model& model, Data& data, ConstVec qd, Eigen::Ref<Eigen::VectorXd> out) {
+// Powers that feed the energy integrals: electrical input, Joule loss, viscous
+// loss (and with contact, friction loss and the table's normal work). Without
+// motors the input is the work of the input torques: data.actuation less the
+// hand force's share, whose power `hand_power` has its own integral.
+void energy_rates(const Model& model, Data& data, ConstVec qd, double hand_power,
+                  Eigen::Ref<Eigen::VectorXd> out) {
   if (model.has_motor()) {
     out[0] = data.voltage.dot(data.current);
     out[1] = data.current.dot(model.resistance.cwiseProduct(data.current));
   } else {
-    out[0] = data.actuation.dot(qd);
+    out[0] = data.actuation.dot(qd) - hand_power;
     out[1] = 0.0;
   }
   out[2] = model.effects.damping ? qd.dot(model.viscous.cwiseProduct(qd)) : 0.0;
@@ -46,9 +50,11 @@ void energy_rates(const Model& model, Data& data, ConstVec qd, Eigen::Ref<Eigen:
 }
 
 // A constant world force F at the hand acts as joint torques J_hand^T F.
-void add_hand_force(const Model& model, Data& data) {
+// Returns its power F . v_hand [W].
+double add_hand_force(const Model& model, Data& data, ConstVec qd) {
   point_jacobian(model, data, model.hand_link, model.hand_point, data.contact.J3);
   data.actuation.noalias() += data.contact.J3.transpose() * model.hand_load.force;
+  return model.hand_load.force.dot(data.contact.J3 * qd);
 }
 
 // (M + Jm) qdd = tau - B_J + Jf^T fn with Jc qdd = gamma for the resting
@@ -80,7 +86,7 @@ void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
     motor_stage(model, data, qd, x.segment(s.current, s.n));
   else
     motor_stage(model, data, qd, data.current);
-  if (s.external >= 0) add_hand_force(model, data);
+  const double hand_power = s.external >= 0 ? add_hand_force(model, data, qd) : 0.0;
   arm_accelerations(model, data, qd);
 
   N.segment(s.q(), s.n) = qd;
@@ -89,9 +95,8 @@ void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
   if (s.current >= 0)
     N.segment(s.current, s.n) =
         (data.voltage - model.km.cwiseProduct(qd)).cwiseQuotient(model.inductance);
-  energy_rates(model, data, qd, N.segment(s.energy, s.energy_terms));
-  if (s.external >= 0)  // power of the hand force: F . v_hand
-    N[s.external] = model.hand_load.force.dot(data.contact.J3 * qd);
+  energy_rates(model, data, qd, hand_power, N.segment(s.energy, s.energy_terms));
+  if (s.external >= 0) N[s.external] = hand_power;
 }
 
 }  // namespace elbowsim
