@@ -80,7 +80,7 @@ struct Data {
   Eigen::VectorXd D, u;  // [n] ABA joint-space scratch
 
   // --- integrator state ----------------------------------------------------
-  // x = [q; qd; i (motor: full); energy integrals] (state_vector.hpp)
+  // x = [q; qd; i (motor: full); energy integrals] (run/state_layout.hpp)
   Eigen::VectorXd x, x_start, k1, k2, k3, k4, x_a, x_b, x_c;
   Eigen::ArrayXd lambda;  // stiff linear rates per component of x (derivative.hpp)
   // Exponential-integrator coefficients for one step length h (integrator.cpp):

@@ -1,6 +1,7 @@
 // Text over a frame: the lines to show (GL- and cairo-free, testable) and
 // their drawing with cairo's text API and the DejaVu Sans font into an ARGB
-// image composited over the RGB frame. The only file that includes cairo.h.
+// image composited over the RGB frame. The renderer's only file that includes cairo.h
+// (report/plot/plot.cpp is the report's).
 #pragma once
 
 #include <cstdint>

@@ -8,7 +8,7 @@ namespace elbowsim {
 
 namespace {
 
-// Walker-Orin eq. (54): qdd = (M + Jm)^-1 (tau - B_J), by Cholesky.
+// Eq. (50) solved for qdd: qdd = (M + Jm)^-1 (tau - B_J), by Cholesky.
 void solve_with_mass_matrix(Data& data, ConstVec tau,
                             Eigen::Ref<Eigen::VectorXd> qdd) {
   data.llt.compute(data.mass_matrix);

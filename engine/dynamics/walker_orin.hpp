@@ -1,4 +1,4 @@
-// The paper's forward-dynamics method (eq. 52-54, Walker & Orin 1982, method 1):
+// The paper's forward-dynamics method (eq. 50, 53-54, Walker & Orin 1982, method 1):
 // M is built column by column from s calls of inverse dynamics.
 #pragma once
 
@@ -10,7 +10,7 @@ namespace elbowsim {
 // Needs forward_kinematics(q).
 void mass_matrix_walker_orin(const Model& model, Data& data);
 
-// data.bias [n] = B_J = INV(q, qd, 0, g) = h + G + (D + Dm) qd (eq. 52).
+// data.bias [n] = B_J = INV(q, qd, 0, g) = h + G + (D + Dm) qd (eq. 53).
 // Needs forward_kinematics(q).
 void bias_torques(const Model& model, Data& data, ConstVec qd);
 

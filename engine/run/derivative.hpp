@@ -8,7 +8,7 @@
 
 namespace elbowsim {
 
-// lambda per component of x (state_vector.hpp): -R/L on currents, else 0.
+// lambda per component of x (state_layout.hpp): -R/L on currents, else 0.
 void stiff_rates(const Model& model, Eigen::Ref<Eigen::ArrayXd> lambda);
 
 // N(t, x): kinematics, motors (eq. 16-27), forward dynamics (eq. 29/54) and
