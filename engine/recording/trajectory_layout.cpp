@@ -77,8 +77,10 @@ TrajectoryLayout TrajectoryLayout::from_columns(const std::vector<Column>& colum
     return false;
   };
   while (has("q" + std::to_string(g.dof))) ++g.dof;
-  g.motors = has("i0");
-  g.desired_hand = has("hand_error");
+  // Each group from any one of its columns, so that one renamed column is
+  // reported as itself, not as a whole group missing.
+  g.motors = has("i0") || has("v0");
+  g.desired_hand = has("hand_d_x") || has("hand_error");
   for (const Column& c : columns)
     if (starts_with(c.name, "fn_")) g.elbows.push_back(c.name.substr(3));
   g.contact = has("E_friction") || !g.elbows.empty();
