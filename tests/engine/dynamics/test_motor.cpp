@@ -1,14 +1,19 @@
-// DC motor model (eq. 16-27) against analytic cases.
+// engine/dynamics/motor.cpp: the DC motor model (eq. 16-27), motor_stage on its own and
+// against analytic cases of whole runs.
 #include <doctest/doctest.h>
+
+#include <algorithm>
 
 #include "engine/run/simulator.hpp"
 #include "engine/control/controller.hpp"
 #include "engine/dynamics/motor.hpp"
 #include "support/approx.hpp"
 #include "support/models.hpp"
+#include "support/runs.hpp"
 
 using namespace elbowsim;
 using elbowsim::testing::approx;
+using elbowsim::testing::last;
 
 namespace {
 
@@ -30,10 +35,6 @@ Model spinner(MotorModel motor_model, double volts) {
   m.inputs.joints = {v};
   finalize(m);
   return m;
-}
-
-double last(const RunResult& r, const char* column) {
-  return r.trajectory.at(r.trajectory.rows() - 1, r.trajectory.column(column));
 }
 
 }  // namespace

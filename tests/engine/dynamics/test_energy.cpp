@@ -1,9 +1,12 @@
-// Energy accounting: the balance E_in - losses - change of stored energy
-// closes up to integration error, and the error falls with the step.
+// engine/dynamics/energy.cpp: stored energy (links, rotors, gravity, inductance) against
+// hand-computed values, and the energy account: the balance E_in - losses - change of
+// stored energy closes up to integration error, and the error falls with the step.
 #include <doctest/doctest.h>
 
 #include <cmath>
 
+#include "engine/dynamics/energy.hpp"
+#include "engine/dynamics/kinematics.hpp"
 #include "engine/run/simulator.hpp"
 #include "support/approx.hpp"
 #include "support/contact_scenes.hpp"

@@ -1,8 +1,12 @@
-// finalize(): the backstop checks for models built in code.
+// engine/model.cpp: finalize(), the backstop checks for models built in code (errors name
+// the member), the derived motor constants, a fresh id per call; the effects' names.
 #include <doctest/doctest.h>
 
 #include <stdexcept>
+#include <string>
+#include <vector>
 
+#include "support/approx.hpp"
 #include "support/models.hpp"
 
 using namespace elbowsim;

@@ -1,6 +1,6 @@
-// The step function on its own: driven by hand it is simulate(), it allocates
-// nothing even when elbows land, bounce, release and slide, and it refuses a
-// Data made for another model.
+// engine/run/step.cpp: the step function on its own: driven by hand it is simulate(),
+// it allocates nothing even when elbows land, bounce, release and slide, and it refuses
+// a Data made for another model.
 #include <doctest/doctest.h>
 
 #include <cstring>
