@@ -1,10 +1,13 @@
 #include "support/contact_scenes.hpp"
 
 #include <cmath>
+#include <memory>
 #include <string>
 
+#include "engine/contact/collision.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/rnea.hpp"
+#include "engine/run/state_layout.hpp"
 
 namespace elbowsim::testing {
 
@@ -45,6 +48,16 @@ void set_random_contacts(const Model& m, Data& data) {
     data.contact.normal[k] = Eigen::Vector3d::Random().normalized();
     data.contact.surface[k] = Eigen::Vector3d::Random();
   }
+}
+
+void place(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+           double t) {
+  const StateLayout s(model);
+  if (!data.contact.world) data.contact.world = std::make_shared<CollisionWorld>(model);
+  data.x.setZero();
+  data.x.segment(s.q(), s.n) = q;
+  data.x.segment(s.qd(), s.n) = qd;
+  data.t = t;
 }
 
 double ElbowArm::G1() const {

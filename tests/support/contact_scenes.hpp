@@ -14,6 +14,12 @@ Model chain_with_elbows(int n, int p, std::uint32_t seed);
 // without detection).
 void set_random_contacts(const Model& m, Data& data);
 
+// Puts the joint state (q, qd) at time t into data.x (its other components zero) and
+// builds the collision world if data has none: the state the contact stages read
+// (detect_contacts, select_active_set, ...) when a test calls them on their own.
+void place(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+           double t);
+
 // 2-link planar arm leaning on an elbow sphere at the end of link 0 (on joint
 // 1), table top exactly under it at q0; torque inputs (motor none).
 //

@@ -168,3 +168,27 @@ TEST_CASE("a simulation step allocates nothing (Eigen guard and global operator 
     }
   }
 }
+
+TEST_CASE("integrate_step calls the C allocator zero times (Eigen's own allocations included)") {
+  // Eigen allocates with malloc, which operator new never sees, and its malloc guard is
+  // inert under -DNDEBUG: this counts malloc itself (support/malloc_count.cpp).
+  for (DynamicsMethod method : {DynamicsMethod::walker_orin, DynamicsMethod::crba, DynamicsMethod::aba}) {
+    for (IntegratorKind kind : {IntegratorKind::euler, IntegratorKind::semi_implicit_euler,
+                                IntegratorKind::rk4}) {
+      Model m = random_chain(7, 3);
+      m.options.dynamics = method;
+      m.options.integrator = kind;
+      Data data(m);
+      prepare_integrator(m, data);
+      reset_state(m, data);
+      integrate_step(m, data);  // warm-up
+      integrate_step(m, data, 0.4 * m.options.step);  // and a shortened step's coefficients
+      CAPTURE(std::string(to_string(method)));
+      CAPTURE(std::string(to_string(kind)));
+      const long before = malloc_count();
+      for (int k = 0; k < 10; ++k) integrate_step(m, data);
+      integrate_step(m, data, 0.4 * m.options.step);
+      CHECK(malloc_count() == before);
+    }
+  }
+}
