@@ -1,10 +1,11 @@
 // Shared by the report tests: looking at decoded PNGs, running the elbowsim
-// binary, scratch folders.
+// binary; scratch folders come from support/scratch.hpp.
 #pragma once
 
 #include <doctest/doctest.h>
 
 #include "support/process.hpp"
+#include "support/scratch.hpp"
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -69,12 +70,5 @@ inline void check_plot_png(const std::filesystem::path& png, int width, int heig
 using elbowsim::testing::Outcome;
 using elbowsim::testing::run_elbowsim;
 using elbowsim::testing::slurp;
-
-inline std::filesystem::path scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("elbowsim_report_" + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 }  // namespace elbowsim::testing

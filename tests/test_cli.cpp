@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include "support/process.hpp"
+#include "support/scratch.hpp"
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -16,16 +17,10 @@ namespace fs = std::filesystem;
 namespace {
 
 using elbowsim::testing::Outcome;
+using elbowsim::testing::scratch;
 using elbowsim::testing::slurp;
 
 Outcome run(const std::string& arguments) { return elbowsim::testing::run_elbowsim(arguments); }
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("elbowsim_cli_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 const std::string kPendulum = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/two_link_pendulum.yaml";
 
@@ -40,7 +35,7 @@ TEST_CASE("cli: --help and --version exit 0; unknown command exits 2") {
 }
 
 TEST_CASE("cli: run writes trajectory.csv and summary.json, byte-identical on a second run") {
-  const fs::path dir = scratch("determinism");
+  const fs::path dir = scratch("cli", "determinism");
   const Outcome first = run("run " + kPendulum + " --out " + (dir / "a").string());
   const Outcome second = run("run " + kPendulum + " --out " + (dir / "b").string());
   REQUIRE(first.exit_code == 0);
@@ -58,7 +53,7 @@ TEST_CASE("cli: run writes trajectory.csv and summary.json, byte-identical on a 
 }
 
 TEST_CASE("cli: --set overrides a key; a bad --set names itself and writes nothing") {
-  const fs::path dir = scratch("set");
+  const fs::path dir = scratch("cli", "set");
   const Outcome ok = run("run " + kPendulum + " --out " + (dir / "ok").string() +
                          " --set simulation.duration=0.1 --set effects.gravity=false");
   REQUIRE(ok.exit_code == 0);
@@ -74,7 +69,7 @@ TEST_CASE("cli: --set overrides a key; a bad --set names itself and writes nothi
 }
 
 TEST_CASE("cli: a physically invalid scenario exits 2 naming file, line and key; writes nothing") {
-  const fs::path dir = scratch("invalid");
+  const fs::path dir = scratch("cli", "invalid");
   std::string text = slurp(kPendulum);
   const std::string needle = "mass: 1.3";
   REQUIRE(text.find(needle) != std::string::npos);
@@ -92,7 +87,7 @@ TEST_CASE("cli: a physically invalid scenario exits 2 naming file, line and key;
 }
 
 TEST_CASE("cli: a diverging run exits 3 with a clear message and keeps what it recorded") {
-  const fs::path dir = scratch("diverge");
+  const fs::path dir = scratch("cli", "diverge");
   const Outcome r = run("run " + kPendulum + " --out " + dir.string() +
                         " --set simulation.integrator=euler --set simulation.step=0.05"
                         " --set simulation.duration=200" +

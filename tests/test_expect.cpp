@@ -193,7 +193,7 @@ const std::string kShort = " --no-render --no-report --set simulation.duration=0
 }  // namespace
 
 TEST_CASE("cli --expect: run exits 0 when met, 4 when not (naming it), 2 when malformed") {
-  const auto dir = t::scratch("expect_run");
+  const auto dir = t::scratch("report", "expect_run");
   const auto ok = t::run_elbowsim("run " + kScene + " --out " + (dir / "a").string() + kShort +
                                   " --expect \"energy_final.electrical_in < 120\"" +
                                   " --expect \"completed and contact.landings >= 1\"");
@@ -223,7 +223,7 @@ TEST_CASE("cli --expect: run exits 0 when met, 4 when not (naming it), 2 when ma
 }
 
 TEST_CASE("cli --expect: compare addresses runs by folder name") {
-  const auto dir = t::scratch("expect_compare");
+  const auto dir = t::scratch("report", "expect_compare");
   REQUIRE(t::run_elbowsim("run " + kScene + " --out " + (dir / "on").string() + kShort).exit_code ==
           0);
   REQUIRE(t::run_elbowsim("run " + kScene + " --out " + (dir / "off").string() + kShort +
@@ -247,7 +247,7 @@ TEST_CASE("cli --expect: compare addresses runs by folder name") {
 }
 
 TEST_CASE("cli --expect: report checks a recorded run") {
-  const auto dir = t::scratch("expect_report");
+  const auto dir = t::scratch("report", "expect_report");
   REQUIRE(t::run_elbowsim("run " + kScene + " --out " + (dir / "r").string() + kShort).exit_code ==
           0);
   CHECK(

@@ -41,7 +41,7 @@ Series line(std::vector<double> x, std::vector<double> y, Color color) {
 }
 
 std::filesystem::path png(const std::string& name) {
-  return t::scratch("plot_" + name) / (name + ".png");
+  return t::scratch("report", "plot_" + name) / (name + ".png");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include "support/process.hpp"
+#include "support/scratch.hpp"
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -83,14 +84,8 @@ Camera test_camera(double aspect) {
   return c;
 }
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("elbowsim_render_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 using elbowsim::testing::Outcome;
+using elbowsim::testing::scratch;
 using elbowsim::testing::shell;
 
 Outcome cli(const std::string& arguments) {
@@ -170,7 +165,7 @@ TEST_CASE("render gl: two runs side by side, one panel each") {
 TEST_CASE("render video: run writes an H.264 yuv420p mp4 of duration x fps frames") {
   const fs::path ffprobe = find_on_path("ffprobe");
   REQUIRE_MESSAGE(!ffprobe.empty(), "ffprobe (package ffmpeg) is needed on PATH");
-  const fs::path dir = scratch("video");
+  const fs::path dir = scratch("render", "video");
   const Outcome run = cli(short_run(dir, "--set output.video=true"));
   INFO(run.output);
   REQUIRE(run.exit_code == 0);
@@ -201,7 +196,7 @@ TEST_CASE("render video: run writes an H.264 yuv420p mp4 of duration x fps frame
 }
 
 TEST_CASE("render frames: output.frames writes numbered PNGs; --no-render writes none") {
-  const fs::path dir = scratch("frames");
+  const fs::path dir = scratch("render", "frames");
   // Supersampled: drawn at 320x240, averaged down to 160x120.
   const Outcome run = cli(short_run(dir, "--set output.frames=true --set render.supersample=true"));
   INFO(run.output);
@@ -218,7 +213,7 @@ TEST_CASE("render frames: output.frames writes numbered PNGs; --no-render writes
   CHECK(w == 160);
   CHECK(h == 120);
 
-  const fs::path none = scratch("no_render");
+  const fs::path none = scratch("render", "no_render");
   const Outcome skipped =
       cli(short_run(none, "--set output.video=true --set output.frames=true --no-render"));
   CHECK(skipped.exit_code == 0);
@@ -228,9 +223,9 @@ TEST_CASE("render frames: output.frames writes numbered PNGs; --no-render writes
 }
 
 TEST_CASE("render without ffmpeg on PATH: PNG frames and the command that makes the video") {
-  const fs::path dir = scratch("no_ffmpeg");
+  const fs::path dir = scratch("render", "no_ffmpeg");
   REQUIRE(cli(short_run(dir, "")).exit_code == 0);
-  const fs::path empty = scratch("empty_path");
+  const fs::path empty = scratch("render", "empty_path");
   const Outcome out = shell("PATH=" + empty.string() + " " + ELBOWSIM_BINARY + " render " +
                             dir.string() + " --fps 10");
   INFO(out.output);
@@ -250,7 +245,7 @@ TEST_CASE("render: a bad run folder is exit 2 with a clear message, and nothing 
   CHECK(missing.exit_code == 2);
   CHECK(missing.output.find("error: /nonexistent/run: not a run folder") != std::string::npos);
 
-  const fs::path dir = scratch("bad_dir");
+  const fs::path dir = scratch("render", "bad_dir");
   std::ofstream(dir / "scenario.yaml") << render_fixture::scenario_yaml();
   const Outcome no_csv = cli("render " + dir.string());
   CHECK(no_csv.exit_code == 2);
@@ -264,7 +259,7 @@ TEST_CASE("render: a bad run folder is exit 2 with a clear message, and nothing 
   for (const auto& entry : fs::directory_iterator(dir)) (void)entry, ++files;
   CHECK(files == 2);
 
-  const fs::path ok = scratch("bad_option");
+  const fs::path ok = scratch("render", "bad_option");
   REQUIRE(cli(short_run(ok, "")).exit_code == 0);
   const Outcome size = cli("render " + ok.string() + " --size 161x120");
   CHECK(size.exit_code == 2);
@@ -283,7 +278,7 @@ TEST_CASE("render panels: two runs side by side, each with its own overlay") {
   settings.fps = 5;
   const FrameSource left(model, rec, settings, "left");
   const FrameSource right(model, rec, settings, "right");
-  const fs::path dir = scratch("panels");
+  const fs::path dir = scratch("render", "panels");
   const RenderStats stats = render_panels({&left, &right}, settings, {dir, false, true});
   CHECK(stats.frames == 6);  // 1 s at 5 fps
   CHECK(stats.frames_written);
@@ -302,7 +297,7 @@ TEST_CASE("render panels: two runs side by side, each with its own overlay") {
 }
 
 TEST_CASE("render with an ffmpeg that fails: exit 1 with its message, nothing left behind") {
-  const fs::path dir = scratch("bad_ffmpeg");
+  const fs::path dir = scratch("render", "bad_ffmpeg");
   REQUIRE(cli(short_run(dir, "")).exit_code == 0);
   auto listing = [&] {
     std::set<std::string> names;
@@ -310,7 +305,7 @@ TEST_CASE("render with an ffmpeg that fails: exit 1 with its message, nothing le
     return names;
   };
   const std::set<std::string> before = listing();
-  const fs::path bin = scratch("fake_ffmpeg");
+  const fs::path bin = scratch("render", "fake_ffmpeg");
   std::ofstream(bin / "ffmpeg") << "#!/bin/sh\necho 'Unknown encoder (fake ffmpeg)' >&2\nexit 1\n";
   fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
   const Outcome out =

@@ -211,7 +211,7 @@ void check_images(const fs::path& folder, const std::string& html, std::size_t a
 }  // namespace
 
 TEST_CASE("report.html: metrics equal summary.json; every image resolves and decodes") {
-  const auto dir = t::scratch("run");
+  const auto dir = t::scratch("report", "run");
   const auto run = dir / "elbow_rest";
   const auto out = t::run_elbowsim("run " + kScenes + "elbow_rest.yaml --out " + run.string() +
                                    " --no-render --set simulation.duration=0.5");
@@ -252,7 +252,7 @@ TEST_CASE("report.html: metrics equal summary.json; every image resolves and dec
 }
 
 TEST_CASE("report: rebuilt from the folder alone; the video is embedded when present") {
-  const auto dir = t::scratch("rebuild");
+  const auto dir = t::scratch("report", "rebuild");
   const auto run = dir / "r";
   REQUIRE(t::run_elbowsim("run " + kScenes + "default.yaml --out " + run.string() +
                           " --no-render --no-report --set simulation.duration=0.3")
@@ -271,7 +271,7 @@ TEST_CASE("report: rebuilt from the folder alone; the video is embedded when pre
 }
 
 TEST_CASE("report: a run that failed says why, at the top") {
-  const auto dir = t::scratch("failed");
+  const auto dir = t::scratch("report", "failed");
   const auto run = dir / "diverged";
   const auto out =
       t::run_elbowsim("run " + kScenes + "default.yaml --out " + run.string() +
@@ -288,7 +288,7 @@ TEST_CASE("report: a run that failed says why, at the top") {
 }
 
 TEST_CASE("report: missing files are reported, a non-folder is bad input") {
-  const auto dir = t::scratch("missing");
+  const auto dir = t::scratch("report", "missing");
   CHECK(t::run_elbowsim("report " + (dir / "nothing").string()).exit_code == 2);
   CHECK(t::run_elbowsim("report " + dir.string()).exit_code == 2);  // no summary, no trajectory
   REQUIRE(t::run_elbowsim("run " + kScenes + "default.yaml --out " + (dir / "r").string() +
@@ -302,7 +302,7 @@ TEST_CASE("report: missing files are reported, a non-folder is bad input") {
 }
 
 TEST_CASE("compare: names every run, a computed verdict, overlays and totals") {
-  const auto dir = t::scratch("compare");
+  const auto dir = t::scratch("report", "compare");
   const std::string args = " --no-render --no-report --set simulation.duration=0.5";
   REQUIRE(t::run_elbowsim("run " + kScenes + "elbow_rest.yaml --out " +
                           (dir / "elbow-on").string() + args)

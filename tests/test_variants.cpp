@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include "support/process.hpp"
+#include "support/scratch.hpp"
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -25,16 +26,10 @@ using namespace scenario_test;
 namespace {
 
 using elbowsim::testing::Outcome;
+using elbowsim::testing::scratch;
 using elbowsim::testing::slurp;
 
 Outcome run(const std::string& arguments) { return elbowsim::testing::run_elbowsim(arguments); }
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("elbowsim_variants_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // A CSV file as rows of cells (no quoted fields in these tables).
 std::vector<std::vector<std::string>> read_csv(const fs::path& path) {
@@ -184,7 +179,7 @@ TEST_CASE("variants error: names and form") {
 // elbowsim run
 
 TEST_CASE("variants: run writes a folder per variant and a comparison of their summaries") {
-  const fs::path dir = scratch("run");
+  const fs::path dir = scratch("variants", "run");
   const fs::path file =
       write_scene(dir, pendulum_with("  heavy: {\"robot.planar.links[0].mass\": 2.0}\n"
                                      "  light: {\"robot.planar.links[0].mass\": 0.5}\n"));
@@ -229,7 +224,7 @@ TEST_CASE("variants: run writes a folder per variant and a comparison of their s
 }
 
 TEST_CASE("variants: a diverging variant keeps its folder, shows completed=false, exits 3") {
-  const fs::path dir = scratch("diverge");
+  const fs::path dir = scratch("variants", "diverge");
   const fs::path file = write_scene(
       dir,
       pendulum_with(
@@ -251,7 +246,7 @@ TEST_CASE("variants: a diverging variant keeps its folder, shows completed=false
 }
 
 TEST_CASE("variants: a bad variant key exits 2 naming the variant's line; nothing is written") {
-  const fs::path dir = scratch("bad");
+  const fs::path dir = scratch("variants", "bad");
   const fs::path file =
       write_scene(dir, pendulum_with("  good: {}\n  bad: {effects.gravty: false}\n"));
   const Outcome r = run("run " + file.string() + " --out " + (dir / "out").string() + kFast);
@@ -267,7 +262,7 @@ TEST_CASE("variants: a bad variant key exits 2 naming the variant's line; nothin
 // elbowsim sweep
 
 TEST_CASE("sweep: one folder and one sweep.csv row per value, numbers as in the summaries") {
-  const fs::path dir = scratch("sweep");
+  const fs::path dir = scratch("variants", "sweep");
   const Outcome r = run("sweep " + kPendulumFile + " --key simulation.duration --values 0.1,0.2" +
                         " --out " + dir.string() + " --no-render --no-report");
   INFO(r.output);
@@ -301,7 +296,7 @@ TEST_CASE("sweep: one folder and one sweep.csv row per value, numbers as in the 
 }
 
 TEST_CASE("the shipped experiment runs at a short duration; its comparison has both variants") {
-  const fs::path dir = scratch("experiment");
+  const fs::path dir = scratch("variants", "experiment");
   const std::string scene = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_experiment.yaml";
   const Outcome r = run("run " + scene + " --out " + dir.string() +
                         " --set task.duration=1.5 --set task.start_delay=0.05 --no-render"

@@ -1,9 +1,13 @@
 #include "support/contact_scenes.hpp"
 
 #include <cmath>
+#include <memory>
+#include <string>
 
+#include "engine/contact/collision.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/rnea.hpp"
+#include "engine/run/state_layout.hpp"
 
 namespace elbowsim::testing {
 
@@ -26,6 +30,36 @@ TableBox table_under(double top_z, double x) {
 
 }  // namespace
 
+Model chain_with_elbows(int n, int p, std::uint32_t seed) {
+  Model m = random_chain(n, seed);
+  for (int k = 0; k < p; ++k)
+    m.elbows.push_back({"e" + std::to_string(k), 1 + (k * 2) % (n - 1),
+                        0.2 * Eigen::Vector3d::Random(), 0.03});
+  m.table = {TableBox{}};
+  m.effects.contact = true;
+  finalize(m);
+  return m;
+}
+
+void set_random_contacts(const Model& m, Data& data) {
+  data.contact.active.clear();
+  for (int k = 0; k < int(m.elbows.size()); ++k) {
+    data.contact.active.push_back(k);
+    data.contact.normal[k] = Eigen::Vector3d::Random().normalized();
+    data.contact.surface[k] = Eigen::Vector3d::Random();
+  }
+}
+
+void place(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+           double t) {
+  const StateLayout s(model);
+  if (!data.contact.world) data.contact.world = std::make_shared<CollisionWorld>(model);
+  data.x.setZero();
+  data.x.segment(s.q(), s.n) = q;
+  data.x.segment(s.qd(), s.n) = qd;
+  data.t = t;
+}
+
 double ElbowArm::G1() const {
   return g * ((m1 * lc1 + m2 * l1) * std::cos(q1) + m2 * lc2 * std::cos(q1 + q2));
 }
@@ -41,6 +75,19 @@ Model ElbowArm::model(double tau1_0, double slope) const {
   m.inputs.quantity = OpenLoopInputs::Quantity::torque;
   m.inputs.joints = {ramp(tau1_0, slope), ramp(G2(), 0.0)};
   m.options = {1.0, 1e-3, IntegratorKind::rk4, DynamicsMethod::crba};
+  finalize(m);
+  return m;
+}
+
+Model falling_arm(double lift, EventTiming events, double step, double restitution) {
+  const ElbowArm arm;
+  Model m = arm.model(0.0, 0.0);
+  m.inputs.joints.clear();
+  m.initial.q[0] += lift;
+  m.contact.events = events;
+  m.contact.restitution = restitution;
+  m.contact.locate_tolerance = 1e-12;
+  m.options = {0.6, step, IntegratorKind::rk4, DynamicsMethod::crba};
   finalize(m);
   return m;
 }

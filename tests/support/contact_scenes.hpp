@@ -1,9 +1,24 @@
 // Scenes with elbows on a table, shared by the contact tests and benchmarks.
 #pragma once
 
+#include "engine/data.hpp"
 #include "support/models.hpp"
 
 namespace elbowsim::testing {
+
+// Random chain of n joints (random_chain) with p elbows on links 1, 3, ... (mod n - 1) at
+// random points, one default table box, contact on.
+Model chain_with_elbows(int n, int p, std::uint32_t seed);
+
+// Every elbow of m active, with a random unit table normal and surface point (rows of M*
+// without detection).
+void set_random_contacts(const Model& m, Data& data);
+
+// Puts the joint state (q, qd) at time t into data.x (its other components zero) and
+// builds the collision world if data has none: the state the contact stages read
+// (detect_contacts, select_active_set, ...) when a test calls them on their own.
+void place(const Model& model, Data& data, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
+           double t);
 
 // 2-link planar arm leaning on an elbow sphere at the end of link 0 (on joint
 // 1), table top exactly under it at q0; torque inputs (motor none).
@@ -24,6 +39,10 @@ struct ElbowArm {
   // Torque inputs tau1(t) = tau1_0 + slope t, tau2 = G2.
   Model model(double tau1_0, double slope) const;
 };
+
+// The ElbowArm released from `lift` rad (shoulder) above its resting pose, unactuated,
+// with events located to 1e-12 s, the given event timing, step and restitution; 0.6 s.
+Model falling_arm(double lift, EventTiming events, double step, double restitution);
 
 // 3-link planar arm whose elbow (end of link 1) rests on the table and can
 // slide along it; joint torques follow slow sines.

@@ -1,14 +1,19 @@
-// DC motor model (eq. 16-27) against analytic cases.
+// engine/dynamics/motor.cpp: the DC motor model (eq. 16-27), motor_stage on its own and
+// against analytic cases of whole runs.
 #include <doctest/doctest.h>
+
+#include <algorithm>
 
 #include "engine/run/simulator.hpp"
 #include "engine/control/controller.hpp"
 #include "engine/dynamics/motor.hpp"
 #include "support/approx.hpp"
 #include "support/models.hpp"
+#include "support/runs.hpp"
 
 using namespace elbowsim;
 using elbowsim::testing::approx;
+using elbowsim::testing::last;
 
 namespace {
 
@@ -30,10 +35,6 @@ Model spinner(MotorModel motor_model, double volts) {
   m.inputs.joints = {v};
   finalize(m);
   return m;
-}
-
-double last(const RunResult& r, const char* column) {
-  return r.trajectory.at(r.trajectory.rows() - 1, r.trajectory.column(column));
 }
 
 }  // namespace
@@ -95,4 +96,68 @@ TEST_CASE("motor: voltage saturates at the limit") {
   motor_stage(model, data, zero, data.current);
   CHECK(data.voltage[0] == 24.0);
   CHECK(data.current[0] == doctest::Approx(12.0));
+}
+
+TEST_CASE("motor_stage directly: full, quasi-static and none on a commanded voltage") {
+  // Two joints, small_servo: R = 2 ohm, L = 0.5 mH, Km = K k = 0.03 * 50 = 1.5 N m/A, 24 V.
+  // Values chosen so that every product is exact in binary: the checks are ==.
+  Model model = elbowsim::testing::planar_arm({{0.3, 1.0, 0.15, 0.01}, {0.2, 0.5, 0.1, 0.005}});
+  model.motors = {elbowsim::testing::small_servo(), elbowsim::testing::small_servo()};
+  const Eigen::Vector2d qd(1.0, -2.0), current(1.25, -0.5);
+  SUBCASE("full: di/dt = (v - R i - Km qd) / L, current copied from the state, torque Km i") {
+    model.effects.motor = MotorModel::full;
+    finalize(model);
+    Data data(model);
+    data.voltage = Eigen::Vector2d(6.0, -3.0);
+    motor_stage(model, data, qd, current);
+    CHECK(data.voltage == Eigen::Vector2d(6.0, -3.0));
+    CHECK(data.current == current);
+    CHECK(data.current_rate[0] == doctest::Approx((6.0 - 2.0 * 1.25 - 1.5 * 1.0) / 0.5e-3).epsilon(1e-15));
+    CHECK(data.current_rate[1] == doctest::Approx((-3.0 - 2.0 * -0.5 - 1.5 * -2.0) / 0.5e-3).epsilon(1e-15));
+    CHECK(data.actuation == Eigen::Vector2d(1.5 * 1.25, 1.5 * -0.5));
+  }
+  SUBCASE("quasi-static: i = (v - Km qd) / R, the state's current ignored, no di/dt") {
+    model.effects.motor = MotorModel::quasi_static;
+    finalize(model);
+    Data data(model);
+    data.voltage = Eigen::Vector2d(6.0, -3.0);
+    motor_stage(model, data, qd, current);
+    CHECK(data.current == Eigen::Vector2d((6.0 - 1.5) / 2.0, (-3.0 + 3.0) / 2.0));
+    CHECK(data.actuation == Eigen::Vector2d(1.5 * 2.25, 0.0));
+    CHECK(data.current_rate.isZero());
+  }
+  SUBCASE("none: the command already is the joint torque; nothing changes") {
+    model.effects.motor = MotorModel::none;
+    finalize(model);
+    Data data(model);
+    data.actuation = Eigen::Vector2d(0.7, -0.3);
+    data.voltage = Eigen::Vector2d(100.0, -100.0);
+    motor_stage(model, data, qd, current);
+    CHECK(data.actuation == Eigen::Vector2d(0.7, -0.3));
+    CHECK(data.voltage == Eigen::Vector2d(100.0, -100.0));
+    CHECK(data.current.isZero());
+    CHECK(data.current_rate.isZero());
+  }
+}
+
+TEST_CASE("motor_stage saturates each joint at its own limit, both signs, before the electrics") {
+  CHECK(saturate(30.0, 24.0) == 24.0);
+  CHECK(saturate(-30.0, 24.0) == -24.0);
+  CHECK(saturate(23.5, 24.0) == 23.5);
+  CHECK(saturate(-24.0, 24.0) == -24.0);
+  Model model = elbowsim::testing::planar_arm({{0.3, 1.0, 0.15, 0.01}, {0.2, 0.5, 0.1, 0.005}});
+  model.motors = {elbowsim::testing::small_servo(), elbowsim::testing::small_servo()};
+  model.motors[1].voltage_limit = 12.0;
+  model.effects.motor = MotorModel::quasi_static;
+  finalize(model);
+  Data data(model);
+  const Eigen::Vector2d rest = Eigen::Vector2d::Zero();
+  for (const double command : {30.0, -30.0, 10.0}) {
+    CAPTURE(command);
+    data.voltage = Eigen::Vector2d::Constant(command);
+    motor_stage(model, data, rest, rest);
+    const Eigen::Vector2d applied(std::clamp(command, -24.0, 24.0), std::clamp(command, -12.0, 12.0));
+    CHECK(data.voltage == applied);
+    CHECK(data.current == applied / 2.0);  // stalled: i = v / R with the saturated v
+  }
 }

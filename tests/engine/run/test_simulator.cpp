@@ -1,15 +1,17 @@
-// The simulation loop: determinism, no allocation per step, effects that are
-// off cost nothing, divergence stops cleanly.
+// engine/run/simulator.cpp: the simulation loop: determinism, effects that are off cost
+// nothing, divergence stops cleanly, contact off builds no collision world; and the
+// paper's experiment as a whole run (elbow on against elbow off).
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstring>
 
+#include "engine/contact/collision.hpp"
 #include "engine/data.hpp"
-#include "engine/run/derivative.hpp"
-#include "engine/run/integrator.hpp"
 #include "engine/run/simulator.hpp"
 #include "engine/run/step.hpp"
-#include "support/allocations.hpp"
+#include "support/contact_scenes.hpp"
+#include "support/experiment_scenes.hpp"
 #include "support/scenes.hpp"
 
 using namespace elbowsim;
@@ -21,29 +23,6 @@ TEST_CASE("same model twice -> identical recordings, bit for bit") {
   REQUIRE(a.trajectory.values.size() == b.trajectory.values.size());
   CHECK(std::memcmp(a.trajectory.values.data(), b.trajectory.values.data(),
                     a.trajectory.values.size() * sizeof(double)) == 0);
-}
-
-TEST_CASE("a simulation step allocates nothing (Eigen guard and global operator new)") {
-  for (DynamicsMethod method : {DynamicsMethod::walker_orin, DynamicsMethod::crba, DynamicsMethod::aba}) {
-    for (IntegratorKind kind : {IntegratorKind::euler, IntegratorKind::semi_implicit_euler,
-                                IntegratorKind::rk4}) {
-      Model m = random_chain(7, 3);
-      m.options.dynamics = method;
-      m.options.integrator = kind;
-      Data data(m);
-      prepare_integrator(m, data);
-      reset_state(m, data);
-      integrate_step(m, data);  // warm-up
-      CAPTURE(std::string(to_string(method)));
-      CAPTURE(std::string(to_string(kind)));
-      const long before = allocation_count();
-      Eigen::internal::set_is_malloc_allowed(false);
-      for (int k = 0; k < 10; ++k) integrate_step(m, data);
-      Eigen::internal::set_is_malloc_allowed(true);
-      CHECK(allocation_count() == before);
-      CHECK(data.x.allFinite());
-    }
-  }
 }
 
 TEST_CASE("effects that are off leave no state and no terms") {
@@ -77,4 +56,27 @@ TEST_CASE("a diverging run stops with a message naming the time and keeps its sa
   CHECK(r.failure.find("diverged at t = ") != std::string::npos);
   CHECK(r.trajectory.rows() > 1);
   for (double v : r.trajectory.values) CHECK(std::isfinite(v));
+}
+
+TEST_CASE("a scene with contact off never builds the collision world") {
+  const long before = CollisionWorld::worlds_built();
+  const RunResult off = simulate(pendulum(IntegratorKind::rk4, 1e-3, 0.1), {});
+  CHECK(off.collision_worlds_built == 0);
+  CHECK(CollisionWorld::worlds_built() == before);
+  const ElbowArm arm;
+  const RunResult on = simulate(arm.model(0.5 * arm.G1(), 0.0), {});
+  CHECK(on.collision_worlds_built == 1);
+}
+
+TEST_CASE("the experiment: resting the elbow takes less electrical energy for the same accuracy") {
+  WritingArm on_arm, off_arm;
+  off_arm.elbow_on = false;
+  const ExperimentScene on_scene = on_arm.scene(), off_scene = off_arm.scene();
+  const RunResult on = simulate(on_scene.model, on_scene.experiment, RunOptions{10, {}});
+  const RunResult off = simulate(off_scene.model, off_scene.experiment, RunOptions{10, {}});
+  MESSAGE("E_in elbow on ", on.metrics["energy_in"], " J, off ", off.metrics["energy_in"], " J; RMS hand error ",
+          on.metrics["hand_error_rms"], " m vs ", off.metrics["hand_error_rms"], " m");
+  CHECK(on.metrics["energy_in"] < off.metrics["energy_in"]);
+  CHECK(on.metrics["hand_error_rms"] < 1e-6);
+  CHECK(off.metrics["hand_error_rms"] < 1e-6);
 }

@@ -1,4 +1,4 @@
-// CollisionWorld (engine/collision_bullet.cpp) against distances worked out by hand:
+// engine/contact/collision_bullet.cpp: CollisionWorld against distances worked out by hand:
 // spheres over flat, rotated and stepped tables, beside edges and corners, and link
 // capsules pushed into the table.
 #include <doctest/doctest.h>

@@ -1,6 +1,6 @@
-// The step function on its own: driven by hand it is simulate(), it allocates
-// nothing even when elbows land, bounce, release and slide, and it refuses a
-// Data made for another model.
+// engine/run/step.cpp: the step function on its own: driven by hand it is simulate(),
+// it allocates nothing even when elbows land, bounce, release and slide, and it refuses
+// a Data made for another model.
 #include <doctest/doctest.h>
 
 #include <cstring>
@@ -154,4 +154,39 @@ TEST_CASE("a step's events are in data.log, at the step's end") {
   REQUIRE(data.log.events.size() == 1);
   CHECK(data.log.events[0].kind == ContactEvent::Kind::release);
   CHECK(data.log.events[0].t == landed);
+}
+
+// may_fail: KNOWN BUG in the engine (not fixed here, tests only): a contact step
+// heap-allocates through Eigen, 2,858 to 8,659 mallocs over these 1,000-step runs:
+//   engine/contact/constraint_rows.cpp:38  c.Jc.row(r) = n.transpose() * c.J3;
+//   engine/contact/constraint_rows.cpp:23  c.Jf.row(r) -= mu * (t.transpose() * c.J3);
+//   engine/contact/impact.cpp:19           ws.Jc.row(r) = normal^T * J3 (normal_rows)
+// (a row vector times a matrix into a row of a column-major matrix: Eigen evaluates the
+// product into a heap temporary), and min_norm_solve with 2 rows or more. The test above
+// passes only because Release compiles Eigen's guard out and operator new never sees
+// Eigen's malloc; with assertions on, its guard aborts in constraint_rows.
+TEST_CASE("a contact step calls the C allocator zero times: Eigen's allocations counted too" *
+          doctest::may_fail()) {
+  // The guard above (Eigen's set_is_malloc_allowed) reports through eigen_assert, which
+  // Release builds (-DNDEBUG) compile out, and Eigen allocates with malloc, unseen by
+  // operator new: this counts malloc itself (support/malloc_count.cpp).
+  for (EventTiming events : {EventTiming::step, EventTiming::locate}) {
+    for (Stabilization s : {Stabilization::baumgarte, Stabilization::projection}) {
+      const Model m = bouncing_arm(events, s);
+      Data data(m);
+      reset(m, data);
+      Counts counts;
+      const long mallocs = malloc_count();
+      while (!finished(m, data) && !data.failure) {
+        step(m, data);
+        count(data, counts);
+      }
+      const long during = malloc_count() - mallocs;
+      CAPTURE(std::string(to_string(events)));
+      CAPTURE(std::string(to_string(s)));
+      CHECK(during == 0);
+      CHECK(counts.landings >= 2);
+      CHECK(counts.releases >= 2);
+    }
+  }
 }

@@ -1,9 +1,12 @@
-// Energy accounting: the balance E_in - losses - change of stored energy
-// closes up to integration error, and the error falls with the step.
+// engine/dynamics/energy.cpp: stored energy (links, rotors, gravity, inductance) against
+// hand-computed values, and the energy account: the balance E_in - losses - change of
+// stored energy closes up to integration error, and the error falls with the step.
 #include <doctest/doctest.h>
 
 #include <cmath>
 
+#include "engine/dynamics/energy.hpp"
+#include "engine/dynamics/kinematics.hpp"
 #include "engine/run/simulator.hpp"
 #include "support/approx.hpp"
 #include "support/contact_scenes.hpp"
@@ -85,4 +88,56 @@ TEST_CASE("energy with a constant hand force: its work is F . (x_end - x_start),
   Model resting = arm.model(0.5 * arm.G1(), 0.0);
   resting.options.duration = 0.5;
   check(resting, "elbow resting, torque inputs");
+}
+
+TEST_CASE("stored_energy of a single link == 1/2 (I + m lc^2) w^2 + m g h, + rotor and magnet") {
+  // Planar link (axis -y, angle q from +x toward +z) on a base 0.3 m up: the com is at
+  // height h = 0.3 + lc sin q, and the link turns about its joint at rate w.
+  const double l = 0.5, m = 1.3, lc = 0.2, I = 0.021, g = 9.81, z0 = 0.3;
+  for (MotorModel motor : {MotorModel::none, MotorModel::quasi_static, MotorModel::full}) {
+    Model model = planar_arm({{l, m, lc, I}});
+    model.base.translation() = Eigen::Vector3d(0.1, -0.2, z0);
+    model.effects.motor = motor;
+    model.motors = {small_servo()};  // Im k^2 = 5e-7 * 50^2, L = 0.5e-3 H
+    finalize(model);
+    Data data(model);
+    for (double q : {0.0, 0.7, -1.2}) {
+      const double w = 1.7, i = 2.5;
+      forward_kinematics(model, data, Eigen::VectorXd::Constant(1, q));
+      EnergyTerms e;
+      stored_energy(model, data, Eigen::VectorXd::Constant(1, w), Eigen::VectorXd::Constant(1, i), e);
+      CAPTURE(std::string(to_string(motor)));
+      CAPTURE(q);
+      // Rounding only: 1e-14 relative (1e-15 J absolute where the term is zero).
+      CHECK(approx(e.kinetic_links, 0.5 * (I + m * lc * lc) * w * w, 1e-15, 1e-14));
+      CHECK(approx(e.potential, m * g * (z0 + lc * std::sin(q)), 1e-15, 1e-14));
+      const double jm = motor == MotorModel::none ? 0.0 : 5e-7 * 50 * 50;
+      CHECK(approx(e.kinetic_rotors, 0.5 * jm * w * w, 1e-15, 1e-14));
+      CHECK(approx(e.magnetic, motor == MotorModel::full ? 0.5 * 0.5e-3 * i * i : 0.0, 1e-15, 1e-14));
+    }
+  }
+  // Without gravity there is no potential energy at all.
+  Model weightless = planar_arm({{l, m, lc, I}});
+  weightless.effects.gravity = false;
+  finalize(weightless);
+  Data data(weightless);
+  forward_kinematics(weightless, data, Eigen::VectorXd::Constant(1, 0.7));
+  EnergyTerms e;
+  stored_energy(weightless, data, Eigen::VectorXd::Constant(1, 1.0), data.current, e);
+  CHECK(e.potential == 0.0);
+}
+
+TEST_CASE("balance_residual: supplied - lost - change of stored energy, each term with its sign") {
+  // Sources: E_in, normal work, projection, hand force. Sinks: Joule, viscous,
+  // friction, impacts. Stored: links, rotors, potential, magnetic. Values chosen so that
+  // every term has a different power of two: the sum is exact in floating point.
+  EnergyTerms initial;
+  initial.kinetic_links = 1, initial.kinetic_rotors = 2, initial.potential = 4, initial.magnetic = 8;
+  EnergyTerms now = initial;
+  now.electrical_in = 1024, now.normal_work = 512, now.projection = 256, now.external = 128;
+  now.joule = 64, now.viscous = 32, now.friction = 16, now.impact_loss = 2048;
+  now.kinetic_links = 4096, now.potential = 8192;
+  CHECK(balance_residual(now, initial) ==
+        (1024.0 + 512 + 256 + 128) - (64.0 + 32 + 16 + 2048) - ((4096.0 - 1) + (8192.0 - 4)));
+  CHECK(balance_residual(initial, initial) == 0.0);
 }

@@ -1,4 +1,5 @@
-// Point Jacobian and Jdot*qd against central finite differences of forward kinematics.
+// engine/dynamics/kinematics.cpp: point Jacobian and Jdot*qd against central finite
+// differences of forward kinematics.
 #include <doctest/doctest.h>
 
 #include "engine/dynamics/kinematics.hpp"

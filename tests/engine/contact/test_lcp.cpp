@@ -1,4 +1,4 @@
-// Unilateral contact as a linear complementarity problem.
+// engine/contact/lcp.cpp: unilateral contact as a linear complementarity problem.
 #include <doctest/doctest.h>
 
 #include <Eigen/Cholesky>

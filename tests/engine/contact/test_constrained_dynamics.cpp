@@ -1,5 +1,6 @@
-// The M* solve (eq. 32-38): Schur complement == dense LU of M* == the paper's
-// closed form (48)-(49); hand-derived statics of an arm leaning on its elbow.
+// engine/contact/constrained_dynamics.cpp: the M* solve (eq. 32-38): Schur complement ==
+// dense LU of M* == the paper's closed form (48)-(49); hand-derived statics of an arm
+// leaning on its elbow; dependent rows solved for minimum-norm forces.
 #include <doctest/doctest.h>
 
 #include <Eigen/LU>
@@ -13,34 +14,10 @@
 #include "engine/dynamics/walker_orin.hpp"
 #include "support/approx.hpp"
 #include "support/contact_scenes.hpp"
+#include "support/runs.hpp"
 
 using namespace elbowsim;
 using namespace elbowsim::testing;
-
-namespace {
-
-// Random chain with p elbows on random links, random table normals, rows on.
-Model chain_with_elbows(int n, int p, std::uint32_t seed) {
-  Model m = random_chain(n, seed);
-  for (int k = 0; k < p; ++k)
-    m.elbows.push_back({"e" + std::to_string(k), 1 + (k * 2) % (n - 1),
-                        0.2 * Eigen::Vector3d::Random(), 0.03});
-  m.table = {TableBox{}};
-  m.effects.contact = true;
-  finalize(m);
-  return m;
-}
-
-void set_random_contacts(const Model& m, Data& data) {
-  data.contact.active.clear();
-  for (int k = 0; k < int(m.elbows.size()); ++k) {
-    data.contact.active.push_back(k);
-    data.contact.normal[k] = Eigen::Vector3d::Random().normalized();
-    data.contact.surface[k] = Eigen::Vector3d::Random();
-  }
-}
-
-}  // namespace
 
 TEST_CASE("M* solve: Schur == dense LU of the full M* (eq. 35) == paper's formula (48) (1e-10)") {
   for (int p = 1; p <= 4; ++p) {
@@ -103,4 +80,36 @@ TEST_CASE("statics: elbow force of a 2-link arm leaning on the table == hand-der
     // Nothing moves: the arm is in equilibrium with the table's push.
     CHECK(std::abs(r.trajectory.at(r.trajectory.rows() - 1, r.trajectory.column("qd0"))) < 1e-9);
   }
+}
+
+TEST_CASE("dependent rows: two elbows 1e-9 m apart, and an over-constrained arm: finite forces, a warning") {
+  const ElbowArm arm;
+  Model m = arm.model(0.5 * arm.G1(), 0.0);
+  m.elbows.push_back({"twin", 0, Eigen::Vector3d(arm.l1 - 1e-9, 0, 0), arm.r});
+  finalize(m);
+  const RunResult twin = simulate(m, {});
+  REQUIRE(twin.completed);
+  REQUIRE(twin.warnings.size() >= 1);
+  CHECK(twin.warnings[0].find("dependent") != std::string::npos);
+  const double total = last(twin, "fn_elbow") + last(twin, "fn_twin");
+  CHECK(total == doctest::Approx(arm.statics_force(0.5 * arm.G1())).epsilon(1e-6));
+  for (double v : twin.trajectory.values) CHECK(std::isfinite(v));
+
+  // Flat on the table: three elbows on a 2-dof arm (rank 2 < 3 rows).
+  Model flat = planar_arm({{0.4, 1.3, 0.2, 0.02}, {0.35, 0.9, 0.175, 0.01}});
+  flat.elbows = {{"a", 0, Eigen::Vector3d(0.15, 0, 0), 0.03}, {"b", 0, Eigen::Vector3d(0.4, 0, 0), 0.03},
+                 {"c", 1, Eigen::Vector3d(0.3, 0, 0), 0.03}};
+  TableBox top;
+  top.size = Eigen::Vector3d(2, 1, 0.1);
+  top.center = Eigen::Vector3d(0.5, 0, -0.03 - 0.05);
+  flat.table = {top};
+  flat.effects.contact = true;
+  flat.options = {0.5, 1e-3, IntegratorKind::rk4, DynamicsMethod::crba};
+  finalize(flat);
+  const RunResult over = simulate(flat, {});
+  REQUIRE(over.completed);
+  REQUIRE_FALSE(over.warnings.empty());
+  CHECK(over.warnings[0].find("dependent") != std::string::npos);
+  for (double v : over.trajectory.values) CHECK(std::isfinite(v));
+  CHECK(std::abs(last(over, "qd0")) < 1e-9);  // it lies still
 }

@@ -1,10 +1,14 @@
-// Integrators: energy behaviour, measured convergence order, stiff electrics.
+// engine/run/integrator.cpp: ETD coefficients, energy behaviour, measured convergence
+// order, stiff electrics, and integrate_step allocating nothing.
 #include <doctest/doctest.h>
 
 #include <cmath>
 
+#include "engine/data.hpp"
 #include "engine/run/integrator.hpp"
 #include "engine/run/simulator.hpp"
+#include "engine/run/step.hpp"
+#include "support/allocations.hpp"
 #include "support/approx.hpp"
 #include "support/scenes.hpp"
 
@@ -139,5 +143,52 @@ TEST_CASE("stiff electrics: L = 1e-5 H, R = 1 ohm at step 1 ms stay bounded and 
     CHECK(q_err < (kind == IntegratorKind::rk4 ? 1e-3 : 1e-2));
     CHECK(i_err < (kind == IntegratorKind::rk4 ? 2e-3 : 3e-2));
     CHECK(q_err_half < 0.6 * q_err);
+  }
+}
+
+TEST_CASE("a simulation step allocates nothing (Eigen guard and global operator new)") {
+  for (DynamicsMethod method : {DynamicsMethod::walker_orin, DynamicsMethod::crba, DynamicsMethod::aba}) {
+    for (IntegratorKind kind : {IntegratorKind::euler, IntegratorKind::semi_implicit_euler,
+                                IntegratorKind::rk4}) {
+      Model m = random_chain(7, 3);
+      m.options.dynamics = method;
+      m.options.integrator = kind;
+      Data data(m);
+      prepare_integrator(m, data);
+      reset_state(m, data);
+      integrate_step(m, data);  // warm-up
+      CAPTURE(std::string(to_string(method)));
+      CAPTURE(std::string(to_string(kind)));
+      const long before = allocation_count();
+      Eigen::internal::set_is_malloc_allowed(false);
+      for (int k = 0; k < 10; ++k) integrate_step(m, data);
+      Eigen::internal::set_is_malloc_allowed(true);
+      CHECK(allocation_count() == before);
+      CHECK(data.x.allFinite());
+    }
+  }
+}
+
+TEST_CASE("integrate_step calls the C allocator zero times (Eigen's own allocations included)") {
+  // Eigen allocates with malloc, which operator new never sees, and its malloc guard is
+  // inert under -DNDEBUG: this counts malloc itself (support/malloc_count.cpp).
+  for (DynamicsMethod method : {DynamicsMethod::walker_orin, DynamicsMethod::crba, DynamicsMethod::aba}) {
+    for (IntegratorKind kind : {IntegratorKind::euler, IntegratorKind::semi_implicit_euler,
+                                IntegratorKind::rk4}) {
+      Model m = random_chain(7, 3);
+      m.options.dynamics = method;
+      m.options.integrator = kind;
+      Data data(m);
+      prepare_integrator(m, data);
+      reset_state(m, data);
+      integrate_step(m, data);  // warm-up
+      integrate_step(m, data, 0.4 * m.options.step);  // and a shortened step's coefficients
+      CAPTURE(std::string(to_string(method)));
+      CAPTURE(std::string(to_string(kind)));
+      const long before = malloc_count();
+      for (int k = 0; k < 10; ++k) integrate_step(m, data);
+      integrate_step(m, data, 0.4 * m.options.step);
+      CHECK(malloc_count() == before);
+    }
   }
 }

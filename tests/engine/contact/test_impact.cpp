@@ -1,0 +1,139 @@
+// engine/contact/impact.cpp: the impact law (Newton restitution on the Delassus
+// matrix), apply_impact and the impact stage land_touching_elbows on their own.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "engine/contact/detection.hpp"
+#include "engine/contact/impact.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/run/state_layout.hpp"
+#include "engine/run/step.hpp"
+#include "support/allocations.hpp"
+#include "support/approx.hpp"
+#include "support/contact_scenes.hpp"
+
+using namespace elbowsim;
+using namespace elbowsim::testing;
+
+namespace {
+
+// The falling elbow arm with its elbow `below` m under the table top (negative: above),
+// moving with rates qd, at t = 0.123 s; detection done.
+Data elbow_at_table(const Model& m, double below, const Eigen::Vector2d& qd) {
+  const ElbowArm arm;
+  Data data(m);
+  const double dq = below / (arm.l1 * std::cos(arm.q1));
+  place(m, data, Eigen::Vector2d(arm.q1 - dq, arm.q2), qd, 0.123);
+  detect_contacts(m, data);
+  return data;
+}
+
+}  // namespace
+
+TEST_CASE("impact: plastic leaves zero normal speed, restitution e reverses e times it; KE loss == impulse formula") {
+  for (double e : {0.0, 0.5}) {
+    Model m = falling_arm(0.0, EventTiming::step, 1e-3, e);
+    Data data(m);
+    reset_state(m, data);
+    data.x.segment(2, 2) = Eigen::Vector2d(-1.0, 0.7);  // elbow moving down
+    forward_kinematics(m, data, data.x.head(2));
+    const ImpactResult r = apply_impact(m, data, {0}, {});
+    REQUIRE(r.solved);
+    CAPTURE(e);
+    CHECK(r.speed_before[0] < 0);
+    CHECK(r.speed_after[0] == doctest::Approx(-e * r.speed_before[0]).epsilon(1e-12));
+    // Delta KE = P (u- + u+) / 2; plastic: P |u-| / 2.
+    CHECK(r.kinetic_before - r.kinetic_after ==
+          doctest::Approx(-0.5 * r.impulse[0] * (r.speed_before[0] + r.speed_after[0])).epsilon(1e-12));
+    if (e == 0.0)
+      CHECK(r.kinetic_before - r.kinetic_after ==
+            doctest::Approx(0.5 * r.impulse[0] * -r.speed_before[0]).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("land_touching_elbows: an approaching elbow under the table lands, plastic impulse event") {
+  // Plastic (e = 0): the elbow's normal speed after the impulse is zero, and the energy
+  // the impulse takes is P |u-| / 2. Rounding only: 1e-12 relative.
+  const Model m = falling_arm(0.0, EventTiming::step, 1e-3, 0.0);
+  Data data = elbow_at_table(m, 1e-4, Eigen::Vector2d(-0.5, 0.3));
+  REQUIRE(data.contact.detected[0].distance < 0);
+  const double u_before = normal_speed(m, data, 0);
+  REQUIRE(u_before < 0);
+  land_touching_elbows(m, data);
+  REQUIRE(data.log.events.size() == 1);
+  const ContactEvent& e = data.log.events[0];
+  CHECK(e.kind == ContactEvent::Kind::landing);
+  CHECK(e.elbow == 0);
+  CHECK(e.t == 0.123);
+  CHECK(approx(e.speed, -u_before, 0, 1e-12));
+  CHECK(e.impulse > 0);
+  CHECK(approx(e.energy_lost, 0.5 * e.impulse * -u_before, 0, 1e-12));
+  CHECK(data.contact.resting[0] == 1);
+  CHECK(approx(data.contact.impact_loss, e.energy_lost, 0, 1e-12));
+  CHECK(std::abs(normal_speed(m, data, 0)) < 1e-12 * std::abs(u_before));
+}
+
+TEST_CASE("land_touching_elbows: without impacts the elbow lands with no impulse; qd unchanged") {
+  Model m = falling_arm(0.0, EventTiming::step, 1e-3, 0.0);
+  m.effects.impacts = false;
+  finalize(m);
+  Data data = elbow_at_table(m, 1e-4, Eigen::Vector2d(-0.5, 0.3));
+  const double u_before = normal_speed(m, data, 0);
+  const Eigen::VectorXd x_before = data.x;
+  land_touching_elbows(m, data);
+  REQUIRE(data.log.events.size() == 1);
+  CHECK(data.log.events[0].kind == ContactEvent::Kind::landing);
+  CHECK(data.log.events[0].speed == -u_before);
+  CHECK(data.log.events[0].impulse == 0);
+  CHECK(data.contact.resting[0] == 1);
+  CHECK(data.x == x_before);
+  CHECK(data.contact.impact_loss == 0);
+}
+
+TEST_CASE("land_touching_elbows: separating, above the table or already resting: no landing") {
+  const Model step_mode = falling_arm(0.0, EventTiming::step, 1e-3, 0.0);
+  SUBCASE("under the table but separating") {
+    Data data = elbow_at_table(step_mode, 1e-4, Eigen::Vector2d(0.5, 0.0));
+    land_touching_elbows(step_mode, data);
+    CHECK(data.log.events.empty());
+    CHECK(data.contact.resting[0] == 0);
+  }
+  SUBCASE("approaching, 0.5 um above the table: lands only with located events (touch_distance 1 um)") {
+    Data stepped = elbow_at_table(step_mode, -5e-7, Eigen::Vector2d(-0.5, 0.0));
+    land_touching_elbows(step_mode, stepped);
+    CHECK(stepped.log.events.empty());
+    const Model locate_mode = falling_arm(0.0, EventTiming::locate, 1e-3, 0.0);
+    REQUIRE(locate_mode.contact.touch_distance == 1e-6);
+    Data located = elbow_at_table(locate_mode, -5e-7, Eigen::Vector2d(-0.5, 0.0));
+    land_touching_elbows(locate_mode, located);
+    CHECK(located.log.events.size() == 1);
+    CHECK(located.contact.resting[0] == 1);
+  }
+  SUBCASE("already resting") {
+    Data data = elbow_at_table(step_mode, 1e-4, Eigen::Vector2d(-0.5, 0.0));
+    data.contact.resting[0] = 1;
+    const Eigen::VectorXd x_before = data.x;
+    land_touching_elbows(step_mode, data);
+    CHECK(data.log.events.empty());
+    CHECK(data.x == x_before);
+  }
+}
+
+// may_fail: KNOWN BUG in engine/contact/impact.cpp (not fixed here, tests only). Line 19
+// (normal_rows), ws.Jc.row(r) = normal^T * J3, heap-allocates a temporary per impact row
+// (a row vector times a matrix into a row of a column-major matrix); with two rows or more
+// min_norm_solve in the impact LCP allocates too. Release hides it from Eigen's guard.
+TEST_CASE("apply_impact calls the C allocator zero times" * doctest::may_fail()) {
+  const Model m = falling_arm(0.0, EventTiming::step, 1e-3, 0.5);
+  Data data = elbow_at_table(m, 1e-4, Eigen::Vector2d(-0.5, 0.3));
+  const std::vector<int> landing{0}, resting;
+  const Eigen::VectorXd x = data.x;
+  apply_impact(m, data, landing, resting);  // warm-up
+  data.x = x;
+  const long mallocs = malloc_count();
+  const ImpactResult r = apply_impact(m, data, landing, resting);
+  const long calls = malloc_count() - mallocs;
+  CHECK(r.solved);
+  CHECK(calls == 0);
+}
