@@ -48,6 +48,11 @@ TrajectoryLayout::TrajectoryLayout(Groups groups) : groups_(std::move(groups)) {
       cols.push_back({"d_" + e, "m"});
       cols.push_back({"rest_" + e, "1"});
     }
+    link_ = size();
+    for (int j = 0; j < n; ++j) {
+      cols.push_back({"fn_link" + std::to_string(j), "N"});
+      cols.push_back({"d_link" + std::to_string(j), "m"});
+    }
   }
   energy_ = size();
   const int energies = groups_.contact ? 11 : 7;
@@ -82,8 +87,9 @@ TrajectoryLayout TrajectoryLayout::from_columns(const std::vector<Column>& colum
   g.motors = has("i0") || has("v0");
   g.desired_hand = has("hand_d_x") || has("hand_error");
   for (const Column& c : columns)
-    if (starts_with(c.name, "fn_")) g.elbows.push_back(c.name.substr(3));
-  g.contact = has("E_friction") || !g.elbows.empty();
+    if (starts_with(c.name, "fn_") && !starts_with(c.name, "fn_link"))
+      g.elbows.push_back(c.name.substr(3));
+  g.contact = has("E_friction") || has("fn_link0") || !g.elbows.empty();
   TrajectoryLayout layout(std::move(g));
   const std::vector<Column>& expected = layout.columns();
   auto text = [](const Column& c) { return "'" + c.name + " [" + c.unit + "]'"; };
