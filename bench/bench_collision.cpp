@@ -1,15 +1,18 @@
-// Time per call of the collision queries (engine/collision_bullet.cpp) for a 4-link planar
-// arm with 1, 2 or 4 elbows over a table of 1 or 3 boxes. Each iteration takes the next of
-// 64 precomputed poses (forward kinematics done outside the timing), so the cost is averaged
-// over touching, resting-near and lifted elbows and over links in and out of the table.
+// Contact detection per step (engine/contact/detection: the Bullet broad phase, then the
+// closed-form narrow phase for every near slot of every link and elbow), against the
+// declared-elbow-spheres-only query by Bullet's GJK that detection used before, for arms of
+// s = 4, 7 and 30 links over three table boxes. Poses: the arm lying just above the table
+// (links and elbows near it, some touching) or lifted 1 m above it (every pair far: the
+// broad phase alone). Forward kinematics is timed on its own, since detection includes it.
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <vector>
 
 #include "engine/contact/collision.hpp"
+#include "engine/contact/detection.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "support/models.hpp"
 
@@ -17,84 +20,91 @@ using namespace elbowsim;
 
 namespace {
 
-// The arm lies almost flat, elbow spheres (radius 0.03) at the middle of links, link axes
-// about 0.036 above the table top; the poses wave it so that elbows go from 19 mm into the
-// table to 24 mm above it and a link capsule reaches into it now and then (0.2 per call).
+// s equal links of 0.6/s m (radius 0.012) lying along +x, their axes 13 mm over the top
+// (z = 0) of a long table box; an elbow sphere (radius 0.015) at the end of link s/4; a
+// step box and a side table as the other two boxes.
 //
-//   o--- link 0 ---o--- link 1 ---o-- link 2 --o- link 3 -o
-//   =================== box 0, top z = 0 ==================|[box 1: step]   (x = 1.0 ... 1.2)
-//   [box 2: side table, out of reach at (-0.8, 0.9)]
-Model arm(int elbows, int boxes) {
-  Model m = testing::planar_arm({{0.30, 1.2, 0.15, 0.01},
-                                 {0.25, 1.0, 0.12, 0.008},
-                                 {0.20, 0.7, 0.1, 0.004},
-                                 {0.15, 0.4, 0.07, 0.002}});
-  m.base.translation() = Eigen::Vector3d(0, 0, 0.036);
-  const int on_link[3][4] = {{1}, {1, 2}, {0, 1, 2, 3}};  // for 1, 2, 4 elbows
-  for (int k = 0; k < elbows; ++k) {
-    const int link = on_link[elbows == 1 ? 0 : elbows == 2 ? 1 : 2][k];
-    m.elbows.push_back(Elbow{"elbow", link, 0.5 * m.links[link].tip, 0.03});
-  }
-  m.table.push_back(TableBox{{0.4, 0, -0.025}, {1.2, 0.8, 0.05}, Eigen::Matrix3d::Identity()});
-  if (boxes == 3) {
-    m.table.push_back(TableBox{{1.1, 0, 0.02}, {0.2, 0.8, 0.04}, Eigen::Matrix3d::Identity()});
-    m.table.push_back(TableBox{{-0.8, 0.9, -0.1}, {0.6, 0.6, 0.05}, Eigen::Matrix3d::Identity()});
-  }
+//   o--o--O--o--o--o--o   (O: elbow)              lifted: the same, 1 m higher
+//   ====================== box 0 ========|box 1|
+Model arm(int s, bool lifted) {
+  std::vector<testing::PlanarLinkSpec> links(static_cast<std::size_t>(s),
+                                             {0.6 / s, 0.3, 0.3 / s, 1e-4});
+  Model m = testing::planar_arm(links);
+  for (Link& link : m.links) link.radius = 0.012;
+  m.base.translation() = Eigen::Vector3d(0, 0, 0.013 + (lifted ? 1.0 : 0.0));
+  m.elbows.push_back(Elbow{"elbow", s / 4, m.links[s / 4].tip, 0.015});
+  m.table = {TableBox{{0.3, 0, -0.025}, {1.2, 0.8, 0.05}, Eigen::Matrix3d::Identity()},
+             TableBox{{1.0, 0, 0.02}, {0.2, 0.8, 0.04}, Eigen::Matrix3d::Identity()},
+             TableBox{{-0.8, 0.9, -0.1}, {0.6, 0.6, 0.05}, Eigen::Matrix3d::Identity()}};
   m.effects.contact = true;
   finalize(m);
   return m;
 }
 
-// 64 poses of one slow wave of every joint.
-std::vector<Data> poses(const Model& model) {
-  std::vector<Data> out;
-  for (int k = 0; k < 64; ++k) {
-    const double phase = 2 * std::numbers::pi * k / 64;
-    const Eigen::Vector4d q(0.015 * std::sin(phase), -0.02 * std::sin(2 * phase),
-                            0.02 * std::cos(phase), 0.04 * std::sin(phase));
-    Data data(model);
-    forward_kinematics(model, data, q);
-    out.push_back(std::move(data));
+// 64 states of a small wave of every joint, as x of a Data with its collision world.
+struct Scene {
+  Model model;
+  std::unique_ptr<Data> data;
+  std::vector<Eigen::VectorXd> q;
+  Scene(int s, bool lifted) : model(arm(s, lifted)), data(std::make_unique<Data>(model)) {
+    data->contact.world = std::make_shared<CollisionWorld>(model, data->contact.geometry);
+    for (int k = 0; k < 64; ++k) {
+      const double phase = 2 * std::numbers::pi * k / 64;
+      Eigen::VectorXd angles(s);
+      for (int j = 0; j < s; ++j) angles[j] = 0.01 * std::sin(phase + j) / (1 + j);
+      q.push_back(angles);
+    }
   }
-  return out;
+  void set(std::size_t k) { data->x.head(model.dof) = q[k % q.size()]; }
+};
+
+void BM_Detection(benchmark::State& state) {
+  Scene scene(static_cast<int>(state.range(0)), state.range(1) != 0);
+  std::size_t k = 0;
+  long near = 0;
+  for (auto _ : state) {
+    scene.set(k++);
+    detect_contacts(scene.model, *scene.data);
+    near += static_cast<long>(scene.data->contact.near_pairs.size());
+  }
+  state.counters["near_pairs"] = static_cast<double>(near) / static_cast<double>(k);
+  state.counters["slots"] = scene.data->contact.slots();
 }
 
-void BM_ElbowContacts(benchmark::State& state) {
-  const Model model = arm(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
-  const std::vector<Data> data = poses(model);
-  CollisionWorld world(model);
-  std::vector<ElbowContact> out(model.elbows.size());
+void BM_ForwardKinematics(benchmark::State& state) {
+  Scene scene(static_cast<int>(state.range(0)), state.range(1) != 0);
   std::size_t k = 0;
   for (auto _ : state) {
-    world.elbow_contacts(model, data[k++ % data.size()], out);
-    benchmark::DoNotOptimize(out.data());
+    scene.set(k++);
+    forward_kinematics(scene.model, *scene.data, scene.data->x.head(scene.model.dof));
+    benchmark::DoNotOptimize(scene.data->origin.data());
   }
 }
 
-void BM_LinkPenetrations(benchmark::State& state) {
-  const Model model = arm(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
-  const std::vector<Data> data = poses(model);
-  CollisionWorld world(model);
-  std::vector<LinkPenetration> out;
-  std::size_t k = 0, found = 0;
+// The query detection used before: declared elbow spheres only, by GJK.
+void BM_ElbowSpheresGjk(benchmark::State& state) {
+  Scene scene(static_cast<int>(state.range(0)), state.range(1) != 0);
+  CollisionWorld world(scene.model);
+  std::vector<ElbowContact> out(scene.model.elbows.size());
+  std::size_t k = 0;
   for (auto _ : state) {
-    world.link_penetrations(model, data[k++ % data.size()], out);
-    found += out.size();
+    scene.set(k++);
+    forward_kinematics(scene.model, *scene.data, scene.data->x.head(scene.model.dof));
+    world.elbow_contacts(scene.model, *scene.data, out);
     benchmark::DoNotOptimize(out.data());
   }
-  state.counters["penetrations_per_call"] =
-      static_cast<double>(found) / static_cast<double>(std::max<std::size_t>(k, 1));
 }
 
 void shapes(benchmark::internal::Benchmark* b) {
-  b->ArgNames({"elbows", "boxes"});
-  for (int boxes : {1, 3})
-    for (int elbows : {1, 2, 4}) b->Args({elbows, boxes});
+  b->ArgNames({"s", "lifted"});
+  for (int lifted : {0, 1})
+    for (int s : {4, 7, 30}) b->Args({s, lifted});
 }
 
 }  // namespace
 
-BENCHMARK(BM_ElbowContacts)->Apply(shapes);
-BENCHMARK(BM_LinkPenetrations)->Apply(shapes);
+BENCHMARK(BM_Detection)->Apply(shapes);
+BENCHMARK(BM_ForwardKinematics)->Apply(shapes);
+BENCHMARK(BM_ElbowSpheresGjk)->Apply(shapes);
 
 BENCHMARK_MAIN();

@@ -1,5 +1,6 @@
 #include "engine/data.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -8,10 +9,27 @@
 namespace elbowsim {
 
 // llt is built in place: assigning an LLT copies its status before it has one.
-Data::Data(const Model& model)
-    : llt(model.dof),
-      contact(static_cast<int>(model.elbows.size()), model.dof,
-              static_cast<int>(model.table.size()), model.dof) {
+namespace {
+
+// Rows the run makes room for: contact.max_rows, or by default every slot up
+// to 2 dof + elbows + 4 (rows beyond dof are dependent: many balls flat on a face).
+int contact_capacity(const Model& model, const ContactGeometry& g) {
+  if (!model.effects.contact) return 0;  // no rows: a scene without contact pays for none
+  const int slots = static_cast<int>(g.slots.size());
+  if (model.contact.max_rows > 0) return std::min(model.contact.max_rows, slots);
+  return std::min(slots, 2 * model.dof + static_cast<int>(model.elbows.size()) + 4);
+}
+
+ContactData make_contact_data(const Model& model) {
+  ContactGeometry g = contact_geometry(model);
+  const int capacity = contact_capacity(model, g);
+  return ContactData(std::move(g), model.dof, static_cast<int>(model.table.size()), model.dof,
+                     capacity);
+}
+
+}  // namespace
+
+Data::Data(const Model& model) : llt(model.dof), contact(make_contact_data(model)) {
   const int n = model.dof;
   const auto un = static_cast<std::size_t>(n);
   q = qd = current = qdd = voltage = current_rate = actuation = Eigen::VectorXd::Zero(n);
@@ -26,11 +44,10 @@ Data::Data(const Model& model)
   motion_subspace.assign(un, Vector6d::Zero());
   velocity = bias_acc = bias_force = acc = U = motion_subspace;
   q_desired = qd_desired = v_feedforward = Eigen::VectorXd::Zero(n);
-  const int boxes = static_cast<int>(model.table.size());
   // A step emits at most a landing and a release per elbow per stage, and a
   // warning per link-box pair plus one for dependent rows.
-  log.events.reserve(4 * model.elbows.size() + 4);
-  log.warnings.reserve(static_cast<std::size_t>(n * boxes + 4));
+  log.events.reserve(4 * contact.geometry.slots.size() + 4);
+  log.warnings.reserve(4);
   const int m = StateLayout(model).size;
   model_id = model.id;
   dof = n;
@@ -51,8 +68,9 @@ void check_data(const Model& model, const Data& data) {
   differs("model id", data.model_id, model.id);
   differs("dof", data.dof, model.dof);
   differs("state size", data.state_size, StateLayout(model).size);
-  differs("elbows", static_cast<long>(data.contact.resting.size()),
-          static_cast<long>(model.elbows.size()));
+  long elbows = 0;
+  for (const Primitive& p : data.contact.geometry.primitives) elbows += p.elbow >= 0;
+  differs("elbows", elbows, static_cast<long>(model.elbows.size()));
 }
 
 }  // namespace elbowsim

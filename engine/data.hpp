@@ -37,6 +37,12 @@ struct EnergyTerms {
 
 struct Controller;
 
+// What the validity checks follow over a run (run/validity.hpp).
+struct ValidityTrack {
+  double max_held = 0;                  // [J] most energy the arm held at a recorded sample
+  double first_exceeded = std::nan("");  // [s] when the balance residual first passed its bound
+};
+
 struct Data {
   explicit Data(const Model& model);
 
@@ -103,6 +109,7 @@ struct Data {
   // --- what the last step reported, and why the run must stop --------------
   StepLog log;
   Failure failure;
+  ValidityTrack validity;  // run/validity.hpp: what the checks follow over the run
 };
 
 // Throws std::invalid_argument when `data` was not made for `model` (another

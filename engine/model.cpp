@@ -105,7 +105,7 @@ void check_contact_scene(const Model& model) {
   require(c.baumgarte_time > 0 && c.slip_velocity > 0 && c.locate_tolerance > 0,
           "contact tolerances must be > 0");
   if (!model.effects.contact) return;
-  require(!model.elbows.empty() && !model.table.empty(), "contact needs elbows and a table");
+  require(!model.table.empty(), "contact needs a table (table: boxes)");
 }
 
 void check_motor(const Motor& m, int i, MotorModel model) {

@@ -65,6 +65,34 @@ struct ContactOptions {
   double rank_tolerance = 1e-9;        // relative pivot threshold for dependent rows
   double link_warning_depth = 0.005;   // [m] a link capsule deeper than this in the table warns
   double initial_penetration = 1e-4;   // [m] an elbow deeper at t = 0 is a scenario error
+  // [m] a link or an elbow deeper than this in a table box makes the run invalid, with
+  // contact on or off (run/validity.hpp). 1 mm: far above the drift of resting contacts
+  // (1e-12 m) and a step's overshoot at landing (~0.2 mm at 0.2 m/s and 1 ms).
+  double penetration_tolerance = 1e-3;
+  // [m] the broad phase's reach: a primitive this close to a box's bounds gets its exact
+  // distance (closed form); farther ones cost nothing. 1 cm covers a landing at 10 m/s
+  // within a 1 ms step.
+  double detection_margin = 0.01;
+  // Most contact rows at once (workspaces are sized for them when the run starts); 0: the
+  // number of slots, at most 2 dof + elbows + 4 (rows beyond dof are dependent anyway).
+  int max_rows = 0;
+};
+
+// When a run's numbers can be trusted (run/validity.hpp). A run that breaks a
+// bound stops with exit 3 and a message naming the check, the time, the
+// quantity and the likely cause; its report shows the failure first.
+struct ValidityOptions {
+  // |energy-balance residual| <= energy_residual x the energy that flowed (in
+  // and out, each counted once, so regeneration cannot hide an error). RK4 at
+  // the shipped steps closes to ~1e-8; 1e-3 flags an integration error of 0.1 %.
+  double energy_residual = 1e-3;
+  // |i_j| <= current_factor x V_max / R_j (the stall current at the voltage limit;
+  // back-driven motors can exceed it a little, a diverging run by orders).
+  double current_factor = 10;
+  // |qd_j| <= speed_factor x V_max / Km_j (the free-running speed at the limit).
+  double speed_factor = 10;
+  // An elbow the task keeps on the table rests for at least this share of the run.
+  double rest_share = 0.9;
 };
 
 // Revolute joint i: the frame of link i is the frame of link i-1 (or the base)
@@ -76,12 +104,23 @@ struct Joint {
 };
 
 // Rigid link carried by joint i. All vectors are in the link's own frame.
+// The solid a link has against the table (link frame). Default: the capsule
+// from the link frame's origin to its tip with the link's radius.
+struct LinkCollision {
+  enum class Kind { capsule, sphere, box, none };
+  Kind kind = Kind::capsule;
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // [m] sphere or box centre
+  double radius = 0;                                  // [m] sphere radius
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();     // [m] box edge lengths (axes of the link frame)
+};
+
 struct Link {
   double mass = 1.0;                                       // [kg] > 0
   Eigen::Vector3d com = Eigen::Vector3d::Zero();           // [m] centre of mass
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Identity();   // [kg m^2] about the com
   double radius = 0.02;                                    // [m] drawing/collision capsule
   Eigen::Vector3d tip = Eigen::Vector3d::Zero();           // [m] far end of the link
+  LinkCollision collision;                                 // its solid against the table
 };
 
 // DC servo of one joint (docs/model.md, Motors; paper eq. 16-27). Reflected to the joint
@@ -139,6 +178,7 @@ struct Model {
   std::vector<Elbow> elbows;
   std::vector<TableBox> table;
   ContactOptions contact;
+  ValidityOptions validity;
 
   Effects effects;
   Options options;

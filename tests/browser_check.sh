@@ -86,7 +86,7 @@ runs=$work/runs
 short="--no-render --set simulation.duration=1"
 "$elbowsim" run "$source_dir/scenarios/elbow_rest.yaml" --out "$runs/elbow-on" $short >/dev/null
 "$elbowsim" run "$source_dir/scenarios/elbow_rest.yaml" --out "$runs/elbow-off" $short \
-  --set effects.contact=false >/dev/null
+  --set 'inputs.voltage[0].offset=4.86' >/dev/null
 if command -v ffmpeg >/dev/null; then
   ffmpeg -loglevel error -f lavfi -i testsrc=size=320x240:rate=10 -t 1 -pix_fmt yuv420p \
     "$runs/elbow-on/video.mp4"

@@ -227,7 +227,7 @@ TEST_CASE("cli --expect: compare addresses runs by folder name") {
   REQUIRE(t::run_elbowsim("run " + kScene + " --out " + (dir / "on").string() + kShort).exit_code ==
           0);
   REQUIRE(t::run_elbowsim("run " + kScene + " --out " + (dir / "off").string() + kShort +
-                          " --set effects.contact=false")
+                          " --set 'inputs.voltage[0].offset=4.86'")
               .exit_code == 0);
   const std::string runs =
       (dir / "on").string() + " " + (dir / "off").string() + " --out " + (dir / "cmp").string();

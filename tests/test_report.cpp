@@ -308,7 +308,7 @@ TEST_CASE("compare: names every run, a computed verdict, overlays and totals") {
                           (dir / "elbow-on").string() + args)
               .exit_code == 0);
   REQUIRE(t::run_elbowsim("run " + kScenes + "elbow_rest.yaml --out " +
-                          (dir / "elbow-off").string() + args + " --set effects.contact=false")
+                          (dir / "elbow-off").string() + args + " --set 'inputs.voltage[0].offset=4.86'")
               .exit_code == 0);
   const auto out = t::run_elbowsim("compare " + (dir / "elbow-on").string() + " " +
                                    (dir / "elbow-off").string());

@@ -168,7 +168,7 @@ TEST_CASE("contact: switched on from the command line") {
   CHECK(load(scene, {"effects.contact=true", "elbows[0].at=0.2"}).model.elbows[0].point.x() ==
         doctest::Approx(0.2));
   CHECK(error_of(kTwoLink, {"effects.contact=true"})
-            .starts_with("command line --set effects.contact=true: effects.contact: needs elbows"));
+            .starts_with("command line --set effects.contact=true: effects.contact: needs a table"));
 }
 
 // ---------------------------------------------------------------------------
@@ -244,14 +244,11 @@ TEST_CASE("contact error: friction needs contact") {
               "x.yaml:11:13:", "effects.friction", "needs effects.contact: true");
 }
 
-TEST_CASE("contact error: contact needs elbows and a table") {
-  CHECK_ERROR(two_link_with("effects: {contact: true}\n") + kTable,
-              "x.yaml:9:20:", "effects.contact", "needs elbows");
-  CHECK_ERROR(two_link_with("effects: {contact: true}\nelbows:\n") + kTable,
-              "x.yaml:9:20:", "effects.contact",
-              "needs elbows");  // "elbows:" with no value is not given
-  CHECK_ERROR(two_link_with("effects: {contact: true}\nelbows: []\n") + kTable,
-              "x.yaml:10:9:", "elbows", "needs at least one elbow with effects.contact: true");
+TEST_CASE("contact: the links touch the table without declared elbows; contact needs a table") {
+  // Every link's solid touches the table, so elbows are optional.
+  const Scenario no_elbows = elbowsim::load_scenario_text(two_link_with("effects: {contact: true}\n") + kTable, "x.yaml");
+  CHECK(no_elbows.model.effects.contact);
+  CHECK(no_elbows.model.elbows.empty());
   CHECK_ERROR(two_link_with("effects: {contact: true}\nelbows: [{link: 0, at: 0.1}]\n"),
               "x.yaml:9:20:", "effects.contact", "needs a table");
   CHECK_ERROR(two_link_with("table: {boxes: []}\n"), "x.yaml:9:16:", "table.boxes",

@@ -1,4 +1,5 @@
-// events.csv: every elbow landing and release of a run, in time order.
+// events.csv: every landing and release of a run, in time order; the contact is named
+// as contact/primitives.hpp slot_name() names it (an elbow by its name).
 #pragma once
 
 #include <iosfwd>

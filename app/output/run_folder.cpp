@@ -27,7 +27,7 @@ std::string number(double v) {
   return text;
 }
 
-// events.csv rows: time, elbow, kind, speed, impulse, energy_lost.
+// events.csv rows: time, contact (elbow), kind, speed, impulse, energy_lost.
 std::vector<report::EventRow> read_events(const fs::path& path) {
   std::ifstream in(path);
   std::vector<report::EventRow> rows;

@@ -58,6 +58,7 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   j["model"] = model_json(m);
   j["settings"] = settings_json(m.options);
   j["completed"] = result.completed;
+  j["valid"] = result.valid;  // completed and every check of engine/run/validity.hpp held
   j["failure"] = result.failure;
   j["steps"] = result.steps;
   j["final_time"] = result.final_time;

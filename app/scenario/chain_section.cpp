@@ -67,8 +67,44 @@ void check_planar_inertia(const Value& v, const Link& link, double planar) {
          " m: give a radius with " + max_radius + ", or an inertia with " + min_inertia);
 }
 
+// collision: capsule (the default: origin to tip, the link's radius) | none |
+// {sphere: {center: [x, y, z], radius: r}} | {box: {center: [x, y, z], size: [a, b, c]}}
+// (link frame; a box along the link frame's axes).
+LinkCollision read_collision(const Value& v) {
+  LinkCollision out;
+  if (!v.present()) return out;
+  if (!v.is_map()) {
+    const std::string kind = v.text();
+    if (kind == "capsule") return out;
+    if (kind == "none") {
+      out.kind = LinkCollision::Kind::none;
+      return out;
+    }
+    v.fail("must be capsule, none, {sphere: {center, radius}} or {box: {center, size}} (got " +
+           kind + ")");
+  }
+  v.allow_keys({"sphere", "box"});
+  if (v.get("sphere").present() == v.get("box").present())
+    v.fail("needs exactly one of sphere: or box:");
+  if (v.get("sphere").present()) {
+    const Value s = v.get("sphere");
+    s.allow_keys({"center", "radius"});
+    out.kind = LinkCollision::Kind::sphere;
+    out.center = value_or(s.get("center"), Eigen::Vector3d::Zero().eval(), vec3);
+    out.radius = positive(s.require("radius"));
+    return out;
+  }
+  const Value b = v.get("box");
+  b.allow_keys({"center", "size"});
+  out.kind = LinkCollision::Kind::box;
+  out.center = value_or(b.get("center"), Eigen::Vector3d::Zero().eval(), vec3);
+  out.size = b.require("size").vec3();
+  if (!(out.size.array() > 0).all()) b.get("size").fail("must be three positive lengths [m]");
+  return out;
+}
+
 PlanarLink read_planar_link(const Value& v) {
-  v.allow_keys({"length", "mass", "com", "inertia", "radius"});
+  v.allow_keys({"length", "mass", "com", "inertia", "radius", "collision"});
   PlanarLink out;
   Link& link = out.link;
   out.length = positive(v.require("length"));
@@ -80,6 +116,7 @@ PlanarLink read_planar_link(const Value& v) {
   check_planar_inertia(v, link, planar);
   link.inertia = Eigen::Vector3d(mass * link.radius * link.radius / 2, planar, planar).asDiagonal();
   link.tip = Eigen::Vector3d(length, 0, 0);
+  link.collision = read_collision(v.get("collision"));
   return out;
 }
 
@@ -103,13 +140,14 @@ Eigen::Matrix3d read_inertia(const Value& v) {
 }
 
 Link read_link(const Value& v) {
-  v.allow_keys({"mass", "com", "inertia", "radius", "tip"});
+  v.allow_keys({"mass", "com", "inertia", "radius", "tip", "collision"});
   Link link;
   link.mass = positive(v.require("mass"));
   link.com = value_or(v.get("com"), Eigen::Vector3d::Zero().eval(), vec3);
   link.inertia = read_inertia(v.require("inertia"));
   link.radius = value_or(v.get("radius"), kDefaultRadius, positive);
   link.tip = value_or(v.get("tip"), Eigen::Vector3d::Zero().eval(), vec3);
+  link.collision = read_collision(v.get("collision"));
   return link;
 }
 

@@ -7,7 +7,7 @@
 
 #include <sstream>
 
-#include "engine/contact/collision.hpp"
+#include "engine/contact/detection.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "app/scenario/checks.hpp"
 #include "app/scenario/sections.hpp"
@@ -150,34 +150,36 @@ ContactOptions read_contact(const Value& contact) {
 
 void check_contact_scene(const Value& root, const Model& model) {
   if (!model.effects.contact) return;
+  // Every link's solid touches the table; declared elbows are optional.
   const Value contact = root.get("effects").get("contact");  // present: contact is on
-  const Value elbows = root.get("elbows");
-  if (!elbows.present())
-    contact.fail("needs elbows: the elbows list is missing (give at least one elbow)");
-  if (model.elbows.empty()) elbows.fail("needs at least one elbow with effects.contact: true");
   if (!root.get("table").present())
     contact.fail("needs a table: the table section is missing (give table: {boxes: [...]})");
 }
 
-// An elbow that starts deeper in the table than contact.initial_penetration
-// is a scene error: the contact model would have to resolve it by a jump.
+// An elbow or a link that starts deeper in the table than
+// contact.initial_penetration is a scene error: the contact model would have
+// to resolve it by a jump. Blames the elbow's entry, or the link's.
 void check_initial_penetration(const Value& root, const Model& model) {
   if (!model.effects.contact) return;
   Data data(model);
   const Eigen::VectorXd q =
       model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
   forward_kinematics(model, data, q);
-  CollisionWorld world(model);
-  std::vector<ElbowContact> contacts;
-  world.elbow_contacts(model, data, contacts);
-  const std::vector<Value> elbows = root.get("elbows").items();
-  for (const ElbowContact& c : contacts) {
-    if (c.distance >= -model.contact.initial_penetration) continue;
-    std::ostringstream msg;
-    msg << "is " << -c.distance << " m inside table box " << c.box
-        << " at the initial pose (more than contact.initial_penetration = "
-        << model.contact.initial_penetration << " m); move the elbow, the table or initial.q";
-    elbows[c.elbow].fail(msg.str());
+  for (const Primitive& p : data.contact.geometry.primitives) {
+    for (int b = 0; b < static_cast<int>(model.table.size()); ++b) {
+      const double d = primitive_distance(model, data, p, model.table[b]);
+      if (d >= -model.contact.initial_penetration) continue;
+      std::ostringstream msg;
+      msg << "is " << -d << " m inside table box " << b
+          << " at the initial pose (more than contact.initial_penetration = "
+          << model.contact.initial_penetration << " m); move the "
+          << (p.elbow >= 0 ? "elbow" : "link") << ", the table or initial.q";
+      if (p.elbow >= 0) root.get("elbows").items()[static_cast<std::size_t>(p.elbow)].fail(msg.str());
+      const Value robot = root.get("robot");
+      const Value planar = robot.get("planar");
+      if (planar.present()) planar.get("links").items()[static_cast<std::size_t>(p.link)].fail(msg.str());
+      robot.get("joints").items()[static_cast<std::size_t>(p.link)].fail(msg.str());
+    }
   }
 }
 

@@ -30,14 +30,17 @@ void prepare_mechanics(const Model& model, Data& data) {
   bias_torques(model, data, qd);
 }
 
-// Elbows at or into the table and not separating, and those already resting.
-void touching_elbows(const Model& model, Data& data) {
+// Slots at or into the table and not separating, and those already resting.
+void touching_slots(const Model& model, Data& data) {
   ContactData& c = data.contact;
   c.candidates.clear();
-  for (int k = 0; k < int(model.elbows.size()); ++k) {
-    const bool touching = c.detected[k].distance <= model.contact.touch_distance &&
-                          normal_speed(model, data, k) <= model.contact.separation_velocity;
-    if (c.resting[k] || touching) c.candidates.push_back(k);
+  for (int k = 0; k < c.slots(); ++k) {
+    if (c.resting[k]) {
+      c.candidates.push_back(k);
+      continue;
+    }
+    if (c.detected[k].distance > model.contact.touch_distance) continue;
+    if (normal_speed(model, data, k) <= model.contact.separation_velocity) c.candidates.push_back(k);
   }
 }
 
@@ -88,7 +91,13 @@ void fail(Data& data, Failure::Kind kind) {
 bool select_active_set(const Model& model, Data& data) {
   ContactData& c = data.contact;
   detect_contacts(model, data);
-  touching_elbows(model, data);
+  touching_slots(model, data);
+  if (static_cast<int>(c.candidates.size()) > c.capacity()) {
+    data.failure = Failure{Failure::Kind::too_many_contacts, data.t, data.step_count};
+    data.failure.value = static_cast<double>(c.candidates.size());
+    data.failure.limit = c.capacity();
+    return false;
+  }
   c.active = c.candidates;
   if (c.candidates.empty()) return true;
 
@@ -110,7 +119,7 @@ bool select_active_set(const Model& model, Data& data) {
     for (std::size_t r = 0; r < c.candidates.size(); ++r)
       c.lcp_active[r] = c.resting[c.candidates[r]];
   const LcpResult lcp = solve_lcp(c.A, c.lcp_b, model.contact.rank_tolerance, 1e-9, c.lcp_f,
-                                  c.lcp_w, c.lcp_active, LcpScratch{c.solvers, c.lcp_index});
+                                  c.lcp_w, c.lcp_active, LcpScratch{c.solvers, c.lcp_index, &c.lemke});
   if (!lcp.solved) {
     fail(data, Failure::Kind::no_contact_solution);
     return false;

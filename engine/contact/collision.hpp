@@ -1,6 +1,15 @@
 // Collision detection between the arm and the table, the first of contact's three parts
-// (detection -> rows -> solve). This header is Bullet-free: the queries return the plain
-// records of contact_data.hpp, and only collision_bullet.cpp includes Bullet.
+// (detection -> rows -> solve). This header is Bullet-free; only collision_bullet.cpp
+// includes Bullet.
+//
+// Bullet decides which of the arm's primitives (primitives.hpp) are near which table box:
+// each primitive is a Bullet shape (a sphere, or a capsule along a segment) placed at its
+// link's pose, and a primitive-box pair is near when their axis-aligned bounds, Bullet's
+// getAabb, overlap once widened by contact.detection_margin (the broad phase). The distance,
+// normal and point of a near pair then come in closed form from the feature of the box they
+// lie on (geometry.hpp), which keeps a face normal exact and costs tens of nanoseconds where
+// GJK costs ~0.4 us. Bullet's GJK (elbow_contacts) stays as the oracle the closed form is
+// tested against.
 #pragma once
 
 #include <Eigen/Core>
@@ -11,27 +20,34 @@
 
 namespace elbowsim {
 
-// Bullet collision objects for one Model: a sphere per elbow, a capsule per link and a box
-// per table box. Build it only when effects.contact is on; a query reads link poses from
-// Data (forward_kinematics already done) and must get the Model it was built from.
+// Closest approach of one elbow sphere to the table (the nearest box), by Bullet's GJK.
+struct ElbowContact {
+  int elbow = -1;          // index into model.elbows
+  int box = -1;            // nearest table box (-1, distance +inf when the table is empty)
+  double distance = 0;     // [m] signed: sphere surface to box surface, < 0 when penetrating
+  Eigen::Vector3d normal;  // unit, world, pointing from the table toward the elbow
+  Eigen::Vector3d point;   // [m] world, the point on the table surface
+};
+
+// Bullet collision objects for one Model: a shape per primitive of `geometry` and a box per
+// table box. Built once by reset() for a contact scene; queries read link poses from Data
+// (forward_kinematics already done) and must get the Model it was built from.
 class CollisionWorld {
  public:
-  explicit CollisionWorld(const Model& model);  // builds spheres, capsules, boxes
+  CollisionWorld(const Model& model, const ContactGeometry& geometry);
+  explicit CollisionWorld(const Model& model);  // with contact_geometry(model)
   ~CollisionWorld();
   CollisionWorld(const CollisionWorld&) = delete;
   CollisionWorld& operator=(const CollisionWorld&) = delete;
 
-  // One record per elbow: out[k] is elbow k against its nearest box. out is resized to
-  // model.elbows.size() (once: the caller keeps it); no heap allocation after the first call.
-  // While the sphere centre is outside the box (distance > -radius) the distance is exact to
-  // rounding (GJK); deeper, it comes from Bullet's iterative EPA (measured within 1e-11 m).
-  void elbow_contacts(const Model& model, const Data& data, std::vector<ElbowContact>& out);
+  // The broad phase: every (primitive, box) pair whose Bullet bounds, widened by `margin`
+  // [m], overlap, as primitive * boxes + box in increasing order. Clears and fills `out`;
+  // allocates nothing when out has the capacity primitives x boxes.
+  void near_pairs(const Data& data, double margin, std::vector<int>& out);
 
-  // Link capsules deeper than model.contact.link_warning_depth in any box, one record per
-  // (link, box) pair, sorted by link then box; clears and fills out. The capsule radius is
-  // the link radius: elbow spheres are normally larger, so a link resting on its elbow does
-  // not penetrate. Allocates only when more pairs overlap than on any earlier call.
-  void link_penetrations(const Model& model, const Data& data, std::vector<LinkPenetration>& out);
+  // The oracle: one record per elbow, elbow k against its nearest box by GJK (EPA deeper
+  // than the radius). out is resized to model.elbows.size(); no allocation after that.
+  void elbow_contacts(const Model& model, const Data& data, std::vector<ElbowContact>& out);
 
   // How many CollisionWorld objects this process has built (a scene with contact off must
   // build none).

@@ -67,8 +67,6 @@ const bool g_counting_installed = [] {
   return true;
 }();
 
-// What a collision object stands for.
-enum Kind { kElbow = 0, kLink = 1, kBox = 2 };
 
 btVector3 to_bt(const Eigen::Vector3d& v) { return btVector3(v.x(), v.y(), v.z()); }
 
@@ -113,49 +111,62 @@ ClosestPoints closest_points(const btCollisionObject& a, const btCollisionObject
 
 struct CollisionWorld::Impl {
   std::vector<std::unique_ptr<btConvexShape>> shapes;
-  std::vector<std::unique_ptr<btCollisionObject>> elbows, links, boxes;  // one per model item
-  std::vector<btTransform> capsule_in_link;  // [links] capsule frame in the link frame
-  std::vector<Eigen::Vector3d> box_center;   // [boxes] world [m]
-  std::vector<double> box_reach;             // [boxes] half diagonal [m]
-  std::vector<btVector3> box_min, box_max;   // [boxes] world AABB [m]
+  std::vector<std::unique_ptr<btCollisionObject>> elbows, boxes;  // the GJK oracle's objects
+  std::vector<const btConvexShape*> primitive_shape;  // [primitives]
+  std::vector<btTransform> in_link;                   // [primitives] shape frame in its link frame
+  std::vector<int> primitive_link;                    // [primitives]
+  std::vector<Eigen::Vector3d> box_center;            // [boxes] world [m]
+  std::vector<double> box_reach;                      // [boxes] half diagonal [m]
+  std::vector<btVector3> box_min, box_max;            // [boxes] world AABB [m]
   btVoronoiSimplexSolver simplex;
   btGjkEpaPenetrationDepthSolver epa;
 
-  void add(std::unique_ptr<btConvexShape> shape, const btTransform& pose, Kind kind) {
-    auto object = std::make_unique<btCollisionObject>();
-    object->setCollisionShape(shape.get());
-    object->setWorldTransform(pose);
+  btConvexShape* own(std::unique_ptr<btConvexShape> shape) {
     shapes.push_back(std::move(shape));
-    (kind == kElbow ? elbows : kind == kLink ? links : boxes).push_back(std::move(object));
+    return shapes.back().get();
+  }
+  void add_object(btConvexShape* shape, const btTransform& pose,
+                  std::vector<std::unique_ptr<btCollisionObject>>& list) {
+    auto object = std::make_unique<btCollisionObject>();
+    object->setCollisionShape(shape);
+    object->setWorldTransform(pose);
+    list.push_back(std::move(object));
+  }
+  // A sphere at a (link frame), or a capsule from a to b along its own x axis.
+  void add_primitive(const Primitive& p) {
+    const Eigen::Vector3d along = p.b - p.a;
+    const double length = along.norm();
+    primitive_link.push_back(p.link);
+    if (length == 0) {
+      primitive_shape.push_back(own(std::make_unique<btSphereShape>(p.radius)));
+      in_link.push_back(to_bt(Eigen::Matrix3d::Identity(), p.a));
+      return;
+    }
+    const Eigen::Matrix3d R =
+        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), along).toRotationMatrix();
+    primitive_shape.push_back(own(std::make_unique<btCapsuleShapeX>(p.radius, length)));
+    in_link.push_back(to_bt(R, 0.5 * (p.a + p.b)));
   }
 };
 
-CollisionWorld::CollisionWorld(const Model& model) : impl_(std::make_unique<Impl>()) {
+CollisionWorld::CollisionWorld(const Model& model) : CollisionWorld(model, contact_geometry(model)) {}
+
+CollisionWorld::CollisionWorld(const Model& model, const ContactGeometry& geometry)
+    : impl_(std::make_unique<Impl>()) {
   Impl& w = *impl_;
-  // Elbow spheres (poses set per query).
-  for (int k = 0; k < static_cast<int>(model.elbows.size()); ++k)
-    w.add(std::make_unique<btSphereShape>(model.elbows[k].radius), btTransform::getIdentity(),
-          kElbow);
-  // Link capsules along the link, from its frame origin to its tip (a sphere if tip = 0).
-  for (int i = 0; i < model.dof; ++i) {
-    const Link& link = model.links[i];
-    const double length = link.tip.norm();
-    const Eigen::Matrix3d R =
-        length > 0 ? Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), link.tip)
-                         .toRotationMatrix()
-                   : Eigen::Matrix3d::Identity();
-    w.capsule_in_link.push_back(to_bt(R, 0.5 * link.tip));
-    w.add(std::make_unique<btCapsuleShapeX>(link.radius, length), btTransform::getIdentity(), kLink);
-  }
+  for (const Primitive& p : geometry.primitives) w.add_primitive(p);
+  // The oracle's elbow spheres (poses set per query).
+  for (const Elbow& e : model.elbows)
+    w.add_object(w.own(std::make_unique<btSphereShape>(e.radius)), btTransform::getIdentity(),
+                 w.elbows);
   // Table boxes with sharp edges (margin 0), fixed in the world.
-  for (int b = 0; b < static_cast<int>(model.table.size()); ++b) {
-    const TableBox& box = model.table[b];
+  for (const TableBox& box : model.table) {
     auto shape = std::make_unique<btBoxShape>(to_bt(0.5 * box.size));
     shape->setMargin(0);
     const btTransform pose = to_bt(box.rotation, box.center);
     btVector3 lo, hi;
     shape->getAabb(pose, lo, hi);
-    w.add(std::move(shape), pose, kBox);
+    w.add_object(w.own(std::move(shape)), pose, w.boxes);
     w.box_center.push_back(box.center);
     w.box_reach.push_back(0.5 * box.size.norm());
     w.box_min.push_back(lo);
@@ -203,24 +214,20 @@ void CollisionWorld::elbow_contacts(const Model& model, const Data& data,
   }
 }
 
-void CollisionWorld::link_penetrations(const Model& model, const Data& data,
-                                       std::vector<LinkPenetration>& out) {
+void CollisionWorld::near_pairs(const Data& data, double margin, std::vector<int>& out) {
   Impl& w = *impl_;
   out.clear();
-  if (out.capacity() < w.links.size() * w.boxes.size())
-    out.reserve(w.links.size() * w.boxes.size());
-  // Place each capsule (link pose times its fixed offset); GJK for the boxes its AABB meets.
-  // Pairs come out sorted by link, then box.
-  for (int i = 0; i < static_cast<int>(w.links.size()); ++i) {
-    btCollisionObject& capsule = *w.links[i];
-    capsule.setWorldTransform(to_bt(data.rotation[i], data.origin[i]) * w.capsule_in_link[i]);
+  const int boxes = static_cast<int>(w.boxes.size());
+  const btVector3 widen(margin, margin, margin);
+  for (int k = 0; k < static_cast<int>(w.primitive_shape.size()); ++k) {
+    const int link = w.primitive_link[k];
+    const btTransform pose = to_bt(data.rotation[link], data.origin[link]) * w.in_link[k];
     btVector3 lo, hi;
-    capsule.getCollisionShape()->getAabb(capsule.getWorldTransform(), lo, hi);
-    for (int b = 0; b < static_cast<int>(w.boxes.size()); ++b) {
-      if (!TestAabbAgainstAabb2(lo, hi, w.box_min[b], w.box_max[b])) continue;
-      const ClosestPoints c = closest_points(capsule, *w.boxes[b], w.simplex, w.epa);
-      if (c.valid && -c.distance > model.contact.link_warning_depth) out.push_back({i, b, -c.distance});
-    }
+    w.primitive_shape[k]->getAabb(pose, lo, hi);
+    lo -= widen;
+    hi += widen;
+    for (int b = 0; b < boxes; ++b)
+      if (TestAabbAgainstAabb2(lo, hi, w.box_min[b], w.box_max[b])) out.push_back(k * boxes + b);
   }
 }
 

@@ -1,14 +1,15 @@
-// Rows of M* for the resting elbows (paper eq. 6-9, 15, 31). For a flat table
-// face with unit normal n the constraint of elbow k is its signed distance
-//   C_k(q) = n . (c_k(q) - s_k) - r_k       (c_k sphere centre, s_k surface point)
-// so ||dC/dr|| = 1 and the row is j_ck = n^T J_k(q).
+// Rows of M* for the resting slots (paper eq. 6-9, 15, 31): an elbow, a
+// capsule end or interior point, a link sphere or box corner on a table box.
+// With the table normal n held for the step, the constraint of slot k is its
+// signed distance C_k(q) = n . (c_k(q) - s_k) - r_k (c_k the ball centre, s_k
+// the surface point, r_k the radius), so ||dC/dr|| = 1 and j_ck = n^T J_k(q).
 #pragma once
 
 #include "engine/data.hpp"
 
 namespace elbowsim {
 
-// Fills data.contact.{Jc, Jf, gamma, C, Cd, slide} for the elbows in
+// Fills data.contact.{Jc, Jf, gamma, C, Cd, slide} for the slots in
 // data.contact.active, from forward_kinematics(q) and rates qd:
 //   gamma_k = -n^T Jdot_k qd                             (eq. 15, 31)
 //           - (2/T) Cd_k - (1/T^2) C_k                    (Baumgarte, stabilization: baumgarte)

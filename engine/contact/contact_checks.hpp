@@ -1,6 +1,6 @@
-// Checks after a contact step: how far the resting elbows drift off their
-// constraints (max |C|, max |Cd| over the run), and links whose capsules
-// reach into the table (a warning when a link enters a box).
+// Checks after a contact step: how far the resting slots drift off their
+// constraints (max |C|, max |Cd| over the run, in data.contact). Whether any
+// part of the arm is inside the table is a validity check (run/validity.hpp).
 #pragma once
 
 #include "engine/data.hpp"

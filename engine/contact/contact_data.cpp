@@ -1,5 +1,7 @@
 #include "engine/contact/contact_data.hpp"
 
+#include <limits>
+
 namespace elbowsim {
 
 ContactRows::ContactRows(int p, int n)
@@ -20,22 +22,30 @@ SolverWorkspace::SolverWorkspace(int m, int n)
       dx(Eigen::VectorXd::Zero(n)), A(block), b(rhs), impulse(rhs), speed_before(rhs), speed_after(rhs),
       energy_lost(rhs), w(rhs) {}
 
-ContactData::ContactData(int elbows, int links, int boxes, int n) {
-  const auto e = static_cast<std::size_t>(elbows);
-  resting.assign(e, 0);
-  active.reserve(e);
-  detected.resize(e);
-  normal.assign(e, Eigen::Vector3d::UnitZ());
-  surface.assign(e, Eigen::Vector3d::Zero());
+ContactData::ContactData(ContactGeometry g, int links, int boxes, int n, int capacity)
+    : geometry(std::move(g)), lemke(capacity) {
+  const auto slots = geometry.slots.size();
+  const auto cap = static_cast<std::size_t>(capacity);
+  resting.assign(slots, 0);
+  active.reserve(cap);
+  detected.assign(slots, SlotContact{false, std::numeric_limits<double>::infinity()});
+  // Until detected, a slot's ball sits where its part is (a segment's interior: at its start).
+  for (std::size_t k = 0; k < slots; ++k) {
+    const ContactSlot& s = geometry.slots[k];
+    const Primitive& p = geometry.primitives[static_cast<std::size_t>(s.primitive)];
+    detected[k].local = s.part == ContactSlot::Part::end_b ? p.b : p.a;
+  }
+  normal.assign(slots, Eigen::Vector3d::UnitZ());
+  surface.assign(slots, Eigen::Vector3d::Zero());
+  near_pairs.reserve(geometry.primitives.size() * static_cast<std::size_t>(boxes));
   a_free = Eigen::VectorXd::Zero(n);
   J3 = Matrix3Xd::Zero(3, n);
-  link_inside.assign(static_cast<std::size_t>(links), 0);
-  for (auto* list : {&candidates, &landing, &impact_rows, &lcp_index}) list->reserve(e);
-  lcp_active.reserve(e);
-  penetrations.reserve(static_cast<std::size_t>(links) * static_cast<std::size_t>(boxes));
-  solvers.reserve(e + 1);  // built in place: copying a factorisation reads its unset status
-  spare_.reserve(e + 1);
-  for (int m = 0; m <= elbows; ++m) {
+  for (auto* list : {&candidates, &landing, &impact_rows}) list->reserve(slots);
+  lcp_index.reserve(cap);
+  lcp_active.reserve(slots);
+  solvers.reserve(cap + 1);  // built in place: copying a factorisation reads its unset status
+  spare_.reserve(cap + 1);
+  for (int m = 0; m <= capacity; ++m) {
     solvers.emplace_back(m, n);
     spare_.emplace_back(m, n);
   }

@@ -1,8 +1,10 @@
 // Per-run contact state and scratch (effects.contact), part of Data. Sized once
-// from the model for every row count p = 0 .. elbows, so a contact step
-// allocates nothing: the rows of M* for the p resting elbows live in the flat
+// from the model for every row count p = 0 .. capacity, so a contact step
+// allocates nothing: the rows of M* for the p resting slots live in the flat
 // members below, and changing p swaps them with a pre-sized set (swap moves
-// pointers, it does not allocate).
+// pointers, it does not allocate). A slot (primitives.hpp) is a place where a
+// ball of the arm (an elbow, a capsule's end or nearest interior point, a
+// link sphere, a box corner) may touch a table box.
 #pragma once
 
 #include <Eigen/Cholesky>
@@ -11,27 +13,22 @@
 #include <memory>
 #include <vector>
 
+#include "engine/contact/lemke.hpp"
+#include "engine/contact/primitives.hpp"
 #include "engine/eigen_types.hpp"
 
 namespace elbowsim {
 
 class CollisionWorld;
 
-// Closest approach of one elbow sphere to the table (the nearest box).
-struct ElbowContact {
-  int elbow = -1;          // index into model.elbows
-  int box = -1;            // nearest table box (-1, distance +inf when the table is empty)
-  double distance = 0;     // [m] signed: sphere surface to box surface, < 0 when penetrating
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, world, from the table toward the elbow
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // [m] world, the point on the table surface
-};
-
-// A link capsule (from data.origin[i] to the link's tip, radius link.radius) that reaches
-// into the table.
-struct LinkPenetration {
-  int link = -1;     // index into model.links
-  int box = -1;      // index into model.table
-  double depth = 0;  // [m] > 0, the shortest move of the capsule that frees it from the box
+// One slot's closest approach to its box at the last detection.
+struct SlotContact {
+  bool near = false;       // within the broad phase's reach; else distance is +inf
+  double distance = 0;     // [m] signed: the slot's ball to the box surface, < 0 penetrating
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, world, from the box toward the ball
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // [m] world, the closest point of the box surface
+  Eigen::Vector3d local = Eigen::Vector3d::Zero();    // [m] the ball's centre in its link's frame
+  int feature = 0;         // BoxFeature (geometry.hpp)
 };
 
 // The rows of M* for p resting elbows (constraint_rows.hpp) and the Schur
@@ -76,16 +73,19 @@ struct SolverWorkspace {
 
 struct ContactData {
   ContactData() = default;
-  ContactData(int elbows, int links, int boxes, int n);
+  // Slots from `geometry` (primitives.hpp), rows for up to `capacity` of them.
+  ContactData(ContactGeometry geometry, int links, int boxes, int n, int capacity);
 
-  // --- which elbows rest ----------------------------------------------------
-  std::vector<char> resting;              // [elbows] row of M* on
-  std::vector<int> active;                // [p] elbow index of each row (capacity: elbows)
+  ContactGeometry geometry;               // primitives and slots (fixed for the run)
+  // --- which slots rest -----------------------------------------------------
+  std::vector<char> resting;              // [slots] row of M* on
+  std::vector<int> active;                // [p] slot index of each row (capacity: `capacity`)
   // --- detection (contact/detection.hpp), at the last detected state -------
-  std::vector<ElbowContact> detected;     // [elbows] distance, normal, surface point
-  std::vector<Eigen::Vector3d> normal;    // [elbows] table normal under the elbow (world, unit)
-  std::vector<Eigen::Vector3d> surface;   // [elbows] a point of the table surface there [m]
-  // --- rows of M* for the p active elbows (flat: the ContactRows of size p) --
+  std::vector<SlotContact> detected;      // [slots]
+  std::vector<Eigen::Vector3d> normal;    // [slots] table normal at the slot (world, unit)
+  std::vector<Eigen::Vector3d> surface;   // [slots] the point of the table surface there [m]
+  std::vector<int> near_pairs;            // primitive * boxes + box, near at the last detection
+  // --- rows of M* for the p active slots (flat: the ContactRows of size p) --
   Eigen::MatrixXd Jc, Jf;
   Eigen::VectorXd gamma, C, Cd, fn, slide, Jf_qd;
   Eigen::MatrixXd Y, Z, A;
@@ -100,23 +100,28 @@ struct ContactData {
   double max_abs_Cd = 0;         // [m/s]
   long dependent_steps = 0;      // steps whose active rows were dependent
   bool dependent_warned = false; // the dependent-rows warning was given
-  std::vector<char> link_inside; // [links] link capsule in the table after the last step
   // --- scratch of the stages (capacities reserved) ---------------------------
-  std::vector<int> candidates, landing, impact_rows;  // elbow indices
-  std::vector<bool> lcp_active;                       // [<= elbows]
-  std::vector<int> lcp_index;                         // [<= elbows]
-  std::vector<LinkPenetration> penetrations;          // [<= links x boxes]
-  std::vector<SolverWorkspace> solvers;               // [elbows + 1], index m
+  std::vector<int> candidates, landing, impact_rows;  // slot indices
+  std::vector<bool> lcp_active;                       // [<= capacity]
+  std::vector<int> lcp_index;                         // [<= capacity]
+  std::vector<SolverWorkspace> solvers;               // [capacity + 1], index m
+  LemkeScratch lemke;                                 // [capacity]
   // The collision world (Bullet), built by reset() for a contact scene.
   std::shared_ptr<CollisionWorld> world;
 
-  // Puts the rows for p elbows into the flat members (no allocation).
+  // Puts the rows for p slots into the flat members (no allocation).
   void use_rows(int p);
   int rows() const { return rows_in_use_; }
+  int capacity() const { return static_cast<int>(solvers.size()) - 1; }  // most rows at once
   SolverWorkspace& solver(int m) { return solvers[static_cast<std::size_t>(m)]; }
+  int slots() const { return static_cast<int>(geometry.slots.size()); }
+  const ContactSlot& slot(int k) const { return geometry.slots[static_cast<std::size_t>(k)]; }
+  const Primitive& primitive_of(int k) const {
+    return geometry.primitives[static_cast<std::size_t>(slot(k).primitive)];
+  }
 
  private:
-  std::vector<ContactRows> spare_;  // [elbows + 1] index p; the in-use size holds empty matrices
+  std::vector<ContactRows> spare_;  // [capacity + 1] index p; the in-use size holds empty matrices
   int rows_in_use_ = -1;            // p of the flat members
   void swap_rows(ContactRows& set);
 };

@@ -1,27 +1,112 @@
 #include "engine/contact/detection.hpp"
 
+#include <limits>
+
 #include "engine/contact/collision.hpp"
+#include "engine/contact/geometry.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/run/state_layout.hpp"
 
 namespace elbowsim {
 
-void detect_contacts(const Model& model, Data& data) {
-  const StateLayout s(model);
-  ContactData& c = data.contact;
-  forward_kinematics(model, data, data.x.segment(s.q(), s.n));
-  c.world->elbow_contacts(model, data, c.detected);
-  for (std::size_t k = 0; k < c.detected.size(); ++k) {
+namespace {
+
+constexpr double kFar = std::numeric_limits<double>::infinity();
+
+// One slot against its box, in closed form.
+SlotContact measure(const Model& model, const Data& data, const ContactSlot& slot,
+                    const Primitive& p) {
+  const TableBox& box = model.table[slot.box];
+  const Eigen::Vector3d a = data.origin[p.link] + data.rotation[p.link] * p.a;
+  SlotContact s;
+  Eigen::Vector3d centre = a;
+  s.local = p.a;
+  if (slot.part == ContactSlot::Part::end_b) {
+    centre = data.origin[p.link] + data.rotation[p.link] * p.b;
+    s.local = p.b;
+  } else if (slot.part == ContactSlot::Part::interior) {
+    // The segment's nearest point, when it is nearer than both ends (lying
+    // across an edge); otherwise the ends' slots cover the segment.
+    const Eigen::Vector3d b = data.origin[p.link] + data.rotation[p.link] * p.b;
+    const double t = segment_box_parameter(a, b, box);
+    const double ends = std::min(sphere_box(a, p.radius, box).distance,
+                                 sphere_box(b, p.radius, box).distance);
+    centre = a + t * (b - a);
+    const BoxContact c = sphere_box(centre, p.radius, box);
+    if (!(t > 1e-9 && t < 1 - 1e-9 && c.distance < ends - 1e-12)) {
+      s.distance = kFar;
+      return s;
+    }
+    s.local = p.a + t * (p.b - p.a);
+  }
+  const BoxContact c = sphere_box(centre, p.radius, box);
+  s.near = true;
+  s.distance = c.distance;
+  s.normal = c.normal;
+  s.point = c.point;
+  s.feature = static_cast<int>(c.feature);
+  return s;
+}
+
+// The normal and surface point the rows hold for the step.
+void copy_frame(ContactData& c, int pair) {
+  for (int k = c.geometry.first_slot[pair]; k < c.geometry.first_slot[pair + 1]; ++k) {
     c.normal[k] = c.detected[k].normal;
     c.surface[k] = c.detected[k].point;
   }
 }
 
-double normal_speed(const Model& model, const Data& data, int elbow) {
+void measure_pair(const Model& model, Data& data, int pair) {
+  ContactData& c = data.contact;
+  const ContactGeometry& g = c.geometry;
+  const int primitive = pair / g.boxes;
+  for (int k = g.first_slot[pair]; k < g.first_slot[pair + 1]; ++k)
+    c.detected[k] = measure(model, data, g.slots[k], g.primitives[primitive]);
+}
+
+}  // namespace
+
+void detect_contacts(const Model& model, Data& data) {
   const StateLayout s(model);
-  const Elbow& e = model.elbows[elbow];
-  const Eigen::Vector3d v = point_velocity(data, e.link, e.point, data.x.segment(s.qd(), s.n));
-  return data.contact.normal[elbow].dot(v);
+  ContactData& c = data.contact;
+  const ContactGeometry& g = c.geometry;
+  forward_kinematics(model, data, data.x.segment(s.q(), s.n));
+  // Slots of the pairs near at the last detection go back to far; the others are.
+  for (int pair : c.near_pairs)
+    for (int k = g.first_slot[pair]; k < g.first_slot[pair + 1]; ++k) c.detected[k] = SlotContact{false, kFar};
+  c.world->near_pairs(data, model.contact.detection_margin, c.near_pairs);
+  // Elbows always (their distance to the table is recorded, near or not), the
+  // links' solids where the broad phase found them near.
+  const int elbow_pairs = static_cast<int>(model.elbows.size()) * g.boxes;
+  for (int pair = 0; pair < elbow_pairs; ++pair) measure_pair(model, data, pair);
+  for (int pair : c.near_pairs)
+    if (pair >= elbow_pairs) measure_pair(model, data, pair);
+  for (int pair = 0; pair < elbow_pairs; ++pair) copy_frame(c, pair);
+  for (int pair : c.near_pairs)
+    if (pair >= elbow_pairs) copy_frame(c, pair);
+}
+
+double primitive_distance(const Model& model, const Data& data, const Primitive& p,
+                          const TableBox& box) {
+  (void)model;
+  const Eigen::Vector3d a = data.origin[p.link] + data.rotation[p.link] * p.a;
+  if (p.is_ball) return sphere_box(a, p.radius, box).distance;
+  const Eigen::Vector3d b = data.origin[p.link] + data.rotation[p.link] * p.b;
+  const double t = segment_box_parameter(a, b, box);
+  return sphere_box(a + t * (b - a), p.radius, box).distance;
+}
+
+Eigen::Vector3d slot_centre(const Data& data, int slot) {
+  const Primitive& p = data.contact.primitive_of(slot);
+  return point_position(data, p.link, data.contact.detected[slot].local);
+}
+
+double normal_speed(const Model& model, const Data& data, int slot) {
+  const StateLayout s(model);
+  const Primitive& p = data.contact.primitive_of(slot);
+  const Eigen::Vector3d v = point_velocity(data, p.link, data.contact.detected[slot].local,
+                                           data.x.segment(s.qd(), s.n));
+  return data.contact.normal[slot].dot(v);
 }
 
 }  // namespace elbowsim

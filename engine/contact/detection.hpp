@@ -1,19 +1,30 @@
 // Contact detection at the state in data.x, the first of contact's three
-// parts (detection -> rows -> solve): Bullet's signed distance, table normal
-// and surface point for every elbow sphere (collision.hpp), kept in
-// data.contact.detected / normal / surface for the stages of the step.
+// parts (detection -> rows -> solve): the broad phase (Bullet, collision.hpp)
+// picks the primitive-box pairs that are near, and each of their slots
+// (primitives.hpp) gets its signed distance, table normal and surface point
+// in closed form (geometry.hpp). Elbow slots are measured always (their
+// distance is recorded); far link slots keep distance +inf.
 #pragma once
 
 #include "engine/data.hpp"
 
 namespace elbowsim {
 
-// Forward kinematics at q of data.x, then the distances of every elbow.
-// Needs the run's collision world (data.contact.world, built by reset()).
+// Forward kinematics at q of data.x, then every slot into
+// data.contact.detected / normal / surface. Needs the run's collision world
+// (data.contact.world, built by reset()). Allocates nothing.
 void detect_contacts(const Model& model, Data& data);
 
-// Normal velocity [m/s] of elbow k's centre at the rates of data.x, along the
-// table normal last detected (< 0 approaching). Needs forward_kinematics.
-double normal_speed(const Model& model, const Data& data, int elbow);
+// Normal velocity [m/s] of slot k's ball centre at the rates of data.x, along
+// the table normal last detected (< 0 approaching). Needs forward_kinematics.
+double normal_speed(const Model& model, const Data& data, int slot);
+
+// World position [m] of slot k's ball centre. Needs forward_kinematics.
+Eigen::Vector3d slot_centre(const Data& data, int slot);
+
+// Signed distance [m] of a whole primitive (every point of a segment, ends
+// included) to a box, at the kinematics in data; < 0 inside.
+double primitive_distance(const Model& model, const Data& data, const Primitive& primitive,
+                          const TableBox& box);
 
 }  // namespace elbowsim

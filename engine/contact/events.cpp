@@ -8,16 +8,16 @@ namespace elbowsim {
 
 namespace {
 
-// Landing: the elbow's signed distance; release: its normal force (both
+// Landing: the slot's signed distance; release: its normal force (both
 // change sign at the event).
-double event_value(const Model& model, Data& data, int elbow, bool landing) {
+double event_value(const Model& model, Data& data, int slot, bool landing) {
   if (landing) {
     detect_contacts(model, data);
-    return data.contact.detected[elbow].distance;
+    return data.contact.detected[slot].distance;
   }
   nonstiff_rates(model, data, data.t, data.x, data.k1);
   for (std::size_t r = 0; r < data.contact.active.size(); ++r)
-    if (data.contact.active[r] == elbow) return data.contact.fn[r];
+    if (data.contact.active[r] == slot) return data.contact.fn[r];
   return 0.0;
 }
 
@@ -33,16 +33,16 @@ void redo_step(const Model& model, Data& data, double t0, double tau) {
 // Illinois (modified regula falsi) on the event function over the step, each
 // evaluation integrating from the step start; returns a time just past the
 // event, within model.contact.locate_tolerance.
-double locate(const Model& model, Data& data, double t0, double h, int elbow, bool landing) {
+double locate(const Model& model, Data& data, double t0, double h, int slot, bool landing) {
   auto value_at = [&](double tau) {
     redo_step(model, data, t0, tau);
-    return event_value(model, data, elbow, landing);
+    return event_value(model, data, slot, landing);
   };
-  double lo = 0, hi = h, g_hi = event_value(model, data, elbow, landing);
+  double lo = 0, hi = h, g_hi = event_value(model, data, slot, landing);
   const double t_end = data.t;
   data.x.swap(data.x_start);
   data.t = t0;
-  double g_lo = event_value(model, data, elbow, landing);
+  double g_lo = event_value(model, data, slot, landing);
   data.x.swap(data.x_start);
   data.t = t_end;
   int side = 0;
@@ -74,13 +74,13 @@ void locate_first_event(const Model& model, Data& data, double t0) {
   int first = -1;
   bool first_is_landing = true;
   double first_time = h;
-  for (int k = 0; k < int(model.elbows.size()); ++k) {
+  for (int k = 0; k < c.slots(); ++k) {
     const bool landing = !c.resting[k] && c.detected[k].distance < 0 && normal_speed(model, data, k) < 0;
     const bool releasing = c.resting[k] && !landing && event_value(model, data, k, false) < 0;
     if (!landing && !releasing) continue;
     const double tau = locate(model, data, t0, h, k, landing);
     if (tau < first_time || first < 0) first = k, first_time = tau, first_is_landing = landing;
-    // Back to the whole step, for the next elbow's test.
+    // Back to the whole step, for the next slot's test.
     redo_step(model, data, t0, h);
     detect_contacts(model, data);
   }

@@ -10,13 +10,14 @@ namespace elbowsim {
 
 namespace {
 
-// The rows n_k^T J_k of the elbows in data.contact.impact_rows, into ws.Jc.
+// The rows n_k^T J_k of the slots in data.contact.impact_rows, into ws.Jc.
 void normal_rows(const Model& model, Data& data, SolverWorkspace& ws) {
-  const std::vector<int>& elbows = data.contact.impact_rows;
-  for (std::size_t r = 0; r < elbows.size(); ++r) {
-    const Elbow& e = model.elbows[elbows[r]];
-    point_jacobian(model, data, e.link, e.point, data.contact.J3);
-    ws.Jc.row(static_cast<Eigen::Index>(r)) = data.contact.normal[elbows[r]].transpose() * data.contact.J3;
+  ContactData& c = data.contact;
+  for (std::size_t r = 0; r < c.impact_rows.size(); ++r) {
+    const int k = c.impact_rows[r];
+    point_jacobian(model, data, c.primitive_of(k).link, c.detected[k].local, c.J3);
+    for (Eigen::Index j = 0; j < c.J3.cols(); ++j)
+      ws.Jc(static_cast<Eigen::Index>(r), j) = c.normal[k].dot(c.J3.col(j));
   }
 }
 
@@ -48,7 +49,7 @@ ImpactResult apply_impact(const Model& model, Data& data, const std::vector<int>
   c.lcp_active.assign(static_cast<std::size_t>(m), true);
   const double kinetic_before = kinetic_energy(data, qd);
   const bool solved = solve_lcp(ws.A, ws.b, model.contact.rank_tolerance, 1e-12, ws.impulse, ws.w,
-                                c.lcp_active, LcpScratch{c.solvers, c.lcp_index})
+                                c.lcp_active, LcpScratch{c.solvers, c.lcp_index, &c.lemke})
                           .solved;
   ws.dx.noalias() = ws.MinvJt * ws.impulse;
   qd += ws.dx;
@@ -58,11 +59,11 @@ ImpactResult apply_impact(const Model& model, Data& data, const std::vector<int>
                       kinetic_before, kinetic_energy(data, qd), solved};
 }
 
-void land_touching_elbows(const Model& model, Data& data) {
+void land_touching_slots(const Model& model, Data& data) {
   ContactData& c = data.contact;
   c.landing.clear();
   const double limit = model.contact.events == EventTiming::locate ? model.contact.touch_distance : 0.0;
-  for (int k = 0; k < int(model.elbows.size()); ++k)
+  for (int k = 0; k < c.slots(); ++k)
     if (!c.resting[k] && c.detected[k].distance <= limit && normal_speed(model, data, k) < 0)
       c.landing.push_back(k);
   if (c.landing.empty()) return;
@@ -73,9 +74,15 @@ void land_touching_elbows(const Model& model, Data& data) {
     }
     return;
   }
-  c.candidates.clear();  // the elbows already resting
-  for (int k = 0; k < int(model.elbows.size()); ++k)
+  c.candidates.clear();  // the slots already resting
+  for (int k = 0; k < c.slots(); ++k)
     if (c.resting[k]) c.candidates.push_back(k);
+  if (static_cast<int>(c.landing.size() + c.candidates.size()) > c.capacity()) {
+    data.failure = Failure{Failure::Kind::too_many_contacts, data.t, data.step_count};
+    data.failure.value = static_cast<double>(c.landing.size() + c.candidates.size());
+    data.failure.limit = c.capacity();
+    return;
+  }
   const ImpactResult r = apply_impact(model, data, c.landing, c.candidates);
   c.impact_loss += r.kinetic_before - r.kinetic_after;
   for (std::size_t row = 0; row < c.landing.size(); ++row) {

@@ -1,4 +1,4 @@
-// Impacts: a landing elbow with approach speed gets an impulse. All elbows
+// Impacts: a landing slot with approach speed gets an impulse. All slots
 // that land together, and those already resting, are solved jointly:
 //   u+ = u- + A P,  A = Jc (M + Jm)^-1 Jc^T,  P >= 0,
 //   w = u+ + e u-(landing rows) >= 0,  P . w = 0     (Newton restitution e)
@@ -22,16 +22,16 @@ struct ImpactResult {
   bool solved = false;
 };
 
-// Applies the impulse to the rates in data.x. Needs forward_kinematics at
-// the state's q and data.contact.normal for every elbow involved. Allocates
-// nothing (at most `elbows` rows).
+// Applies the impulse to the rates in data.x for the slots `landing` and
+// `resting`. Needs forward_kinematics at the state's q and the detection of
+// every slot involved. Allocates nothing (at most contact capacity rows).
 ImpactResult apply_impact(const Model& model, Data& data, const std::vector<int>& landing,
                           const std::vector<int>& resting);
 
-// The impact stage of a step: every free elbow at or into the table
+// The impact stage of a step: every free slot at or into the table
 // (distance <= 0, or <= touch_distance with located events) and approaching
 // lands; with effects.impacts it gets its impulse. Landing events go to
 // data.log; the impact loss to data.contact.impact_loss.
-void land_touching_elbows(const Model& model, Data& data);
+void land_touching_slots(const Model& model, Data& data);
 
 }  // namespace elbowsim

@@ -1,5 +1,7 @@
 #include "engine/contact/lcp.hpp"
 
+#include <cmath>
+
 #include "engine/contact/min_norm_solve.hpp"
 
 namespace elbowsim {
@@ -48,6 +50,14 @@ int first_violation(const std::vector<bool>& active, const Eigen::VectorXd& f,
   return -1;
 }
 
+// Complementary up to tol, for a solution not tied to an active set.
+bool first_violation_free(const Eigen::VectorXd& f, const Eigen::VectorXd& w, double tol) {
+  for (Eigen::Index k = 0; k < f.size(); ++k)
+    if (f[k] < -tol || w[k] < -tol || std::abs(f[k] * w[k]) > tol * std::max(1.0, std::abs(f[k])))
+      return false;
+  return true;
+}
+
 bool enumerate_sets(BlockSolver& solver, double tol, Eigen::VectorXd& f, Eigen::VectorXd& w,
                     std::vector<bool>& active) {
   const int p = int(active.size());
@@ -72,7 +82,7 @@ LcpResult solve_lcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double r
   active.resize(p, false);
   const double tol = tolerance * std::max(b.cwiseAbs().maxCoeff(), 1e-300);
   BlockSolver solver{A, b, rank_tolerance, scratch};
-  const int max_pivots = (1 << std::min(p, 20)) + p;
+  const int max_pivots = (1 << std::min(p, 12)) + p;
   for (; result.pivots <= max_pivots; ++result.pivots) {
     solver.solve(active, f, w);
     const int j = first_violation(active, f, w, tol);
@@ -82,7 +92,19 @@ LcpResult solve_lcp(const Eigen::MatrixXd& A, const Eigen::VectorXd& b, double r
     }
     active[j] = !active[j];
   }
-  if (!result.solved) result.solved = enumerate_sets(solver, tol, f, w, active);
+  // Lemke's solution as it is: with dependent rows the minimum-norm forces of
+  // its active set could be negative.
+  if (!result.solved && scratch.lemke && p <= scratch.lemke->capacity()) {
+    const LemkeResult lemke = solve_lemke(A, b, f, w, *scratch.lemke);
+    result.pivots += lemke.pivots;
+    if (lemke.solved && first_violation_free(f, w, tol)) {
+      for (int k = 0; k < p; ++k) active[k] = f[k] > tol;
+      result.solved = true;
+      result.dependent = true;
+      return result;
+    }
+  }
+  if (!result.solved && p <= 12) result.solved = enumerate_sets(solver, tol, f, w, active);
   solver.dependent = false;  // report the rank of the final active block only
   solver.solve(active, f, w);
   result.dependent = solver.dependent;

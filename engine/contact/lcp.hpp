@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/contact/contact_data.hpp"
+#include "engine/contact/lemke.hpp"
 
 namespace elbowsim {
 
@@ -21,13 +22,15 @@ struct LcpResult {
 struct LcpScratch {
   std::vector<SolverWorkspace>& blocks;
   std::vector<int>& index;
+  LemkeScratch* lemke = nullptr;  // the fallback's scratch (lemke.hpp), if any
 };
 
 // Murty's least-index principal pivoting (finite for P-matrices, i.e. when
 // the rows are independent), warm-started from `active` (true = f_k may be
-// > 0). If it does not finish in 2^p + p pivots (dependent rows can make it
-// cycle), every active set is tried in order of size, each block solved for
-// minimum-norm forces. Blocks are solved with a complete orthogonal
+// > 0). If it does not finish in 2^min(p, 12) + p pivots (dependent rows can
+// make it cycle), Lemke's method (lemke.hpp, with scratch.lemke) takes over,
+// and for p <= 12 every active set is tried last, in order of size, each
+// block solved for minimum-norm forces. Blocks are solved with a complete orthogonal
 // decomposition whose rank threshold is `rank_tolerance` (relative).
 // `tolerance` is the complementarity slack, relative to max(|b|, 1e-300).
 // On return `active` marks the rows with f_k > 0 (or w_k == 0 at the solution).

@@ -2,6 +2,26 @@
 
 namespace elbowsim {
 
+namespace {
+
+// Eigen's MatrixBase::applyHouseholderOnTheLeft for a vector x (the reflector
+// I - tau [1; v] [1; v]^T), written out: Eigen's own evaluates tau v into a
+// heap temporary for the outer product.
+template <typename Vector, typename Essential>
+void reflect(Vector x, const Essential& v, double tau) {
+  if (x.size() == 1) {
+    x[0] *= 1.0 - tau;
+    return;
+  }
+  if (tau == 0) return;
+  double tmp = v.dot(x.tail(x.size() - 1));  // Eigen's inner product: the same sum as dot()
+  tmp += x[0];
+  x[0] -= tau * tmp;
+  for (Eigen::Index i = 0; i + 1 < x.size(); ++i) x[i + 1] -= (tau * v[i]) * tmp;
+}
+
+}  // namespace
+
 // Eigen 3.4's CompleteOrthogonalDecomposition::_solve_impl, step by step:
 // c = Q^* b; z = T(1:r, 1:r)^-1 c(1:r); y = Z^* [z; 0]; x = P y.
 void min_norm_solve(SolverWorkspace& ws, ConstVec b, Eigen::Ref<Eigen::VectorXd> x) {
@@ -13,7 +33,11 @@ void min_norm_solve(SolverWorkspace& ws, ConstVec b, Eigen::Ref<Eigen::VectorXd>
   }
   Eigen::VectorXd& c = ws.work;
   c = b;
-  c.applyOnTheLeft(cod.matrixQ().setLength(rank).adjoint());
+  // Q^* c = H_{r-1} ... H_1 H_0 c (HouseholderSequence::applyThisOnTheLeft of the adjoint).
+  const auto& qr = cod.matrixQTZ();
+  const Eigen::Index rows = qr.rows();
+  for (Eigen::Index k = 0; k < rank; ++k)
+    reflect(c.tail(rows - k), qr.col(k).tail(rows - k - 1), cod.hCoeffs()(k));
   x.head(rank) = cod.matrixT()
                      .topLeftCorner(rank, rank)
                      .template triangularView<Eigen::Upper>()

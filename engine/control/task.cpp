@@ -37,8 +37,10 @@ Curve waypoints(const std::vector<Eigen::Vector3d>& pts, double u) {
 
 Curve circle(const HandTask& task, double s) {
   const Eigen::Vector3d n = task.normal.normalized();
-  Eigen::Vector3d e1 = n.unitOrthogonal();
-  if (std::abs(n.y()) > 0.9) e1 = Eigen::Vector3d::UnitX();  // x-z plane: start along +x
+  // Start along +x projected into the circle's plane (for a planar arm's x-z
+  // plane exactly +x); a normal along x starts along any perpendicular.
+  Eigen::Vector3d e1 = Eigen::Vector3d::UnitX() - n.x() * n;
+  e1 = e1.norm() > 1e-6 ? e1.normalized() : n.unitOrthogonal();
   const Eigen::Vector3d e2 = n.cross(e1);
   const double w = 2 * std::numbers::pi, th = task.start_angle + w * s;
   const Eigen::Vector3d radial = std::cos(th) * e1 + std::sin(th) * e2;

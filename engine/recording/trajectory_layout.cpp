@@ -1,5 +1,6 @@
 #include "engine/recording/trajectory_layout.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace elbowsim {
@@ -48,6 +49,11 @@ TrajectoryLayout::TrajectoryLayout(Groups groups) : groups_(std::move(groups)) {
       cols.push_back({"d_" + e, "m"});
       cols.push_back({"rest_" + e, "1"});
     }
+    link_ = size();
+    for (int j = 0; j < n; ++j) {
+      cols.push_back({"fn_link" + std::to_string(j), "N"});
+      cols.push_back({"d_link" + std::to_string(j), "m"});
+    }
   }
   energy_ = size();
   const int energies = groups_.contact ? 11 : 7;
@@ -76,14 +82,28 @@ TrajectoryLayout TrajectoryLayout::from_columns(const std::vector<Column>& colum
       if (c.name == name) return true;
     return false;
   };
-  while (has("q" + std::to_string(g.dof))) ++g.dof;
   // Each group from any one of its columns, so that one renamed column is
-  // reported as itself, not as a whole group missing.
-  g.motors = has("i0") || has("v0");
-  g.desired_hand = has("hand_d_x") || has("hand_error");
+  // reported as itself, not as a whole group missing or shifted.
+  for (const char* prefix : {"q", "qd", "qdd", "tau"}) {
+    int count = 0;
+    while (has(prefix + std::to_string(count))) ++count;
+    g.dof = std::max(g.dof, count);
+  }
+  g.motors = has("i0") || has("v0") || has("i1") || has("v1");
+  g.desired_hand = has("hand_d_x") || has("hand_d_y") || has("hand_d_z") || has("hand_error");
+  // An elbow has three columns: a name under two of fn_, d_, rest_ is one
+  // (a single renamed column does not make a new elbow).
   for (const Column& c : columns)
-    if (starts_with(c.name, "fn_")) g.elbows.push_back(c.name.substr(3));
-  g.contact = has("E_friction") || !g.elbows.empty();
+    for (const char* prefix : {"fn_", "d_", "rest_"}) {
+      const std::string p = prefix;
+      if (!starts_with(c.name, p) || starts_with(c.name, p + "link")) continue;
+      const std::string elbow = c.name.substr(p.size());
+      int seen = 0;
+      for (const char* q : {"fn_", "d_", "rest_"}) seen += has(q + elbow);
+      if (seen >= 2 && std::find(g.elbows.begin(), g.elbows.end(), elbow) == g.elbows.end())
+        g.elbows.push_back(elbow);
+    }
+  g.contact = has("E_friction") || has("fn_link0") || !g.elbows.empty();
   TrajectoryLayout layout(std::move(g));
   const std::vector<Column>& expected = layout.columns();
   auto text = [](const Column& c) { return "'" + c.name + " [" + c.unit + "]'"; };

@@ -11,6 +11,8 @@
 //   hand_x, hand_y, hand_z [m];
 //   hand_d_x, hand_d_y, hand_d_z, hand_error [m] (a desired hand path);
 //   fn_<e> [N], d_<e> [m], rest_<e> [1] (contact);
+//   fn_link<j> [N], d_link<j> [m] (contact: the table's force on link j's own
+//     solid and its signed distance to the nearest box; inf for a link without a solid);
 //   E_in, E_joule, E_viscous, KE_links, KE_rotors, PE, E_magnetic [J];
 //   E_friction, E_normal, E_impact, E_projection [J] (contact);
 //   balance_residual [J].
@@ -74,6 +76,8 @@ class TrajectoryLayout {
   int elbow_force(int k) const { return elbow_ < 0 ? -1 : elbow_ + 3 * k; }
   int elbow_distance(int k) const { return elbow_ < 0 ? -1 : elbow_ + 3 * k + 1; }
   int elbow_resting(int k) const { return elbow_ < 0 ? -1 : elbow_ + 3 * k + 2; }
+  int link_force(int j) const { return link_ < 0 ? -1 : link_ + 2 * j; }
+  int link_distance(int j) const { return link_ < 0 ? -1 : link_ + 2 * j + 1; }
   int energy(Energy e) const;
   int balance_residual() const { return size() - 1; }
   // Index of the elbow called `name`, or -1.
@@ -82,7 +86,8 @@ class TrajectoryLayout {
  private:
   Groups groups_;
   std::vector<Column> columns_;
-  int q_ = 1, current_ = -1, torque_ = -1, hand_ = -1, desired_ = -1, elbow_ = -1, energy_ = -1;
+  int q_ = 1, current_ = -1, torque_ = -1, hand_ = -1, desired_ = -1, elbow_ = -1, link_ = -1,
+      energy_ = -1;
 };
 
 }  // namespace elbowsim

@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "engine/contact/detection.hpp"
 #include "engine/control/controller.hpp"
 #include "engine/control/plan.hpp"
 #include "engine/dynamics/energy.hpp"
@@ -45,16 +46,37 @@ void write_hand(const Model& model, const TrajectoryLayout& L, const Data& data,
   row[L.hand_error()] = (hand - desired).norm();
 }
 
-// Per elbow: normal force (0 unless its row is on), signed distance, resting flag.
-void write_contacts(const TrajectoryLayout& L, const Data& data, double* row) {
+// Per elbow over its slots (one per table box): the normal force (0 unless a
+// row is on), the distance to the nearest box, resting on any. Per link, over
+// its own solid's slots: the summed normal force and the nearest distance.
+void write_contacts(const Model& model, const TrajectoryLayout& L, const Data& data, double* row) {
   const ContactData& c = data.contact;
   for (int k = 0; k < L.elbows(); ++k) {
-    double fn = 0;
-    for (std::size_t r = 0; r < c.active.size(); ++r)
-      if (c.active[r] == k) fn = c.fn[r];
-    row[L.elbow_force(k)] = fn;
-    row[L.elbow_distance(k)] = c.detected[k].distance;
-    row[L.elbow_resting(k)] = c.resting[k] ? 1.0 : 0.0;
+    row[L.elbow_force(k)] = 0;
+    row[L.elbow_distance(k)] = std::numeric_limits<double>::infinity();
+    row[L.elbow_resting(k)] = 0;
+  }
+  for (int j = 0; j < L.dof(); ++j) {
+    row[L.link_force(j)] = 0;
+    row[L.link_distance(j)] = std::numeric_limits<double>::infinity();
+  }
+  for (int k = 0; k < c.slots(); ++k) {
+    const Primitive& p = c.primitive_of(k);
+    if (p.elbow < 0) continue;
+    row[L.elbow_distance(p.elbow)] = std::min(row[L.elbow_distance(p.elbow)], c.detected[k].distance);
+    if (c.resting[k]) row[L.elbow_resting(p.elbow)] = 1.0;
+  }
+  // A link's clearance: its whole solid (ends covered by an elbow's ball
+  // included) to the nearest box, near or far (only at recorded samples).
+  for (const Primitive& p : c.geometry.primitives) {
+    if (p.elbow >= 0) continue;
+    for (const TableBox& box : model.table)
+      row[L.link_distance(p.link)] =
+          std::min(row[L.link_distance(p.link)], primitive_distance(model, data, p, box));
+  }
+  for (std::size_t r = 0; r < c.active.size(); ++r) {
+    const Primitive& p = c.primitive_of(c.active[r]);
+    row[p.elbow >= 0 ? L.elbow_force(p.elbow) : L.link_force(p.link)] += c.fn[r];
   }
 }
 
@@ -83,7 +105,7 @@ void record_sample(const Model& model, const Data& data, Recording& rec) {
   row[L.time()] = data.t;
   write_joints(L, data, row);
   write_hand(model, L, data, row);
-  if (L.has_contact()) write_contacts(L, data, row);
+  if (L.has_contact()) write_contacts(model, L, data, row);
   write_energies(L, data, row);
 }
 

@@ -20,8 +20,9 @@ struct ContactStats {
 
 struct RunResult {
   Recording trajectory;
-  bool completed = false;       // false: stopped early, see failure
-  std::string failure;          // why the run stopped early
+  bool completed = false;       // reached the end (false: stopped early, see failure)
+  bool valid = false;           // completed and every check of run/validity.hpp held
+  std::string failure;          // why the run stopped early or is not valid
   std::vector<std::string> warnings;
   std::vector<ContactEvent> events;  // landings and releases, in time order
   long steps = 0;

@@ -8,6 +8,7 @@
 #include "engine/dynamics/energy.hpp"
 #include "engine/run/recorder.hpp"
 #include "engine/run/step.hpp"
+#include "engine/run/validity.hpp"
 
 namespace elbowsim {
 
@@ -19,15 +20,23 @@ void collect_log(const Model& model, const Data& data, RunResult& result) {
   for (const Warning& w : data.log.warnings) result.warnings.push_back(describe(model, w));
 }
 
+// A recorded sample, and the energy check on it (run/validity.hpp).
 void record(const Model& model, Data& data, RunResult& result) {
   evaluate_outputs(model, data);
   record_sample(model, data, result.trajectory);
   result.max_abs_balance_residual = std::max(
       result.max_abs_balance_residual, std::abs(balance_residual(data.energy, data.energy_initial)));
+  track_energy(model, data);
 }
 
-void finish(const Model& model, const Data& data, RunResult& result) {
-  result.completed = !data.failure;
+void finish(const Model& model, Data& data, RunResult& result) {
+  result.completed = finished(model, data);
+  // Over the whole run: the energy account closed, the elbows the task rests
+  // on the table rested.
+  if (!data.failure && result.completed) check_energy(model, data);
+  if (!data.failure && data.controller && data.controller->plan)
+    check_planned_rest(model, data.controller->plan->resting, result.trajectory, data);
+  result.valid = !data.failure;
   result.failure = describe(model, data.failure);
   result.steps = data.step_count;
   result.final_time = data.t;
@@ -63,6 +72,7 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
     collect_log(model, data, result);
     if (data.failure) break;
     if (data.step_count % every == 0 || finished(model, data)) record(model, data, result);
+    if (data.failure) break;
     if (options.progress && data.step_count % progress_every == 0)
       options.progress(data.t / model.options.duration);
   }

@@ -14,6 +14,7 @@
 #include "engine/run/derivative.hpp"
 #include "engine/run/integrator.hpp"
 #include "engine/run/state_layout.hpp"
+#include "engine/run/validity.hpp"
 
 namespace elbowsim {
 
@@ -29,19 +30,11 @@ double step_length(const Model& model, const Data& data) {
   return left > 1e-3 * model.options.step ? std::min(model.options.step, left) : model.options.step;
 }
 
-// A non-finite state, or one beyond 1e12 in any component, stops the run.
-void check_state(Data& data) {
-  if (data.x.allFinite() && data.x.cwiseAbs().maxCoeff() < 1e12) return;
-  data.failure.kind = Failure::Kind::diverged;
-  data.failure.t = data.t;
-  data.failure.step = data.step_count;
-}
-
 // Landings and releases inside the step, impacts, drift control and the
 // contact checks, after the state was integrated from data.x_start (t0).
 void contact_after_step(const Model& model, Data& data, double t0) {
   locate_first_event(model, data, t0);
-  land_touching_elbows(model, data);
+  land_touching_slots(model, data);
   if (model.effects.stabilization == Stabilization::projection) stabilise(model, data);
   check_contacts(model, data);
 }
@@ -91,9 +84,11 @@ void reset(const Model& model, Data& data) {
   prepare_integrator(model, data);
   reset_state(model, data);
   data.failure = Failure{};
+  data.validity = ValidityTrack{};
   data.log.clear();
   if (model.effects.contact) {
-    if (!data.contact.world) data.contact.world = std::make_shared<CollisionWorld>(model);
+    if (!data.contact.world)
+      data.contact.world = std::make_shared<CollisionWorld>(model, data.contact.geometry);
     select_active_set(model, data);
   }
   evaluate_outputs(model, data);
@@ -112,7 +107,7 @@ void step(const Model& model, Data& data) {
   data.x_start = data.x;
   integrate_step(model, data, step_length(model, data));
   if (model.effects.contact) contact_after_step(model, data, t0);
-  check_state(data);
+  check_step(model, data);  // run/validity.hpp: divergence, bounds, penetration
 }
 
 }  // namespace elbowsim

@@ -21,9 +21,11 @@ void reset(const Model& model, Data& data);
 
 // Advances data by one step of model.options.step, the last step before
 // model.options.duration shortened to end on it. data.log holds the step's
-// contact events and warnings afterwards. When the run cannot go on,
-// data.failure says why (Painleve's paradox, no contact solution, a
-// diverging state) and the state is left where it stopped. Allocates nothing.
+// contact events and warnings afterwards. When the run cannot go on or its
+// state cannot be trusted, data.failure says why (Painleve's paradox, no
+// contact solution, and the checks of run/validity.hpp: divergence, current
+// and speed bounds, a link or elbow in the table) and the state is left
+// where it stopped. Allocates nothing (but when it fails).
 void step(const Model& model, Data& data);
 
 // Whether the run has reached model.options.duration (within a thousandth

@@ -20,17 +20,47 @@ std::string describe(const Model& model, const Warning& w) {
   std::ostringstream msg;
   switch (w.kind) {
     case Warning::Kind::dependent_rows:
-      return "dependent elbow constraints at " + at_time(w.t) + ": " + std::to_string(w.count) +
-             " touching elbows give rows of M* of rank " + std::to_string(w.rank) +
-             " (threshold " + std::to_string(model.contact.rank_tolerance) +
-             " relative); minimum-norm elbow forces are used";
-    case Warning::Kind::link_in_table:
-      msg << "link " << w.index << " passes through table box " << w.box << " at " << at_time(w.t)
-          << " (depth " << w.value << " m); only elbow spheres have contact forces";
+      msg << "dependent contact constraints at " << at_time(w.t) << ": " << w.count
+          << " touching contact points give rows of M* of rank " << w.rank << " (threshold "
+          << model.contact.rank_tolerance << " relative); minimum-norm contact forces are used";
       return msg.str();
   }
   return "?";
 }
+
+namespace {
+
+std::string quantity(double v, const char* unit) {
+  std::ostringstream s;
+  s << v << " " << unit;
+  return s.str();
+}
+
+std::string part_name(const Model& model, const Failure& f) {
+  switch (f.part) {
+    case Failure::Part::joint: return "joint " + std::to_string(f.index);
+    case Failure::Part::link: return "link " + std::to_string(f.index);
+    case Failure::Part::elbow: return "elbow '" + model.elbows[f.index].name + "'";
+    case Failure::Part::none: return "";
+  }
+  return "";
+}
+
+// What to change: the step, when the estimate says it is beyond stability.
+std::string step_advice(const Model& model, const Failure& f) {
+  std::ostringstream s;
+  const double h = model.options.step;
+  if (f.stable_step > 0 && h > 0.8 * f.stable_step)
+    s << "; the step " << h << " s is too large for the arm's fastest rate with the "
+      << to_string(model.options.integrator) << " integrator (stable up to about "
+      << f.stable_step << " s): try simulation.step <= " << 0.5 * f.stable_step << " s";
+  else
+    s << "; try a smaller simulation.step (now " << h << " s)"
+      << (model.options.integrator == IntegratorKind::rk4 ? "" : " or the rk4 integrator");
+  return s.str();
+}
+
+}  // namespace
 
 std::string describe(const Model& model, const Failure& f) {
   std::ostringstream msg;
@@ -46,8 +76,53 @@ std::string describe(const Model& model, const Failure& f) {
              at_time(f.t) + ": no set of resting elbows has non-negative forces and accelerations";
     case Failure::Kind::diverged:
       msg << "simulation diverged at t = " << f.t << " s (step " << f.step
-          << "): the state became non-finite or exceeded 1e12; try a smaller simulation.step"
-          << " (now " << model.options.step << " s) or the rk4 integrator";
+          << "): the state became non-finite or exceeded 1e12" << step_advice(model, f);
+      return msg.str();
+    case Failure::Kind::current_bound:
+      msg << "simulation diverged at " << at_time(f.t) << ": motor " << f.index << "'s current reached " << quantity(f.value, "A")
+          << " at " << at_time(f.t) << ", beyond " << quantity(f.limit, "A")
+          << " (validity.current_factor x its stall current)"
+          << step_advice(model, f);
+      return msg.str();
+    case Failure::Kind::speed_bound:
+      msg << "simulation diverged at " << at_time(f.t) << ": " << part_name(model, f) << " turned at " << quantity(f.value, "rad/s")
+          << " at " << at_time(f.t) << ", beyond " << quantity(f.limit, "rad/s")
+          << " (validity.speed_factor x the motor's free-running speed)"
+          << step_advice(model, f);
+      return msg.str();
+    case Failure::Kind::penetration:
+      msg << "invalid run: " << part_name(model, f) << " is " << quantity(f.value, "m")
+          << " inside table box " << f.box << " at " << at_time(f.t)
+          << " (contact.penetration_tolerance " << quantity(f.limit, "m") << "): ";
+      if (!model.effects.contact)
+        msg << "effects.contact is false, so the physics ignores the table and nothing holds the "
+               "arm up; turn contact on, or keep the arm above the table";
+      else if (model.contact.events == EventTiming::step)
+        msg << "with contact.events: step a landing is found at the end of the step it happens "
+               "in, up to (approach speed x step) deep; use contact.events: locate or a smaller "
+               "simulation.step (now " << model.options.step << " s)";
+      else
+        msg << "no contact row held it (this build gives contact rows to elbow spheres only; a "
+               "link that reaches the table goes through it)";
+      return msg.str();
+    case Failure::Kind::energy_balance:
+      msg << "invalid run: the energy balance is off by " << quantity(f.value, "J") << " at "
+          << at_time(f.t) << ", " << 100 * f.value / std::max(f.flow, 1e-300) << " % of the "
+          << quantity(f.flow, "J") << " that flowed or was held (limit "
+          << 100 * model.validity.energy_residual << " %, validity.energy_residual)";
+      if (!std::isnan(f.since)) msg << "; beyond the limit since t = " << f.since << " s";
+      msg << ": the integration is not accurate" << step_advice(model, f);
+      return msg.str();
+    case Failure::Kind::too_many_contacts:
+      msg << "contact failure at " << at_time(f.t) << ": " << f.value
+          << " contact points touch the table at once, more than the " << f.limit
+          << " rows the run made room for (contact.max_rows)";
+      return msg.str();
+    case Failure::Kind::elbow_not_resting:
+      msg << "invalid run: " << part_name(model, f) << " rested " << 100 * f.value
+          << " % of the run; the task keeps it on the table throughout (validity.rest_share "
+          << 100 * f.limit << " %): the table did not carry it as planned (is the elbow over a "
+             "box? does the controller lift it?)";
       return msg.str();
   }
   return "?";

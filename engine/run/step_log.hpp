@@ -5,6 +5,7 @@
 // afterwards (describe()).
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,7 @@ struct Model;
 struct ContactEvent {
   enum class Kind { landing, release };
   double t = 0;         // [s]
-  int elbow = -1;
+  int slot = -1;        // the contact slot (contact/primitives.hpp; slot k < elbows x boxes: an elbow)
   Kind kind = Kind::landing;
   double speed = 0;     // [m/s] approach speed at landing (> 0), 0 at release
   double impulse = 0;   // [N s] landing impulse
@@ -24,28 +25,42 @@ struct ContactEvent {
 
 struct Warning {
   enum class Kind {
-    dependent_rows,  // touching elbows whose rows of M* are dependent: `count` rows of rank `rank`
-    link_in_table,   // link `index` entered table box `box`, `value` [m] deep
+    dependent_rows,  // touching slots whose rows of M* are dependent: `count` rows of rank `rank`
   };
   Kind kind = Kind::dependent_rows;
   double t = 0;      // [s]
-  int index = -1;    // the link (link_in_table)
-  int box = -1;      // the table box (link_in_table)
-  int count = 0;     // touching elbows (dependent_rows)
+  int count = 0;     // touching slots (dependent_rows)
   int rank = 0;      // rank of their rows (dependent_rows)
-  double value = 0;  // depth [m] (link_in_table)
 };
 
+// Why a run must stop, or why its numbers cannot be trusted (run/validity.hpp
+// has the checks): the check, when, the quantity against its bound.
 struct Failure {
   enum class Kind {
     none,
     painleve,             // friction makes a resting elbow's normal force push it into the table
     no_contact_solution,  // no active set has non-negative forces and accelerations
     diverged,             // the state became non-finite or exceeded 1e12
+    current_bound,        // a motor current beyond validity.current_factor x its stall current
+    speed_bound,          // a joint speed beyond validity.speed_factor x its free-running speed
+    penetration,          // a link or an elbow deeper in a table box than contact.penetration_tolerance
+    energy_balance,       // the energy account off by more than validity.energy_residual of the flow
+    elbow_not_resting,    // an elbow the task rests on the table rested less than validity.rest_share
+    too_many_contacts,    // more slots touch at once than contact.max_rows
   };
+  enum class Part { none, joint, link, elbow };
   Kind kind = Kind::none;
-  double t = 0;     // [s]
-  long step = 0;    // steps taken when it happened
+  double t = 0;          // [s]
+  long step = 0;         // steps taken when it happened
+  Part part = Part::none;
+  int index = -1;        // the joint, link or elbow
+  int box = -1;          // the table box (penetration)
+  double value = 0;      // the quantity checked (A, rad/s, m, J, share)
+  double limit = 0;      // its bound, same unit
+  double flow = 0;       // [J] energy that flowed (energy_balance)
+  double stable_step = 0;  // [s] estimated largest stable step at the failure; 0: not estimated
+  bool diverging = false;  // the check is a divergence signature (the run blew up)
+  double since = std::nan("");  // [s] energy_balance: when the residual first went beyond the bound
   explicit operator bool() const { return kind != Kind::none; }
 };
 

@@ -44,12 +44,15 @@ TEST_CASE("Data: every member sized from the model, the model's id, dof and stat
   CHECK((data.mass_matrix.rows() == 2 && data.mass_matrix.cols() == 2));
   CHECK(data.rotation.size() == 2);
   CHECK(data.spatial_inertia.size() == 2);
-  CHECK(data.contact.resting.size() == 2);
-  CHECK(data.contact.link_inside.size() == 2);
-  // The step's lists are reserved: a landing and a release per elbow and stage, a warning
-  // per link-box pair and a few more.
-  CHECK(data.log.events.capacity() >= 4 * 2 + 4);
-  CHECK(data.log.warnings.capacity() >= 2 * 3 + 4);
+  // Slots: 2 elbows x 3 boxes, and the 2 links' capsules (their shared joint ball
+  // once) x 3 boxes x (ends and interior).
+  CHECK(data.contact.slots() == data.contact.geometry.slots.size());
+  CHECK(data.contact.resting.size() == data.contact.geometry.slots.size());
+  CHECK(data.contact.geometry.primitives.size() == 4);
+  CHECK(data.contact.primitive_of(0).elbow == 0);
+  // The step's lists are reserved: a landing and a release per slot and stage.
+  CHECK(data.log.events.capacity() >= 4 * data.contact.geometry.slots.size());
+  CHECK(data.log.warnings.capacity() >= 1);
   CHECK_NOTHROW(check_data(m, data));
 }
 

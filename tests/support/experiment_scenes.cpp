@@ -21,7 +21,7 @@ ExperimentScene WritingArm::scene() const {
   m.table = {table};
   m.effects.motor = MotorModel::full;
   m.effects.damping = true;
-  m.effects.contact = elbow_on;
+  m.effects.contact = true;  // the table is solid for both: elbow off means held 2 cm above it
   Motor servo = small_servo();
   servo.gear_ratio = 100;
   m.motors.assign(4, servo);

@@ -20,7 +20,7 @@ struct ExperimentScene {
 };
 
 struct WritingArm {
-  bool elbow_on = true;          // rest the elbow (contact on) or keep it 2 cm up (contact off)
+  bool elbow_on = true;          // rest the elbow on the table, or hold it 2 cm above (the table stays solid)
   ControllerSpec::Kind controller = ControllerSpec::Kind::pd_feedforward;
   HandTask::Path path = HandTask::Path::line;
   double task_duration = 2.0;    // [s]

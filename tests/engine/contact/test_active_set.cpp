@@ -70,7 +70,7 @@ TEST_CASE("select_active_set: a touching elbow the arm presses down becomes acti
   REQUIRE(data.log.events.size() == 1);
   const ContactEvent& e = data.log.events[0];
   CHECK(e.kind == ContactEvent::Kind::landing);
-  CHECK(e.elbow == 0);
+  CHECK(e.slot == 0);
   CHECK(e.t == 0.25);
   CHECK(e.speed == 0.0);  // at rest: no approach speed
   CHECK_FALSE(data.failure);
@@ -109,7 +109,7 @@ TEST_CASE("select_active_set: a resting elbow its torques pull up is released, a
   CHECK(data.contact.resting[0] == 0);
   REQUIRE(data.log.events.size() == 1);
   CHECK(data.log.events[0].kind == ContactEvent::Kind::release);
-  CHECK(data.log.events[0].elbow == 0);
+  CHECK(data.log.events[0].slot == 0);
   CHECK(data.log.events[0].t == 0.4);
 }
 

@@ -185,47 +185,31 @@ TEST_CASE("elbow_contacts allocates nothing after the first call") {
   CHECK(elbowsim::testing::allocation_count() == before);
 }
 
-TEST_CASE("a link capsule pushed into the table is reported with its depth") {
+TEST_CASE("broad phase: the pairs whose Bullet bounds meet, widened by the margin") {
   //   o---- link 0 ----o               z = 0 (radius 0.02)
   //                      \  q2 < 0
   //   ====================\==========  table top z = -0.03
   //                        \ link 1 (0.4 m), tip at z = -0.4 sin(theta)
   Model m = elbowsim::testing::planar_arm({{0.3, 1, 0.15, 0.01}, {0.4, 1, 0.2, 0.01}});
-  // Box 0 is a side table out of reach, so the record must name box 1.
+  // Box 0 is a side table out of reach; box 1 the table under the arm.
   m.table = {box({-2, 2, -0.1}, {0.5, 0.5, 0.1}), box({0.5, 0, -0.28}, {2, 2, 0.5})};
+  m.effects.contact = true;
   finalize(m);
-  REQUIRE(m.contact.link_warning_depth == 0.005);
   Data data(m);
-  CollisionWorld world(m);
-  std::vector<LinkPenetration> out;
-  const auto penetrations = [&](double theta) {
+  CollisionWorld world(m, data.contact.geometry);
+  const int boxes = 2;
+  const auto near = [&](double theta, double margin) {
     forward_kinematics(m, data, Eigen::Vector2d(0, -theta));
-    world.link_penetrations(m, data, out);
+    std::vector<int> out;
+    world.near_pairs(data, margin, out);
     return out;
   };
-  // The capsule's lowest point is the tip minus the radius: depth = 0.4 sin(theta) - 0.01.
-  SUBCASE("level arm: nothing") { CHECK(penetrations(0.0).empty()); }
-  SUBCASE("shallower than the warning depth: nothing") {
-    CHECK(penetrations(std::asin(0.035)).empty());  // depth 0.004
-  }
-  SUBCASE("deeper than the warning depth, segment still outside: exact") {
-    const auto p = penetrations(std::asin(0.045));  // depth 0.008
-    REQUIRE(p.size() == 1);
-    CHECK(p[0].link == 1);
-    CHECK(p[0].box == 1);
-    CHECK(approx(p[0].depth, 0.008, kExact));
-  }
-  SUBCASE("tip through the top (EPA): depth 0.17 + 0.02") {
-    const auto p = penetrations(std::numbers::pi / 6);  // tip at z = -0.2
-    REQUIRE(p.size() == 1);
-    CHECK(p[0].link == 1);
-    CHECK(p[0].box == 1);
-    CHECK(approx(p[0].depth, 0.19, kExact));
-  }
-  SUBCASE("moving back out clears the report") {
-    CHECK(penetrations(std::numbers::pi / 6).size() == 1);
-    CHECK(penetrations(0.0).empty());
-  }
+  // Primitives: link 0's capsule (0), link 1's (1). Level, 1 cm above the top.
+  CHECK(near(0.0, 0.0).empty());
+  CHECK(near(0.0, 0.011) == std::vector<int>{0 * boxes + 1, 1 * boxes + 1});
+  // Link 1 dipped into the top: near without a margin; the side table never.
+  CHECK(near(std::asin(0.045), 0.0) == std::vector<int>{1 * boxes + 1});
+  CHECK(near(0.3, 1.0) == std::vector<int>{0 * boxes + 1, 1 * boxes + 1});
 }
 
 TEST_CASE("worlds_built() counts every CollisionWorld once") {

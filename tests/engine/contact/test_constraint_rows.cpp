@@ -142,14 +142,7 @@ TEST_CASE("friction: a sliding elbow decelerates as mu f_n predicts") {
   CHECK(r.energy_final.friction > 0.1);
 }
 
-// may_fail: KNOWN BUG in engine/contact/constraint_rows.cpp (not fixed here, tests only).
-// Line 38, c.Jc.row(r) = n.transpose() * c.J3, and with friction line 23,
-// c.Jf.row(r) -= mu * (t.transpose() * c.J3), each heap-allocate a temporary (Eigen
-// evaluates a row vector times a matrix into a row of a column-major matrix through one):
-// one or two mallocs per row per call, many per step. Invisible to Eigen's guard in
-// Release (-DNDEBUG compiles it out) and to operator new (Eigen uses malloc).
-TEST_CASE("constraint_rows calls the C allocator zero times, with and without friction" *
-          doctest::may_fail()) {
+TEST_CASE("constraint_rows calls the C allocator zero times, with and without friction") {
   for (bool friction : {false, true}) {
     Model m = chain_with_elbows(5, 2, 731);
     m.effects.friction = friction;

@@ -1,5 +1,5 @@
-// engine/contact/contact_checks.cpp: check_contacts on its own: a warning when a link
-// capsule enters a table box (once per entry), and the drift maxima of resting elbows.
+// engine/contact/contact_checks.cpp: check_contacts on its own: the drift maxima of resting
+// slots. (A link or an elbow in the table is a validity failure: tests/engine/run/test_validity.)
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -15,45 +15,6 @@
 
 using namespace elbowsim;
 using namespace elbowsim::testing;
-
-TEST_CASE("check_contacts: a link pushed into a box warns once per entry, with link, box, depth, t") {
-  //   o---- link 0 ----o               z = 0 (radius 0.02)
-  //                      \  q2 = -theta
-  //   ====================\==========  box 1, top z = -0.03
-  //                        \ link 1 (0.4 m, radius 0.01): depth 0.4 sin(theta) - 0.01 + ...
-  Model m = planar_arm({{0.3, 1, 0.15, 0.01}, {0.4, 1, 0.2, 0.01}});
-  TableBox side, table;  // box 0 is out of reach, so the warning must name box 1
-  side.center = Eigen::Vector3d(-2, 2, -0.1), side.size = Eigen::Vector3d(0.5, 0.5, 0.1);
-  table.center = Eigen::Vector3d(0.5, 0, -0.28), table.size = Eigen::Vector3d(2, 2, 0.5);
-  m.table = {side, table};
-  finalize(m);
-  Data data(m);
-  data.contact.world = std::make_shared<CollisionWorld>(m);
-  // One "step": the log emptied, the arm placed, the checks run.
-  const auto step_to = [&](double t, double theta) {
-    data.log.clear();
-    data.t = t;
-    forward_kinematics(m, data, Eigen::Vector2d(0, -theta));
-    check_contacts(m, data);
-    return data.log.warnings;
-  };
-  const double in = std::numbers::pi / 6;  // tip at z = -0.2: depth 0.17 + 0.02 (test_collision_bullet)
-  auto w = step_to(0.1, in);
-  REQUIRE(w.size() == 1);
-  CHECK(w[0].kind == Warning::Kind::link_in_table);
-  CHECK(w[0].index == 1);
-  CHECK(w[0].box == 1);
-  CHECK(w[0].t == 0.1);
-  CHECK(approx(w[0].value, 0.19, 1e-9));
-  CHECK(step_to(0.2, in + 0.01).empty());  // still inside: no new warning
-  CHECK(step_to(0.3, in).empty());
-  CHECK(step_to(0.4, 0.0).empty());  // out
-  CHECK(data.contact.link_inside[1] == 0);
-  w = step_to(0.5, in);  // in again: warned again
-  REQUIRE(w.size() == 1);
-  CHECK(w[0].t == 0.5);
-  CHECK(data.contact.link_inside[1] == 1);
-}
 
 TEST_CASE("check_contacts: max |C| and max |Cd| over resting elbows only, never decreasing") {
   const ElbowArm arm;

@@ -1,6 +1,8 @@
 // engine/contact/contact_data.cpp: ContactData holds the rows of M* for every number of
-// resting elbows, and use_rows(p) swaps the pre-sized set in without allocating.
+// resting slots up to its capacity, and use_rows(p) swaps the pre-sized set in without allocating.
 #include <doctest/doctest.h>
+
+#include <limits>
 
 #include "engine/contact/contact_data.hpp"
 #include "support/allocations.hpp"
@@ -27,16 +29,36 @@ void check_sizes(const ContactData& c, int p, int n) {
 
 }  // namespace
 
-TEST_CASE("ContactData: sized for 3 elbows, 4 links, 2 boxes, 5 joints; use_rows(0) at start") {
-  const ContactData c(3, 4, 2, 5);
+// 3 elbow balls on 2 boxes: 6 slots, rows for 3 at once.
+ContactData three_elbows_two_boxes() {
+  ContactGeometry g;
+  for (int k = 0; k < 3; ++k) {
+    Primitive p;
+    p.link = k;
+    p.elbow = k;
+    g.primitives.push_back(p);
+    for (int b = 0; b < 2; ++b) {
+      g.first_slot.push_back(static_cast<int>(g.slots.size()));
+      g.slots.push_back({k, b, ContactSlot::Part::ball});
+    }
+  }
+  g.first_slot.push_back(static_cast<int>(g.slots.size()));
+  g.boxes = 2;
+  return ContactData(g, 4, 2, 5, 3);
+}
+
+TEST_CASE("ContactData: sized for 6 slots, rows for 3, 5 joints; use_rows(0) at start") {
+  const ContactData c = three_elbows_two_boxes();
   check_sizes(c, 0, 5);
-  CHECK(c.resting.size() == 3);
-  CHECK(c.detected.size() == 3);
-  CHECK(c.normal.size() == 3);
-  CHECK(c.surface.size() == 3);
-  CHECK(c.link_inside.size() == 4);
+  CHECK(c.slots() == 6);
+  CHECK(c.resting.size() == 6);
+  CHECK(c.detected.size() == 6);
+  CHECK(c.normal.size() == 6);
+  CHECK(c.surface.size() == 6);
+  CHECK(c.capacity() == 3);
   CHECK(c.active.capacity() >= 3);
-  CHECK(c.penetrations.capacity() >= 4 * 2);
+  CHECK(c.candidates.capacity() >= 6);
+  for (const SlotContact& d : c.detected) CHECK(d.distance == std::numeric_limits<double>::infinity());
   REQUIRE(c.solvers.size() == 4);  // one workspace per m = 0..3
   for (int m = 0; m <= 3; ++m) {
     CAPTURE(m);
@@ -49,8 +71,8 @@ TEST_CASE("ContactData: sized for 3 elbows, 4 links, 2 boxes, 5 joints; use_rows
   }
 }
 
-TEST_CASE("use_rows swaps in the set for p = 0..elbows and back, allocating nothing") {
-  ContactData c(3, 4, 2, 5);
+TEST_CASE("use_rows swaps in the set for p = 0..capacity and back, allocating nothing") {
+  ContactData c = three_elbows_two_boxes();
   const int order[] = {1, 2, 3, 2, 0, 3, 1, 1, 0};
   const long news = allocation_count(), mallocs = malloc_count();
   Eigen::internal::set_is_malloc_allowed(false);

@@ -54,7 +54,14 @@ TEST_CASE("landing: located landing time matches a fine reference within 1e-6 s;
   CHECK(c->t < a->t + 1e-3 + 1e-9);
   CHECK(a->speed > 0.1);
   CHECK(a->impulse > 0);
-  CHECK(coarse.energy_final.impact_loss == doctest::Approx(a->energy_lost).epsilon(1e-9));
+  // Every impact's loss is in the account: the elbow's, and link 1's tip landing
+  // when the unactuated forearm swings down onto the table after it.
+  double lost = 0;
+  int landings = 0;
+  for (const ContactEvent& e : coarse.events)
+    if (e.kind == ContactEvent::Kind::landing) lost += e.energy_lost, ++landings;
+  CHECK(landings >= 2);
+  CHECK(coarse.energy_final.impact_loss == doctest::Approx(lost).epsilon(1e-9));
   // The energy account closes with the impact loss in it.
   CHECK(std::abs(coarse.balance_residual) < 1e-6 * coarse.energy_final.impact_loss);
 }
@@ -136,7 +143,7 @@ TEST_CASE("locate_first_event: a resting elbow whose force turns negative is rel
   CHECK(std::abs(data.t - 0.5) < 2e-10);
   REQUIRE(data.log.events.size() == 1);
   CHECK(data.log.events[0].kind == ContactEvent::Kind::release);
-  CHECK(data.log.events[0].elbow == 0);
+  CHECK(data.log.events[0].slot == 0);
   CHECK(data.log.events[0].t == data.t);
   CHECK(data.contact.resting[0] == 0);
   CHECK(data.step_count == 1);

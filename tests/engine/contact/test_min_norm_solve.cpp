@@ -64,13 +64,7 @@ TEST_CASE("min_norm_solve == CompleteOrthogonalDecomposition::solve bit for bit,
   CHECK(cases == 32);
 }
 
-// may_fail: KNOWN BUG in engine/contact/min_norm_solve.cpp (not fixed here, tests only).
-// `c.applyOnTheLeft(cod.matrixQ().setLength(rank).adjoint())` on a VectorXd makes Eigen
-// 3.4 heap-allocate a temporary in applyHouseholderOnTheLeft (one malloc per reflector
-// applied to more than one row: rank - 1 of them at full rank, 7 for 8 x 8). Eigen's
-// guard above does not see it in Release (eigen_assert is compiled out by -DNDEBUG) and
-// Eigen allocates with malloc, not operator new; with assertions on, the guard aborts.
-TEST_CASE("min_norm_solve calls the C allocator zero times (sizes 1-8, any rank)" * doctest::may_fail()) {
+TEST_CASE("min_norm_solve calls the C allocator zero times (sizes 1-8, any rank)") {
   std::mt19937 rng(6);
   std::normal_distribution<double> normal;
   for (int m = 1; m <= 8; ++m) {

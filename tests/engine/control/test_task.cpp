@@ -154,13 +154,7 @@ TEST_CASE("hand_target of a circle: every point on the circle of radius r in the
   }
 }
 
-// may_fail: KNOWN BUG in engine/control/task.cpp (not fixed here, tests only). circle()
-// takes e1 = +x whenever |n.y| > 0.9, meant for n = +-y (the x-z plane), but e1 = +x is
-// not orthogonal to a normal with an x component: for n = (0.2, 1, 0.3) the hand path is
-// an ellipse (semi-axes r and 0.98 r) tilted out of the plane normal to n (radius off by
-// 8.8e-4 m for r = 5 cm). A scenario can give such a normal (task.normal).
-TEST_CASE("hand_target of a circle whose normal is near +y but tilted: still on the circle" *
-          doctest::may_fail()) {
+TEST_CASE("hand_target of a circle whose normal is near +y but tilted: still on the circle") {
   HandTask task;
   task.path = HandTask::Path::circle;
   task.center = Eigen::Vector3d(0.4, 0.1, 0.2);

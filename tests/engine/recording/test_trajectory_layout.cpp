@@ -43,7 +43,8 @@ TEST_CASE("trajectory layout: the exact columns (golden) of 2 joints, motors, a 
       {"i1", "A"},          {"v0", "V"},           {"v1", "V"},           {"tau0", "N m"},
       {"tau1", "N m"},      {"hand_x", "m"},       {"hand_y", "m"},       {"hand_z", "m"},
       {"hand_d_x", "m"},    {"hand_d_y", "m"},     {"hand_d_z", "m"},     {"hand_error", "m"},
-      {"fn_elbow", "N"},    {"d_elbow", "m"},      {"rest_elbow", "1"},   {"E_in", "J"},
+      {"fn_elbow", "N"},    {"d_elbow", "m"},      {"rest_elbow", "1"},   {"fn_link0", "N"},
+      {"d_link0", "m"},     {"fn_link1", "N"},     {"d_link1", "m"},      {"E_in", "J"},
       {"E_joule", "J"},     {"E_viscous", "J"},    {"KE_links", "J"},     {"KE_rotors", "J"},
       {"PE", "J"},          {"E_magnetic", "J"},   {"E_friction", "J"},   {"E_normal", "J"},
       {"E_impact", "J"},    {"E_projection", "J"}, {"balance_residual", "J"}};
@@ -135,13 +136,7 @@ TEST_CASE("from_columns refuses a renamed column, naming its position and the ex
   CHECK(refusal(columns) == "trajectory column 2 is 'q0 [deg]', expected 'q0 [rad]'");
 }
 
-// may_fail: KNOWN WEAKNESS in engine/recording/trajectory_layout.cpp (not fixed here,
-// tests only). from_columns infers the groups from marker names (q<j>, i0, hand_error,
-// fn_<e>), so renaming a marker changes the layout it compares against: the message then
-// names another column's expected name (i0 renamed: "expected 'tau0 [N m]'"), or another
-// position (hand_error renamed: "column 17 is 'hand_d_x [m]', expected 'fn_elbow [N]'").
-TEST_CASE("from_columns names a renamed marker column (q1, i0, hand_error, fn_elbow) and its position" *
-          doctest::may_fail()) {
+TEST_CASE("from_columns names a renamed marker column (q1, i0, hand_error, fn_elbow) and its position") {
   const TrajectoryLayout L(full_groups());
   for (const char* renamed : {"q1", "i0", "hand_error", "fn_elbow"}) {
     std::vector<Column> columns = L.columns();
@@ -160,11 +155,11 @@ TEST_CASE("from_columns refuses a missing or an extra column, naming the positio
   const TrajectoryLayout L(full_groups());
   std::vector<Column> missing = L.columns();
   missing.pop_back();
-  CHECK(refusal(missing) == "trajectory column 35 is missing: expected 'balance_residual [J]'");
+  CHECK(refusal(missing) == "trajectory column 39 is missing: expected 'balance_residual [J]'");
   std::vector<Column> middle = L.columns();
-  middle.erase(middle.begin() + 24);  // E_joule
-  CHECK(refusal(middle).find("trajectory column 25 is 'E_viscous [J]', expected 'E_joule [J]'") == 0);
+  middle.erase(middle.begin() + 28);  // E_joule
+  CHECK(refusal(middle).find("trajectory column 29 is 'E_viscous [J]', expected 'E_joule [J]'") == 0);
   std::vector<Column> extra = L.columns();
   extra.push_back({"temperature", "K"});
-  CHECK(refusal(extra) == "trajectory column 36 'temperature [K]' is not a trajectory column");
+  CHECK(refusal(extra) == "trajectory column 40 'temperature [K]' is not a trajectory column");
 }

@@ -29,25 +29,9 @@ TEST_CASE("describe(Warning): dependent rows name t, the elbow count, the rank a
   MESSAGE(text);
   CHECK(has(text, "dependent"));
   CHECK(has(text, "t = 0.25 s"));
-  CHECK(has(text, "3 touching elbows"));
+  CHECK(has(text, "3 touching contact points"));
   CHECK(has(text, "rank 2"));
   CHECK(has(text, "threshold"));
-}
-
-TEST_CASE("describe(Warning): a link in the table names the link, the box, t and the depth") {
-  const Model model;
-  Warning w;
-  w.kind = Warning::Kind::link_in_table;
-  w.t = 1.5;
-  w.index = 1;
-  w.box = 2;
-  w.value = 0.012;
-  const std::string text = describe(model, w);
-  MESSAGE(text);
-  CHECK(has(text, "link 1"));
-  CHECK(has(text, "table box 2"));
-  CHECK(has(text, "t = 1.5 s"));
-  CHECK(has(text, "depth 0.012 m"));
 }
 
 TEST_CASE("describe(Failure): each kind names its time and quantity; none says nothing") {
@@ -83,6 +67,54 @@ TEST_CASE("describe(Failure): each kind names its time and quantity; none says n
   CHECK(has(text, "0.002 s"));  // the step it ran with
 }
 
+TEST_CASE("describe(Failure): the validity checks name the part, the quantity, its bound, the cause") {
+  Model model;
+  model.elbows = {Elbow{"elbow", 0, Eigen::Vector3d::Zero(), 0.03}};
+  model.options.step = 1.75e-3;
+  Failure f;
+  f.t = 0.5;
+  f.kind = Failure::Kind::penetration;
+  f.part = Failure::Part::link;
+  f.index = 2;
+  f.box = 1;
+  f.value = 0.004;
+  f.limit = 0.001;
+  std::string text = describe(model, f);
+  MESSAGE(text);
+  CHECK(has(text, "link 2 is 0.004 m inside table box 1 at t = 0.5 s"));
+  CHECK(has(text, "contact.penetration_tolerance 0.001 m"));
+  CHECK(has(text, "effects.contact is false"));  // the likely cause with contact off
+  model.effects.contact = true;
+  CHECK(has(describe(model, f), "contact.events: locate"));  // with events: step
+
+  f = Failure{Failure::Kind::energy_balance, 0.5, 100};
+  f.value = 2.0, f.limit = 0.1, f.flow = 100.0;
+  f.stable_step = 1.5e-3;  // the step 1.75 ms is beyond it
+  text = describe(model, f);
+  MESSAGE(text);
+  CHECK(has(text, "invalid run: the energy balance is off by 2 J at t = 0.5 s, 2 % of the 100 J"));
+  CHECK(has(text, "the step 0.00175 s is too large"));
+  CHECK(has(text, "try simulation.step <= 0.00075 s"));
+
+  f = Failure{Failure::Kind::current_bound, 0.25, 10};
+  f.part = Failure::Part::joint, f.index = 1, f.value = 250, f.limit = 120;
+  text = describe(model, f);
+  MESSAGE(text);
+  CHECK(has(text, "simulation diverged at t = 0.25 s: motor 1's current reached 250 A"));
+  CHECK(has(text, "beyond 120 A"));
+
+  f = Failure{Failure::Kind::elbow_not_resting, 4.8, 4800};
+  f.part = Failure::Part::elbow, f.index = 0, f.value = 0.4, f.limit = 0.9;
+  text = describe(model, f);
+  MESSAGE(text);
+  CHECK(has(text, "elbow 'elbow' rested 40 % of the run"));
+  CHECK(has(text, "validity.rest_share 90 %"));
+
+  f = Failure{Failure::Kind::too_many_contacts, 0.1, 100};
+  f.value = 30, f.limit = 24;
+  CHECK(has(describe(model, f), "30 contact points touch the table at once, more than the 24"));
+}
+
 TEST_CASE("StepLog::clear empties the lists and keeps their capacity") {
   StepLog log;
   log.events.reserve(8);
@@ -96,11 +128,9 @@ TEST_CASE("StepLog::clear empties the lists and keeps their capacity") {
   CHECK(log.warnings.capacity() >= 4);
 }
 
-// may_fail: KNOWN BUG in engine/run/step_log.cpp (not fixed here, tests only). The
-// dependent-rows message prints contact.rank_tolerance with std::to_string, which has
-// six fixed decimals: the default 1e-9 reads "threshold 0.000000 relative".
-TEST_CASE("describe(Warning): the dependent-rows threshold is readable (1e-09, not 0.000000)" *
-          doctest::may_fail()) {
+// The threshold is printed as a number, not with std::to_string's six fixed decimals
+// (which made the default 1e-9 read "threshold 0.000000 relative").
+TEST_CASE("describe(Warning): the dependent-rows threshold is readable (1e-09, not 0.000000)") {
   Model model;
   model.contact.rank_tolerance = 1e-9;
   Warning w;
