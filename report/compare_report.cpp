@@ -35,6 +35,7 @@ std::string runs_table(const std::vector<RunData>& runs, const fs::path& out) {
   const std::pair<const char*, const char*> rows[] = {{"scenario", "/scenario"},
                                                       {"description", "/description"},
                                                       {"completed", "/completed"},
+                                                      {"valid", "/valid"},
                                                       {"failure", "/failure"},
                                                       {"active effects", "/effects"},
                                                       {"integrator", "/settings/integrator"},
@@ -107,6 +108,10 @@ std::string notices(const std::vector<RunData>& runs) {
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const RunData& run = runs[k];
     const std::string id = std::to_string(k);
+    if (run.has_summary() && run.summary.value("completed", true) && !is_valid(run))
+      out += html::notice("failure", run.label + " is not a valid run",
+                          {run.summary.value("failure", std::string("(no reason recorded)"))},
+                          "failure-" + id);
     if (run.has_summary() && !run.summary.value("completed", true))
       out += html::notice("failure", run.label + " did not complete",
                           {run.summary.value("failure", std::string("(no reason recorded)"))},

@@ -100,10 +100,13 @@ std::vector<std::string> failures(const std::vector<RunData>& runs) {
       sentences.push_back(run.label + " has no summary.json: its numbers are missing.");
       continue;
     }
-    if (run.summary.value("completed", true)) continue;
-    sentences.push_back(run.label + " did not complete (" + run.summary.value("failure", "") +
-                        "): its totals cover t = 0 to " +
-                        quantity(run.summary.value("final_time", 0.0), "s") + " only.");
+    if (!run.summary.value("completed", true))
+      sentences.push_back(run.label + " did not complete (" + run.summary.value("failure", "") +
+                          "): its totals cover t = 0 to " +
+                          quantity(run.summary.value("final_time", 0.0), "s") + " only.");
+    else if (!is_valid(run))
+      sentences.push_back(run.label + " is not a valid run (" + run.summary.value("failure", "") +
+                          ").");
   }
   return sentences;
 }
@@ -130,8 +133,18 @@ std::vector<std::string> unique_labels(const std::vector<std::string>& folder_na
   return labels;
 }
 
+bool is_valid(const RunData& run) {
+  // Summaries written before validity was checked say only "completed".
+  return run.has_summary() &&
+         run.summary.value("valid", run.summary.value("completed", false));
+}
+
 std::vector<std::string> verdict(const std::vector<RunData>& runs, const Comparison& table) {
   std::vector<std::string> sentences = failures(runs);
+  if (!sentences.empty()) {
+    sentences.push_back("No verdict: comparing numbers needs every run to be valid.");
+    return sentences;
+  }
   if (all_zero(table, "energy_final.electrical_in"))
     sentences.push_back("No run drew electrical energy (energy_final.electrical_in is 0 in all).");
   else
@@ -157,6 +170,7 @@ Comparison compare_runs(const std::vector<RunData>& runs) {
     c.labels.push_back(run.label);
     c.folders.push_back(run.folder.generic_string());
     c.completed.push_back(run.has_summary() && run.summary.value("completed", false));
+    c.valid.push_back(is_valid(run));
     c.failures.push_back(run.has_summary() ? run.summary.value("failure", "") : "no summary.json");
     // A run that stopped before its first step (its task could not be planned)
     // has no numbers to compare, only zeros in its summary.
@@ -173,10 +187,11 @@ nlohmann::ordered_json comparison_json(const Comparison& c) {
   Json j;
   j["runs"] = c.labels;
   j["reference"] = c.labels.empty() ? "" : c.labels[0];
-  for (const char* key : {"folder", "completed", "failure"}) j[key] = Json::object();
+  for (const char* key : {"folder", "completed", "valid", "failure"}) j[key] = Json::object();
   for (std::size_t r = 0; r < c.labels.size(); ++r) {
     j["folder"][c.labels[r]] = c.folders[r];
     j["completed"][c.labels[r]] = bool(c.completed[r]);
+    j["valid"][c.labels[r]] = bool(c.valid[r]);
     j["failure"][c.labels[r]] = c.failures[r];
   }
   j["verdict"] = c.verdict;
@@ -212,12 +227,13 @@ std::string csv_header(const ComparedMetric& m) {
 }  // namespace
 
 void write_comparison_csv(std::ostream& out, const Comparison& c, const std::string& first_header) {
-  out << csv_field(first_header) << ",completed";
+  out << csv_field(first_header) << ",completed,valid";
   for (const ComparedMetric& m : c.metrics) out << ',' << csv_header(m);
   for (const ComparedMetric& m : c.metrics) out << ',' << csv_field(m.path + " rel");
   out << '\n';
   for (std::size_t r = 0; r < c.labels.size(); ++r) {
-    out << csv_field(c.labels[r]) << ',' << (c.completed[r] ? "true" : "false");
+    out << csv_field(c.labels[r]) << ',' << (c.completed[r] ? "true" : "false") << ','
+        << (c.valid[r] ? "true" : "false");
     for (const ComparedMetric& m : c.metrics) out << ',' << csv_cell(m.values[r]);
     for (const ComparedMetric& m : c.metrics)
       out << ',' << (m.relative[r] ? nlohmann::ordered_json(*m.relative[r]).dump() : "");
@@ -229,12 +245,12 @@ void write_sweep_csv(std::ostream& out, const std::string& key,
                      const std::vector<std::string>& values,
                      const std::vector<std::string>& variants, const std::vector<RunData>& runs) {
   const Comparison c = compare_runs(runs);
-  out << csv_field(key) << ",variant,completed";
+  out << csv_field(key) << ",variant,completed,valid";
   for (const ComparedMetric& m : c.metrics) out << ',' << csv_header(m);
   out << '\n';
   for (std::size_t r = 0; r < runs.size(); ++r) {
     out << csv_field(values[r]) << ',' << csv_field(variants[r]) << ','
-        << (c.completed[r] ? "true" : "false");
+        << (c.completed[r] ? "true" : "false") << ',' << (c.valid[r] ? "true" : "false");
     for (const ComparedMetric& m : c.metrics) out << ',' << csv_cell(m.values[r]);
     out << '\n';
   }

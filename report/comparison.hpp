@@ -28,6 +28,7 @@ struct Comparison {
   std::vector<std::string> labels;      // [runs]
   std::vector<std::string> folders;     // [runs] run folders, as given
   std::vector<bool> completed;          // [runs] summary.json "completed"
+  std::vector<bool> valid;              // [runs] summary.json "valid" (engine/run/validity.hpp)
   std::vector<std::string> failures;    // [runs] summary.json "failure"
   std::vector<ComparedMetric> metrics;  // the numbers of summary.json (run_metrics), in order
   std::vector<std::string> verdict;     // sentences, most important first
@@ -38,7 +39,12 @@ std::vector<std::string> unique_labels(const std::vector<std::string>& folder_na
 
 Comparison compare_runs(const std::vector<RunData>& runs);
 
-// The verdict alone (what compare_runs puts in Comparison::verdict).
+// Whether a run's numbers can be compared: summary.json says valid (older
+// summaries: completed).
+bool is_valid(const RunData& run);
+
+// The verdict alone (what compare_runs puts in Comparison::verdict): the runs
+// that are not valid, and then no verdict; else the energy and accuracy sentences.
 std::vector<std::string> verdict(const std::vector<RunData>& runs, const Comparison& table);
 
 // comparison.json: runs (labels), reference (the first), folder, completed

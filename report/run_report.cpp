@@ -39,7 +39,8 @@ std::string dynamics_name(const std::string& method) {
 std::string status(const nlohmann::ordered_json& s) {
   const std::string steps = std::to_string(s.value("steps", 0L)) +
                             " steps to t = " + number(s.value("final_time", 0.0), "s");
-  return s.value("completed", false) ? "completed: " + steps : "STOPPED EARLY after " + steps;
+  if (!s.value("completed", false)) return "STOPPED EARLY after " + steps;
+  return s.value("valid", true) ? "completed: " + steps : "completed, NOT VALID: " + steps;
 }
 
 Rows run_rows(const RunData& run) {
@@ -92,6 +93,12 @@ std::string header(const RunData& run) {
 std::string notices(const RunData& run) {
   std::string out;
   const nlohmann::ordered_json& s = run.summary;
+  if (run.has_summary() && s.value("completed", true) && !s.value("valid", true))
+    out += html::notice("failure", "This run is not valid: do not use its numbers.",
+                        {"Failure: " + s.value("failure", std::string("(no reason recorded)")),
+                         "It ran to t = " + number(s.value("final_time", 0.0), "s") +
+                             "; the plots show what it computed, for diagnosis."},
+                        "failure");
   if (run.has_summary() && !s.value("completed", true))
     out += html::notice(
         "failure", "This run did not complete.",

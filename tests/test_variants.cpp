@@ -204,7 +204,7 @@ TEST_CASE("variants: run writes a folder per variant and a comparison of their s
   for (std::size_t k = 0; k < 2; ++k) {
     CHECK(csv[k + 1][0] == (k == 0 ? "heavy" : "light"));
     CHECK(csv[k + 1][1] == "true");
-    check_row_matches(csv[0], csv[k + 1], 2, summaries[k]);
+    check_row_matches(csv[0], csv[k + 1], 3, summaries[k]);  // after the run, completed, valid
   }
   const auto json = nlohmann::json::parse(slurp(dir / "out" / "comparison.json"));
   CHECK(json["runs"] == nlohmann::json::array({"heavy", "light"}));
@@ -279,7 +279,7 @@ TEST_CASE("sweep: one folder and one sweep.csv row per value, numbers as in the 
     const auto summary = nlohmann::json::parse(
         slurp(dir / (std::string("simulation.duration=") + values[k]) / "summary.json"));
     CHECK(summary["settings"]["duration"] == std::stod(values[k]));
-    check_row_matches(csv[0], csv[k + 1], 3, summary);
+    check_row_matches(csv[0], csv[k + 1], 4, summary);  // after value, variant, completed, valid
   }
   // Numeric values also get plots against the value (energy always; the
   // pendulum has no task, so no hand-error plot).

@@ -90,6 +90,9 @@ RunOutcome run_one(const Scenario& scenario, const std::filesystem::path& folder
   if (!result.completed) {
     std::cerr << "error: " << result.failure << "\n  kept " << result.trajectory.rows()
               << " recorded samples in " << folder.string() << '\n';
+  } else if (!result.valid) {
+    std::cerr << "error: " << result.failure << "\n  the run reached t = " << result.final_time
+              << " s; its outputs in " << folder.string() << " are marked invalid\n";
   } else {
     std::cout << scenario.model.name << ": " << result.steps << " steps to t = "
               << result.final_time << " s in " << result.wall_seconds << " s; outputs in "
@@ -101,7 +104,7 @@ RunOutcome run_one(const Scenario& scenario, const std::filesystem::path& folder
   const int rendered = render ? render_outputs(scenario, result.trajectory, folder) : exit_ok;
   // The report after everything else: it reads the folder back, video included.
   const int reported = recorded && args.report ? report_outputs(folder) : exit_ok;
-  outcome.code = !result.completed ? exit_run_failed : rendered != exit_ok ? rendered : reported;
+  outcome.code = !result.valid ? exit_run_failed : rendered != exit_ok ? rendered : reported;
   return outcome;
 }
 

@@ -6,6 +6,7 @@
 #include "engine/contact/lcp.hpp"
 #include "engine/control/controller.hpp"
 #include "engine/dynamics/crba.hpp"
+#include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/motor.hpp"
 #include "engine/dynamics/walker_orin.hpp"
 #include "engine/run/state_layout.hpp"
@@ -30,17 +31,31 @@ void prepare_mechanics(const Model& model, Data& data) {
   bias_torques(model, data, qd);
 }
 
-// Slots at or into the table and not separating, and those already resting.
+// Whether slot k's row n^T J can move it along the normal at all: a ball whose
+// point moves only sideways (a hanging link's tip, in this pose) has a zero
+// row, which can neither be pushed nor carry a force.
+bool movable(const Model& model, Data& data, int k) {
+  ContactData& c = data.contact;
+  point_jacobian(model, data, c.primitive_of(k).link, c.detected[k].local, c.J3);
+  double row = 0;
+  for (Eigen::Index j = 0; j < c.J3.cols(); ++j) row = std::max(row, std::abs(c.normal[k].dot(c.J3.col(j))));
+  return row > 1e-12;  // [m/rad]
+}
+
+// Slots at or into the table and not separating, and those already resting;
+// not those whose row is zero (they rest without a row).
 void touching_slots(const Model& model, Data& data) {
   ContactData& c = data.contact;
   c.candidates.clear();
   for (int k = 0; k < c.slots(); ++k) {
-    if (c.resting[k]) {
+    const bool touching = c.resting[k] || (c.detected[k].distance <= model.contact.touch_distance &&
+                                           normal_speed(model, data, k) <= model.contact.separation_velocity);
+    if (!touching) continue;
+    if (movable(model, data, k)) {
       c.candidates.push_back(k);
-      continue;
+    } else if (c.resting[k]) {
+      c.resting[k] = 0;  // off quietly: it carried nothing
     }
-    if (c.detected[k].distance > model.contact.touch_distance) continue;
-    if (normal_speed(model, data, k) <= model.contact.separation_velocity) c.candidates.push_back(k);
   }
 }
 

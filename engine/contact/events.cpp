@@ -8,6 +8,8 @@ namespace elbowsim {
 
 namespace {
 
+constexpr double kReleaseForce = 1e-9;  // [N] a resting slot pulled harder than this releases
+
 // Landing: the slot's signed distance; release: its normal force (both
 // change sign at the event).
 double event_value(const Model& model, Data& data, int slot, bool landing) {
@@ -76,7 +78,10 @@ void locate_first_event(const Model& model, Data& data, double t0) {
   double first_time = h;
   for (int k = 0; k < c.slots(); ++k) {
     const bool landing = !c.resting[k] && c.detected[k].distance < 0 && normal_speed(model, data, k) < 0;
-    const bool releasing = c.resting[k] && !landing && event_value(model, data, k, false) < 0;
+    // A force that is zero to rounding (a row that carries nothing) is no release:
+    // locating it would shorten every step to the locate tolerance.
+    const bool releasing =
+        c.resting[k] && !landing && event_value(model, data, k, false) < -kReleaseForce;
     if (!landing && !releasing) continue;
     const double tau = locate(model, data, t0, h, k, landing);
     if (tau < first_time || first < 0) first = k, first_time = tau, first_is_landing = landing;

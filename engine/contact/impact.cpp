@@ -63,8 +63,11 @@ void land_touching_slots(const Model& model, Data& data) {
   ContactData& c = data.contact;
   c.landing.clear();
   const double limit = model.contact.events == EventTiming::locate ? model.contact.touch_distance : 0.0;
+  // Approaching faster than contact.separation_velocity: slower is no impact (and a
+  // row that cannot move along the normal approaches only by rounding).
   for (int k = 0; k < c.slots(); ++k)
-    if (!c.resting[k] && c.detected[k].distance <= limit && normal_speed(model, data, k) < 0)
+    if (!c.resting[k] && c.detected[k].distance <= limit &&
+        normal_speed(model, data, k) < -model.contact.separation_velocity)
       c.landing.push_back(k);
   if (c.landing.empty()) return;
   if (!model.effects.impacts) {

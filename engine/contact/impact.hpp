@@ -30,7 +30,7 @@ ImpactResult apply_impact(const Model& model, Data& data, const std::vector<int>
 
 // The impact stage of a step: every free slot at or into the table
 // (distance <= 0, or <= touch_distance with located events) and approaching
-// lands; with effects.impacts it gets its impulse. Landing events go to
+// faster than contact.separation_velocity lands; with effects.impacts it gets its impulse. Landing events go to
 // data.log; the impact loss to data.contact.impact_loss.
 void land_touching_slots(const Model& model, Data& data);
 

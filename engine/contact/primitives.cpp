@@ -147,6 +147,10 @@ ContactGeometry contact_geometry(const Model& model) {
     }
   }
   drop_shared_ends(model, g.primitives);
+  // A ball at the origin of link 0 sits on joint 0's axis: it never moves, so it
+  // cannot land or press (its row would be zero).
+  for (Primitive& p : g.primitives)
+    if (p.link == 0 && !p.is_ball && p.a.isZero(0)) p.end_a = false;
   g.boxes = static_cast<int>(model.table.size());
   for (int k = 0; k < static_cast<int>(g.primitives.size()); ++k) {
     const Primitive& p = g.primitives[k];

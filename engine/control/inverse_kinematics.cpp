@@ -18,6 +18,8 @@ TablePlane table_plane_under(const Model& model, const Eigen::Vector3d& p) {
   }
   TablePlane plane;
   if (model.table.empty()) return plane;
+  plane.box = best;
+  plane.over = best_distance < 0;
   const TableBox& box = model.table[best];
   plane.normal = box.rotation.col(2);
   plane.point = box.center + box.rotation * Eigen::Vector3d(0, 0, box.size.z() / 2);

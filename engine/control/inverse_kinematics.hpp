@@ -14,6 +14,8 @@ namespace elbowsim {
 struct TablePlane {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  int box = -1;       // the table box whose top it is
+  bool over = false;  // the point asked about lies over that box's top face
 };
 
 // The top face (box +z) of the table box whose footprint holds `p`, or of the

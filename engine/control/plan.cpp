@@ -10,9 +10,15 @@ namespace elbowsim {
 
 namespace {
 
+std::string point_text(const Eigen::Vector3d& p) {
+  std::ostringstream s;
+  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ") m";
+  return s.str();
+}
+
 std::string where(double t, const Eigen::Vector3d& p) {
   std::ostringstream s;
-  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ") m at t = " << t << " s";
+  s << point_text(p) << " at t = " << t << " s";
   return s.str();
 }
 
@@ -33,6 +39,26 @@ IkProblem ik_problem(const Model& model, const HandTask& task, Data& data,
   problem.q_min = task.q_min;
   problem.q_max = task.q_max;
   return problem;
+}
+
+// Every elbow the task rests on the table must rest on a box's top face: its
+// contact point (under the sphere) inside the face, not beyond the edge where
+// the plane goes on but the table does not.
+void check_over_table(const Model& model, Data& data, const IkProblem& problem, double t) {
+  if (!model.effects.contact || problem.clearance != 0) return;
+  for (std::size_t r = 0; r < problem.elbows.size(); ++r) {
+    const Elbow& e = model.elbows[problem.elbows[r]];
+    const Eigen::Vector3d contact =
+        point_position(data, e.link, e.point) - e.radius * problem.planes[r].normal;
+    const TablePlane under = table_plane_under(model, contact);
+    if (under.over) continue;
+    std::ostringstream msg;
+    msg << "the task rests elbow '" << e.name << "' on table box " << problem.planes[r].box
+        << ", but at t = " << t << " s its contact point " << point_text(contact)
+        << " is beyond the box's top face: it cannot rest there (move the table, the elbow or the "
+           "hand path, or give task.elbow_clearance)";
+    throw PlanError(msg.str());
+  }
 }
 
 void check(const IkResult& r, double t, const Eigen::Vector3d& target) {
@@ -122,6 +148,8 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
     problem.hand = hand_target(experiment.task, hand_start, t).p;
     const IkResult r = solve_ik(model, data, problem, q);
     check(r, t, problem.hand);
+    forward_kinematics(model, data, r.q);
+    check_over_table(model, data, problem, t);
     q = r.q;
     plan->q.push_back(q);
     plan->hand.push_back(problem.hand);

@@ -8,6 +8,8 @@
 
 #include "engine/contact/collision.hpp"
 #include "engine/contact/geometry.hpp"
+#include "engine/run/step.hpp"
+#include "support/contact_scenes.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "support/models.hpp"
 
@@ -137,4 +139,29 @@ TEST_CASE("segment-box: the parameter found is the nearest (or deepest) point, a
   const BoxContact edge = sphere_box(Eigen::Vector3d(0.5 + past_edge, 0, 0.6 - past_edge), 0, top);
   CHECK(edge.feature == BoxFeature::edge);
   CHECK(edge.distance == doctest::Approx(0.05 * std::sqrt(2.0)).epsilon(1e-12));
+}
+
+TEST_CASE("a static equilibrium stays static for any elbow radius: the face normal is exact") {
+  // The leaning arm (contact_scenes.hpp) with the shoulder carrying half its load: the
+  // table's force is the statics' (G1 - tau1) / (l1 cos q1), the accelerations zero.
+  // With GJK's numerical normal a 1e-9 m sphere tilted the normal by rounding/radius.
+  double force[2];
+  int k = 0;
+  for (double radius : {0.03, 1e-9}) {
+    testing::ElbowArm arm;
+    arm.r = radius;
+    Model m = arm.model(0.5 * arm.G1(), 0.0);
+    // Only the elbow touches: the links' 2 cm capsules would reach below a 1e-9 m ball.
+    for (Link& link : m.links) link.collision.kind = LinkCollision::Kind::none;
+    finalize(m);
+    Data data(m);
+    reset(m, data);
+    CAPTURE(radius);
+    REQUIRE(data.contact.rows() == 1);
+    force[k++] = data.contact.fn[0];
+    CHECK(data.contact.normal[0] == Eigen::Vector3d::UnitZ());
+    CHECK(data.qdd.cwiseAbs().maxCoeff() <= 1e-12);
+    CHECK(data.contact.fn[0] == doctest::Approx(arm.statics_force(0.5 * arm.G1())).epsilon(1e-12));
+  }
+  CHECK(force[0] == doctest::Approx(force[1]).epsilon(1e-12));
 }

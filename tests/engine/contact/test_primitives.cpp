@@ -36,13 +36,15 @@ TEST_CASE("capsules: the shared joint ball once; ends and interiors are slots, p
   // Link 1 starts where link 0 ends, with the same radius: link 0's end keeps the slot.
   CHECK(g.primitives[0].end_b);
   CHECK_FALSE(g.primitives[1].end_a);
-  CHECK(names(m) == std::vector<std::string>{"link0.end_a", "link0.end_b", "link0.interior",
-                                             "link1.end_b", "link1.interior"});
+  // Link 0's start sits on joint 0's axis, fixed: no slot.
+  CHECK_FALSE(g.primitives[0].end_a);
+  CHECK(names(m) == std::vector<std::string>{"link0.end_b", "link0.interior", "link1.end_b",
+                                             "link1.interior"});
   // A thicker link 1 keeps the ball at the joint instead.
   Model thick = two_links(1);
   thick.links[1].radius = 0.03;
-  CHECK(names(thick) == std::vector<std::string>{"link0.end_a", "link0.interior", "link1.end_a",
-                                                 "link1.end_b", "link1.interior"});
+  CHECK(names(thick) == std::vector<std::string>{"link0.interior", "link1.end_a", "link1.end_b",
+                                                 "link1.interior"});
 }
 
 TEST_CASE("an elbow first, its ball covering the capsule ends it sits on; boxes named when many") {
@@ -54,8 +56,8 @@ TEST_CASE("an elbow first, its ball covering the capsule ends it sits on; boxes 
   CHECK_FALSE(g.primitives[1].end_b);  // link 0's tip: inside the elbow's ball
   CHECK_FALSE(g.primitives[2].end_a);  // link 1's start: the same point
   CHECK(names(m) == std::vector<std::string>{
-                        "elbow@box0", "elbow@box1", "link0.end_a@box0", "link0.interior@box0",
-                        "link0.end_a@box1", "link0.interior@box1", "link1.end_b@box0",
+                        "elbow@box0", "elbow@box1", "link0.interior@box0", "link0.interior@box1",
+                        "link1.end_b@box0",
                         "link1.interior@box0", "link1.end_b@box1", "link1.interior@box1"});
   // The table of slots per (primitive, box) covers every slot once, in order.
   REQUIRE(g.first_slot.size() == 3 * 2 + 1);

@@ -85,6 +85,7 @@ TEST_CASE("describe(Failure): the validity checks name the part, the quantity, i
   CHECK(has(text, "contact.penetration_tolerance 0.001 m"));
   CHECK(has(text, "effects.contact is false"));  // the likely cause with contact off
   model.effects.contact = true;
+  model.contact.events = EventTiming::step;
   CHECK(has(describe(model, f), "contact.events: locate"));  // with events: step
 
   f = Failure{Failure::Kind::energy_balance, 0.5, 100};
