@@ -11,20 +11,24 @@ namespace elbowsim {
 // llt is built in place: assigning an LLT copies its status before it has one.
 namespace {
 
-// Rows the run makes room for: contact.max_rows, or by default every slot up
-// to 2 dof + elbows + 4 (rows beyond dof are dependent: many balls flat on a face).
+// Rows the run makes room for: contact.max_rows, or by default one per slot
+// (three with Coulomb friction: a sticking slot's tangents) up to 2 dof +
+// elbows + 4 (rows beyond dof are dependent: many balls flat on a face).
 int contact_capacity(const Model& model, const ContactGeometry& g) {
   if (!model.effects.contact) return 0;  // no rows: a scene without contact pays for none
-  const int slots = static_cast<int>(g.slots.size());
-  if (model.contact.max_rows > 0) return std::min(model.contact.max_rows, slots);
-  return std::min(slots, 2 * model.dof + static_cast<int>(model.elbows.size()) + 4);
+  const int rows = static_cast<int>(g.slots.size()) * (model.has_coulomb_friction() ? 3 : 1);
+  if (model.contact.max_rows > 0) return std::min(model.contact.max_rows, rows);
+  return std::min(rows, 2 * model.dof + static_cast<int>(model.elbows.size()) + 4);
 }
 
 ContactData make_contact_data(const Model& model) {
   ContactGeometry g = contact_geometry(model);
   const int capacity = contact_capacity(model, g);
+  // The stick-slip LCP: at most 10 variables per 3 rows (a two-tangent cone: its
+  // normal, 8 directions and its slip), 4 per 2 (one tangent).
+  const int cones = model.has_coulomb_friction() ? 4 * capacity : 0;
   return ContactData(std::move(g), model.dof, static_cast<int>(model.table.size()), model.dof,
-                     capacity);
+                     capacity, cones);
 }
 
 }  // namespace

@@ -52,6 +52,15 @@ const char* to_string(EventTiming e) {
   return "?";
 }
 
+const char* to_string(FrictionLaw law) {
+  switch (law) {
+    case FrictionLaw::coulomb: return "coulomb";
+    case FrictionLaw::tanh: return "tanh";
+    case FrictionLaw::saturated: return "saturated";
+  }
+  return "?";
+}
+
 std::vector<std::string> Model::active_effects() const {
   std::vector<std::string> names;
   if (effects.gravity) names.emplace_back("gravity");
@@ -100,10 +109,11 @@ void check_contact_scene(const Model& model) {
     require((model.table[b].size.array() > 0).all(), at("table", int(b)) + ".size must be > 0");
   const ContactOptions& c = model.contact;
   require(c.restitution >= 0 && c.restitution <= 1, "contact.restitution must be in [0, 1]");
-  require(c.friction >= 0, "contact.friction must be >= 0");
+  require(c.friction.mu >= 0, "contact.friction.mu must be >= 0");
+  require(c.friction.stick_velocity > 0 && c.friction.tanh_velocity > 0 && c.friction.slip_velocity > 0,
+          "contact.friction velocities must be > 0");
   require(c.rank_tolerance > 0 && c.rank_tolerance < 1, "contact.rank_tolerance must be in (0, 1)");
-  require(c.baumgarte_time > 0 && c.slip_velocity > 0 && c.locate_tolerance > 0,
-          "contact tolerances must be > 0");
+  require(c.baumgarte_time > 0 && c.locate_tolerance > 0, "contact tolerances must be > 0");
   if (!model.effects.contact) return;
   require(!model.table.empty(), "contact needs a table (table: boxes)");
 }
@@ -145,6 +155,20 @@ void add_point_mass(Link& link, double mass, const Eigen::Vector3d& point) {
   link.mass = m;
 }
 
+// The joint axes in the world at q = 0 (a rotation about one axis keeps the
+// others parallel to it, so parallel at q = 0 means parallel everywhere).
+Eigen::Vector3d planar_axis(const Model& model) {
+  Eigen::Matrix3d R = model.base.rotation();
+  Eigen::Vector3d first = Eigen::Vector3d::Zero();
+  for (int i = 0; i < model.dof; ++i) {
+    R = R * model.joints[i].origin_rotation;
+    const Eigen::Vector3d a = R * model.joints[i].axis;
+    if (i == 0) first = a;
+    if (first.cross(a).norm() > 1e-12) return Eigen::Vector3d::Zero();
+  }
+  return first;
+}
+
 }  // namespace
 
 void finalize(Model& model) {
@@ -168,6 +192,7 @@ void finalize(Model& model) {
   }
   require(!model.effects.friction || model.effects.contact, "friction needs contact");
   if (model.damping.size() == 0) model.damping = Eigen::VectorXd::Zero(n);
+  model.planar_axis = planar_axis(model);
 
   // Reflected motor constants (docs/model.md, Motors): Km = K k, Jm = Im k^2, Dm = dm k^2.
   model.km = model.armature = model.resistance = model.inductance = model.voltage_limit =

@@ -17,12 +17,14 @@ enum class IntegratorKind { euler, semi_implicit_euler, rk4 };
 enum class DynamicsMethod { walker_orin, crba, aba };
 enum class Stabilization { none, baumgarte, projection };
 enum class EventTiming { step, locate };
+enum class FrictionLaw { coulomb, tanh, saturated };
 
 const char* to_string(MotorModel m);
 const char* to_string(IntegratorKind k);
 const char* to_string(DynamicsMethod d);
 const char* to_string(Stabilization s);
 const char* to_string(EventTiming e);
+const char* to_string(FrictionLaw law);
 
 // Which physical effects the scene simulates (docs/model.md, Effects). An effect that is
 // off costs nothing: its terms are skipped, not multiplied by zero.
@@ -32,7 +34,7 @@ struct Effects {
   MotorModel motor = MotorModel::full;
   bool rotor_inertia = true;  // Jm added to M (only with a motor)
   bool contact = false;       // elbows on the table: Bullet detection, rows of M*
-  bool friction = false;      // sliding Coulomb friction at resting elbows (eq. 9)
+  bool friction = false;      // friction at resting contacts (contact.friction: law and mu)
   bool impacts = true;        // touchdown applies an impulse (restitution e)
   Stabilization stabilization = Stabilization::baumgarte;  // drift control of C(q) = 0
 };
@@ -52,10 +54,30 @@ struct TableBox {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();   // box frame -> world
 };
 
+// Friction at resting contacts (effects.friction); docs/model.md, Friction.
+//   coulomb    exact Coulomb friction: a contact sticks while its tangential
+//              force stays inside the cone |f_t| <= mu f_n, else slides with
+//              |f_t| = mu f_n against its slip; stick and slip are decided by a
+//              complementarity problem with the normal forces, and their
+//              changes are located like landings (contact/friction.hpp);
+//   tanh       f_t = -mu f_n tanh(|v_t| / tanh_velocity) v_t / |v_t|;
+//   saturated  f_t = -mu f_n v_t / max(|v_t|, slip_velocity).
+// The regularised laws never stick: a pressed contact creeps at a speed that
+// grows with the regularisation velocity.
+struct FrictionOptions {
+  FrictionLaw law = FrictionLaw::coulomb;
+  double mu = 0.0;               // [-] >= 0
+  // [m/s] coulomb: a contact point slower than this may stick (a slip that
+  // stops is located to locate_tolerance, leaving ~1e-8 m/s; faster slips slide on).
+  double stick_velocity = 1e-6;
+  double tanh_velocity = 1e-3;   // [m/s] tanh: the speed at which f_t reaches 76 % of mu f_n
+  double slip_velocity = 1e-4;   // [m/s] saturated: below it f_t falls linearly to 0
+};
+
 // Contact parameters and numerical tolerances (used when effects.contact).
 struct ContactOptions {
   double restitution = 0.0;   // e in [0, 1], normal impacts
-  double friction = 0.0;      // mu >= 0, sliding Coulomb (effects.friction)
+  FrictionOptions friction;   // used when effects.friction
   // locate: a landing is found where it happens, not up to speed x step deep at the
   // end of the step (2 mm at 2 m/s and 1 ms: beyond penetration_tolerance).
   EventTiming events = EventTiming::locate;
@@ -63,7 +85,6 @@ struct ContactOptions {
   double touch_distance = 1e-6;        // [m] signed distance that counts as touching
   double separation_velocity = 1e-6;   // [m/s] normal speed above which a contact separates
   double baumgarte_time = 0.01;        // [s] Baumgarte time constant T: alpha = 2/T, beta = 1/T^2
-  double slip_velocity = 1e-4;         // [m/s] friction regularisation speed
   double rank_tolerance = 1e-9;        // relative pivot threshold for dependent rows
   double link_warning_depth = 0.005;   // [m] a link capsule deeper than this in the table warns
   double initial_penetration = 1e-4;   // [m] an elbow deeper at t = 0 is a scenario error
@@ -198,6 +219,15 @@ struct Model {
   Eigen::VectorXd resistance;     // R [ohm]
   Eigen::VectorXd inductance;     // L [H]
   Eigen::VectorXd voltage_limit;  // [V]
+  // The common world direction of every joint axis when they are all parallel
+  // (a planar arm: every point moves in a plane normal to it, so a contact
+  // whose normal lies in that plane has one tangent direction); zero otherwise.
+  Eigen::Vector3d planar_axis = Eigen::Vector3d::Zero();
+
+  // Coulomb friction with stick and slip (effects.friction, law coulomb, mu > 0).
+  bool has_coulomb_friction() const {
+    return effects.friction && contact.friction.law == FrictionLaw::coulomb && contact.friction.mu > 0;
+  }
 
   bool has_motor() const { return effects.motor != MotorModel::none; }
   bool has_current_state() const { return effects.motor == MotorModel::full; }

@@ -13,6 +13,7 @@
 
 using elbowsim::ContactOptions;
 using elbowsim::EventTiming;
+using elbowsim::FrictionLaw;
 using elbowsim::load_scenario;
 using elbowsim::Model;
 using elbowsim::Scenario;
@@ -51,13 +52,14 @@ TEST_CASE("contact: defaults without the new sections") {
   CHECK(m.table.empty());
   const ContactOptions d;
   CHECK(m.contact.restitution == d.restitution);
-  CHECK(m.contact.friction == d.friction);
+  CHECK(m.contact.friction.law == FrictionLaw::coulomb);
+  CHECK(m.contact.friction.mu == d.friction.mu);
+  CHECK(m.contact.friction.stick_velocity == d.friction.stick_velocity);
   CHECK(m.contact.events == d.events);
   CHECK(m.contact.locate_tolerance == d.locate_tolerance);
   CHECK(m.contact.touch_distance == d.touch_distance);
   CHECK(m.contact.separation_velocity == d.separation_velocity);
   CHECK(m.contact.baumgarte_time == d.baumgarte_time);
-  CHECK(m.contact.slip_velocity == d.slip_velocity);
   CHECK(m.contact.rank_tolerance == d.rank_tolerance);
   CHECK(m.contact.link_warning_depth == d.link_warning_depth);
   CHECK(m.contact.initial_penetration == d.initial_penetration);
@@ -75,16 +77,19 @@ table:
     - {center: [0.9, 0.1, -0.5], size: [0.2, 0.3, 0.4], rpy: [0.1, 0.2, 0.3]}
 contact:
   restitution: 0.5
-  friction: 0.3
+  friction: {law: saturated, mu: 0.3, slip_velocity: 5e-4, stick_velocity: 2e-6, tanh_velocity: 3e-3}
   events: locate
   locate_tolerance: 1e-8
   touch_distance: 2e-6
   separation_velocity: 3e-6
   baumgarte_time: 0.02
-  slip_velocity: 5e-4
   rank_tolerance: 1e-6
   link_warning_depth: 0.01
   initial_penetration: 2e-4
+  penetration_tolerance: 2e-3
+  detection_margin: 0.02
+  max_rows: 7
+validity: {energy_residual: 1e-4, current_factor: 5, speed_factor: 4, rest_share: 0.8}
 )"));
   const Model& m = s.model;
   CHECK(m.effects.contact);
@@ -118,16 +123,26 @@ contact:
 
   // Options: every key given.
   CHECK(m.contact.restitution == doctest::Approx(0.5));
-  CHECK(m.contact.friction == doctest::Approx(0.3));
+  CHECK(m.contact.friction.law == FrictionLaw::saturated);
+  CHECK(m.contact.friction.mu == doctest::Approx(0.3));
+  CHECK(m.contact.friction.slip_velocity == doctest::Approx(5e-4));
+  CHECK(m.contact.friction.stick_velocity == doctest::Approx(2e-6));
+  CHECK(m.contact.friction.tanh_velocity == doctest::Approx(3e-3));
   CHECK(m.contact.events == EventTiming::locate);
   CHECK(m.contact.locate_tolerance == doctest::Approx(1e-8));
   CHECK(m.contact.touch_distance == doctest::Approx(2e-6));
   CHECK(m.contact.separation_velocity == doctest::Approx(3e-6));
   CHECK(m.contact.baumgarte_time == doctest::Approx(0.02));
-  CHECK(m.contact.slip_velocity == doctest::Approx(5e-4));
   CHECK(m.contact.rank_tolerance == doctest::Approx(1e-6));
   CHECK(m.contact.link_warning_depth == doctest::Approx(0.01));
   CHECK(m.contact.initial_penetration == doctest::Approx(2e-4));
+  CHECK(m.contact.penetration_tolerance == doctest::Approx(2e-3));
+  CHECK(m.contact.detection_margin == doctest::Approx(0.02));
+  CHECK(m.contact.max_rows == 7);
+  CHECK(m.validity.energy_residual == doctest::Approx(1e-4));
+  CHECK(m.validity.current_factor == doctest::Approx(5));
+  CHECK(m.validity.speed_factor == doctest::Approx(4));
+  CHECK(m.validity.rest_share == doctest::Approx(0.8));
 }
 
 TEST_CASE("contact: general robots give point; at may sit at either end of the link") {
@@ -285,11 +300,39 @@ TEST_CASE("contact error: contact options out of range") {
               "x.yaml:10:19:", "contact.rank_tolerance", "must be in (0, 1) (got 1)");
   for (const char* key :
        {"locate_tolerance", "touch_distance", "separation_velocity", "baumgarte_time",
-        "slip_velocity", "link_warning_depth", "initial_penetration"}) {
+        "link_warning_depth", "initial_penetration", "penetration_tolerance", "detection_margin"}) {
     CAPTURE(key);
     const std::string text = two_link_with("contact:\n") + "  " + key + ": 0\n";
     CHECK_ERROR(text, "x.yaml:10:", std::string("contact.") + key, "must be > 0 (got 0)");
   }
+}
+
+TEST_CASE("contact: friction as a number is Coulomb's law with that mu") {
+  const Model m = load(two_link_with("contact: {friction: 0.6}\n")).model;
+  CHECK(m.contact.friction.law == FrictionLaw::coulomb);
+  CHECK(m.contact.friction.mu == doctest::Approx(0.6));
+  const Model t = load(two_link_with("contact: {friction: {law: tanh, mu: 0.2}}\n")).model;
+  CHECK(t.contact.friction.law == FrictionLaw::tanh);
+  CHECK(t.contact.friction.mu == doctest::Approx(0.2));
+}
+
+TEST_CASE("contact error: friction") {
+  CHECK_ERROR(two_link_with("contact: {friction: {law: coulomb}}\n"), "x.yaml:9:21:",
+              "contact.friction.mu", "required key is missing");
+  CHECK_ERROR(two_link_with("contact: {friction: {law: viscous, mu: 0.3}}\n"), "x.yaml:9:27:",
+              "contact.friction.law", "must be one of coulomb, tanh, saturated");
+  CHECK_ERROR(two_link_with("contact: {friction: {mu: 0.3, stick_velocity: 0}}\n"), "x.yaml:9:",
+              "contact.friction.stick_velocity", "must be > 0 (got 0)");
+  CHECK_ERROR(two_link_with("contact: {friction: {mu: 0.3, slip_speed: 1}}\n"), "x.yaml:9:",
+              "contact.friction.slip_speed", "allowed here: law, mu, stick_velocity, tanh_velocity, slip_velocity");
+  CHECK_ERROR(two_link_with("contact: {slip_velocity: 1e-4}\n"), "x.yaml:9:",
+              "contact.slip_velocity", "moved to contact.friction.slip_velocity");
+  CHECK_ERROR(two_link_with("contact: {max_rows: 0}\n"), "x.yaml:9:", "contact.max_rows",
+              "must be an integer in 1 .. 100000 (got 0)");
+  CHECK_ERROR(two_link_with("validity: {rest_share: 1.5}\n"), "x.yaml:9:", "validity.rest_share",
+              "must be in [0, 1] (got 1.5)");
+  CHECK_ERROR(two_link_with("validity: {energy_residual: 0}\n"), "x.yaml:9:",
+              "validity.energy_residual", "must be > 0 (got 0)");
 }
 
 TEST_CASE("contact error: enumerations") {

@@ -12,7 +12,7 @@ void write_events_csv(std::ostream& out, const Model& model, const std::vector<C
   const ContactGeometry geometry = contact_geometry(model);
   char buffer[200];
   for (const ContactEvent& e : events) {
-    const char* kind = e.kind == ContactEvent::Kind::landing ? "landing" : "release";
+    const char* kind = to_string(e.kind);
     std::snprintf(buffer, sizeof buffer, "%.12g,%s,%s,%.12g,%.12g,%.12g\n", e.t,
                   slot_name(model, geometry, e.slot).c_str(), kind, e.speed, e.impulse,
                   e.energy_lost);

@@ -82,7 +82,10 @@ std::string contact_text(const Model& m) {
             ", radius " + number(e.radius) + " m";
   text += "; table of " + std::to_string(m.table.size()) + " box(es); restitution " +
           number(m.contact.restitution);
-  if (m.effects.friction) text += ", friction mu " + number(m.contact.friction);
+  if (m.effects.friction)
+    text += std::string(", ") + to_string(m.contact.friction.law) + " friction mu " + number(m.contact.friction.mu);
+  else
+    text += ", no friction";
   if (m.effects.stabilization == Stabilization::baumgarte)
     text += ", Baumgarte time " + number(m.contact.baumgarte_time) + " s";
   return text;
@@ -95,7 +98,11 @@ Rows model_rows(const Model& m) {
   std::string gravity = number(m.gravity.x());
   gravity += ", " + number(m.gravity.y()) + ", " + number(m.gravity.z());
   rows.push_back({"gravity", "(" + gravity + ") m/s^2"});
-  if (m.effects.contact) rows.push_back({"elbows and table", contact_text(m)});
+  if (m.effects.contact)
+    rows.push_back({"elbows and table", contact_text(m)});
+  else if (!m.table.empty())
+    rows.push_back({"table", "ignored: effects.contact is off, so links pass through it (an "
+                             "approximation; a run with a link inside a box is not valid)"});
   return rows;
 }
 

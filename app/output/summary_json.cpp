@@ -23,9 +23,15 @@ nlohmann::ordered_json model_json(const Model& m) {
 }
 
 nlohmann::ordered_json contact_json(const Model& m, const RunResult& r) {
-  long landings = 0, releases = 0;
-  for (const ContactEvent& e : r.events)
-    (e.kind == ContactEvent::Kind::landing ? landings : releases)++;
+  long landings = 0, releases = 0, sticks = 0, slips = 0;
+  for (const ContactEvent& e : r.events) {
+    switch (e.kind) {
+      case ContactEvent::Kind::landing: ++landings; break;
+      case ContactEvent::Kind::release: ++releases; break;
+      case ContactEvent::Kind::stick: ++sticks; break;
+      case ContactEvent::Kind::slip: ++slips; break;
+    }
+  }
   nlohmann::ordered_json j = {{"enabled", m.effects.contact},
                               {"collision_worlds_built", r.collision_worlds_built}};
   if (!m.effects.contact) return j;
@@ -34,6 +40,10 @@ nlohmann::ordered_json contact_json(const Model& m, const RunResult& r) {
   j["stabilization"] = to_string(m.effects.stabilization);
   j["landings"] = landings;
   j["releases"] = releases;
+  if (m.has_coulomb_friction()) {
+    j["sticks"] = sticks;
+    j["slips"] = slips;
+  }
   j["max_abs_C"] = r.contact.max_abs_C;
   j["max_abs_Jc_qd"] = r.contact.max_abs_Cd;
   j["dependent_steps"] = r.contact.dependent_steps;

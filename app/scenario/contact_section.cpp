@@ -121,16 +121,41 @@ std::vector<TableBox> read_table(const Value& table) {
   return out;
 }
 
+// contact.friction: a number (mu, Coulomb's law with stick and slip) or a map
+// {law, mu, stick_velocity, tanh_velocity, slip_velocity}.
+FrictionOptions read_friction(const Value& friction) {
+  FrictionOptions out;
+  if (!friction.present()) return out;
+  if (!friction.is_map()) {
+    out.mu = non_negative(friction);
+    return out;
+  }
+  friction.allow_keys({"law", "mu", "stick_velocity", "tanh_velocity", "slip_velocity"});
+  Value law = friction.get("law");
+  if (law.present())
+    out.law = choose(law, {FrictionLaw::coulomb, FrictionLaw::tanh, FrictionLaw::saturated});
+  out.mu = non_negative(friction.require("mu"));
+  out.stick_velocity = value_or(friction.get("stick_velocity"), out.stick_velocity, positive);
+  out.tanh_velocity = value_or(friction.get("tanh_velocity"), out.tanh_velocity, positive);
+  out.slip_velocity = value_or(friction.get("slip_velocity"), out.slip_velocity, positive);
+  return out;
+}
+
 ContactOptions read_contact(const Value& contact) {
   ContactOptions out;
   if (!contact.present()) return out;
+  Value moved = contact.get("slip_velocity");
+  if (moved.exists())
+    moved.fail("moved to contact.friction.slip_velocity (the saturated law's; give contact.friction "
+               "as a map: {law: saturated, mu: ..., slip_velocity: ...})");
   contact.allow_keys({"restitution", "friction", "events", "locate_tolerance", "touch_distance",
-                      "separation_velocity", "baumgarte_time", "slip_velocity", "rank_tolerance",
-                      "link_warning_depth", "initial_penetration"});
+                      "separation_velocity", "baumgarte_time", "rank_tolerance",
+                      "link_warning_depth", "initial_penetration", "penetration_tolerance",
+                      "detection_margin", "max_rows"});
   auto unit_interval = [](const Value& v) { return in_range(v, 0.0, 1.0, true); };
   auto open_unit_interval = [](const Value& v) { return in_range(v, 0.0, 1.0, false); };
   out.restitution = value_or(contact.get("restitution"), out.restitution, unit_interval);
-  out.friction = value_or(contact.get("friction"), out.friction, non_negative);
+  out.friction = read_friction(contact.get("friction"));
   Value events = contact.get("events");
   if (events.present()) out.events = choose(events, {EventTiming::step, EventTiming::locate});
   out.locate_tolerance = value_or(contact.get("locate_tolerance"), out.locate_tolerance, positive);
@@ -138,13 +163,21 @@ ContactOptions read_contact(const Value& contact) {
   out.separation_velocity =
       value_or(contact.get("separation_velocity"), out.separation_velocity, positive);
   out.baumgarte_time = value_or(contact.get("baumgarte_time"), out.baumgarte_time, positive);
-  out.slip_velocity = value_or(contact.get("slip_velocity"), out.slip_velocity, positive);
   out.rank_tolerance =
       value_or(contact.get("rank_tolerance"), out.rank_tolerance, open_unit_interval);
   out.link_warning_depth =
       value_or(contact.get("link_warning_depth"), out.link_warning_depth, positive);
   out.initial_penetration =
       value_or(contact.get("initial_penetration"), out.initial_penetration, positive);
+  out.penetration_tolerance =
+      value_or(contact.get("penetration_tolerance"), out.penetration_tolerance, positive);
+  out.detection_margin = value_or(contact.get("detection_margin"), out.detection_margin, positive);
+  Value max_rows = contact.get("max_rows");
+  if (max_rows.present()) {
+    const long rows = max_rows.integer();
+    if (rows < 1 || rows > 100000) max_rows.fail("must be an integer in 1 .. 100000 (got " + std::to_string(rows) + ")");
+    out.max_rows = static_cast<int>(rows);
+  }
   return out;
 }
 

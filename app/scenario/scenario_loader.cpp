@@ -83,7 +83,7 @@ void finalize_model(Model& model, const Source& source) {
 Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>& variants) {
   root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "elbows",
                    "table", "contact", "initial", "simulation", "inputs", "output", "render",
-                   "task", "controller", "hand_load", "variants"});
+                   "task", "controller", "hand_load", "variants", "validity"});
   Scenario s;
   s.file = source.file();
   Model& model = s.model;
@@ -97,6 +97,7 @@ Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>&
   model.elbows = read_elbows(root.get("elbows"), model, robot.get("planar").exists());
   model.table = read_table(root.get("table"));
   model.contact = read_contact(root.get("contact"));
+  model.validity = read_validity(root.get("validity"));
   check_contact_scene(root, model);
   model.options = read_simulation(root.require("simulation"), root.get("task"));
   model.initial = read_initial(root.get("initial"), model.dof);

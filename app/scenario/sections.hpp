@@ -39,6 +39,7 @@ RenderSettings read_render(const Value& render);                           // op
 std::vector<Elbow> read_elbows(const Value& elbows, const Model& model, bool planar);
 std::vector<TableBox> read_table(const Value& table);  // optional; boxes: one or more
 ContactOptions read_contact(const Value& contact);     // optional; defaults: ContactOptions
+ValidityOptions read_validity(const Value& validity);  // optional; defaults: ValidityOptions
 // effects.contact: true needs a non-empty elbows list and a table. Call after
 // model.effects and model.elbows are read.
 void check_contact_scene(const Value& root, const Model& model);

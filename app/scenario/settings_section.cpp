@@ -47,6 +47,22 @@ Effects read_effects(const Value& effects) {
   return out;
 }
 
+ValidityOptions read_validity(const Value& validity) {
+  ValidityOptions out;
+  if (!validity.present()) return out;
+  validity.allow_keys({"energy_residual", "current_factor", "speed_factor", "rest_share"});
+  out.energy_residual = value_or(validity.get("energy_residual"), out.energy_residual, positive);
+  out.current_factor = value_or(validity.get("current_factor"), out.current_factor, positive);
+  out.speed_factor = value_or(validity.get("speed_factor"), out.speed_factor, positive);
+  Value share = validity.get("rest_share");
+  if (share.present()) {
+    out.rest_share = share.number();
+    if (!(out.rest_share >= 0 && out.rest_share <= 1))
+      share.fail("must be in [0, 1] (got " + format_number(out.rest_share) + ")");
+  }
+  return out;
+}
+
 // Without simulation.duration a scene with a task runs to the task's end
 // plus 0.5 s to settle, so sweeps over task.duration compare like with like.
 double default_duration(const Value& simulation, const Value& task) {

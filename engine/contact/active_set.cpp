@@ -4,6 +4,7 @@
 #include "engine/contact/constraint_rows.hpp"
 #include "engine/contact/detection.hpp"
 #include "engine/contact/lcp.hpp"
+#include "engine/contact/stick_slip.hpp"
 #include "engine/control/controller.hpp"
 #include "engine/dynamics/crba.hpp"
 #include "engine/dynamics/kinematics.hpp"
@@ -70,7 +71,7 @@ void warn_dependent(const Model& model, Data& data) {
   Warning w;
   w.kind = Warning::Kind::dependent_rows;
   w.t = data.t;
-  w.count = static_cast<int>(c.candidates.size());
+  w.count = c.rows();
   w.rank = static_cast<int>(ws.rows_rank.rank());
   data.log.warnings.push_back(w);
   c.dependent_warned = true;
@@ -106,7 +107,9 @@ void fail(Data& data, Failure::Kind kind) {
 bool select_active_set(const Model& model, Data& data) {
   ContactData& c = data.contact;
   detect_contacts(model, data);
+  freeze_frames(data);
   touching_slots(model, data);
+  c.tangent_rows.clear();
   if (static_cast<int>(c.candidates.size()) > c.capacity()) {
     data.failure = Failure{Failure::Kind::too_many_contacts, data.t, data.step_count};
     data.failure.value = static_cast<double>(c.candidates.size());
@@ -116,8 +119,15 @@ bool select_active_set(const Model& model, Data& data) {
   c.active = c.candidates;
   if (c.candidates.empty()) return true;
 
-  const StateLayout s(model);
   prepare_mechanics(model, data);
+  if (model.has_coulomb_friction()) {
+    if (!decide_stick_slip(model, data)) return false;
+    if (c.dependent) warn_dependent(model, data);
+    apply_decision(model, data);
+    tangent_rows_from_modes(model, data);
+    return true;
+  }
+  const StateLayout s(model);
   constraint_rows(model, data, data.x.segment(s.qd(), s.n));
   contact_lcp_terms(model, data, data.actuation);
   if (model.effects.friction && (c.A.diagonal().array() <= 0).any()) {

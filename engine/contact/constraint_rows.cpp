@@ -1,54 +1,133 @@
 #include "engine/contact/constraint_rows.hpp"
 
+#include "engine/contact/friction.hpp"
 #include "engine/dynamics/kinematics.hpp"
 
 namespace elbowsim {
 
 namespace {
 
-// Friction part of row r: -mu t^T J_p at the contact point under the ball
-// (centre `local` on `link`, radius r).
-void friction_row(const Model& model, Data& data, int r, int link, const Eigen::Vector3d& local,
-                  double radius, const Eigen::Vector3d& n, ConstVec qd) {
+// Slot k's ball centre x (velocity v) against the feature of its frame: the
+// unit normal n from the feature to x, the distance rho of x from it, and the
+// curvature term dn/dt . v. A face's normal is fixed; on an edge's line or at
+// a corner point n turns as x moves across it.
+struct FeatureDistance {
+  Eigen::Vector3d n;
+  double rho = 0;
+  double curvature = 0;  // [m/s^2]
+};
+
+FeatureDistance feature_distance(const ContactData& c, int k, const Eigen::Vector3d& x,
+                                 const Eigen::Vector3d& v) {
+  FeatureDistance f;
+  Eigen::Vector3d d = x - c.surface[k], dv = v;
+  if (c.feature[k] == BoxFeature::edge) {
+    const Eigen::Vector3d& e = c.edge[k];
+    d -= e * e.dot(d);
+    dv -= e * e.dot(v);
+  }
+  const double rho = d.norm();
+  // A ball of radius 0 on an edge or a corner has no direction of its own: the
+  // frame's normal holds it (then a plane through the feature, like a face).
+  if (c.feature[k] == BoxFeature::face || rho < 1e-12) {
+    f.n = c.normal[k];
+    f.rho = f.n.dot(x - c.surface[k]);
+    return f;
+  }
+  f.n = d / rho;
+  f.rho = rho;
+  const double along = f.n.dot(dv);
+  f.curvature = (dv.squaredNorm() - along * along) / rho;
+  return f;
+}
+
+// t^T J for the 3 x n Jacobian in c.J3, into row r of Jc (column by column: a
+// dynamic row times J3 would evaluate into a heap temporary).
+void project_row(ContactData& c, int r, const Eigen::Vector3d& t) {
+  for (Eigen::Index j = 0; j < c.J3.cols(); ++j) c.Jc(r, j) = t.dot(c.J3.col(j));
+}
+
+// Sliding friction on normal row r of slot k (normal n): Jf -= mu s^T J_p,
+// with s the slip direction scaled by the law.
+void sliding_friction(const Model& model, Data& data, int r, int k, const Eigen::Vector3d& n, ConstVec qd) {
   ContactData& c = data.contact;
-  const Eigen::Vector3d centre = point_position(data, link, local);
-  const Eigen::Vector3d contact_world = centre - radius * n;
-  const Eigen::Vector3d contact_local =
-      data.rotation[link].transpose() * (contact_world - data.origin[link]);
-  point_jacobian(model, data, link, contact_local, c.J3);
+  const FrictionOptions& friction = model.contact.friction;
+  const int link = c.primitive_of(k).link;
+  point_jacobian(model, data, link, contact_point_local(data, k, n), c.J3);
   const Eigen::Vector3d v = c.J3 * qd;
   const Eigen::Vector3d v_t = v - n * n.dot(v);
   const double speed = v_t.norm();
   c.slide[r] = speed;
-  const Eigen::Vector3d t = v_t / std::max(speed, model.contact.slip_velocity);
-  // Column by column: a dynamic row times J3 would evaluate into a heap temporary.
-  for (Eigen::Index j = 0; j < c.J3.cols(); ++j)
-    c.Jf(r, j) -= model.contact.friction * t.dot(c.J3.col(j));
+  Eigen::Vector3d s = speed > 0 ? Eigen::Vector3d(v_t / speed) : Eigen::Vector3d::Zero();
+  if (friction.law == FrictionLaw::coulomb) {
+    // Against the slip, in the direction the slip was given when it began (a
+    // planar arm's single tangent, with the slip's sign), or as it is once it
+    // is faster than stick_velocity.
+    Eigen::Vector3d t1, t2;
+    if (tangent_basis(model, n, t1, t2) == 1)
+      s = c.slip[k].dot(t1) >= 0 ? t1 : Eigen::Vector3d(-t1);
+    else if (speed <= friction.stick_velocity)
+      s = c.slip[k];
+  }
+  s *= friction.mu * friction_scale(friction, speed);
+  c.row_friction.col(r) = -s;
+  for (Eigen::Index j = 0; j < c.J3.cols(); ++j) c.Jf(r, j) -= s.dot(c.J3.col(j));
+}
+
+void normal_row(const Model& model, Data& data, int r, ConstVec qd) {
+  ContactData& c = data.contact;
+  const double T = model.contact.baumgarte_time;
+  const int k = c.active[r];
+  const Primitive& ball = c.primitive_of(k);
+  const Eigen::Vector3d& local = c.detected[k].local;
+  point_jacobian(model, data, ball.link, local, c.J3);
+  const Eigen::Vector3d centre = point_position(data, ball.link, local);
+  const FeatureDistance f = feature_distance(c, k, centre, c.J3 * qd);
+  c.row_normal.col(r) = f.n;
+  project_row(c, r, f.n);
+  c.C[r] = f.rho - ball.radius;
+  c.Cd[r] = c.Jc.row(r).dot(qd);
+  c.gamma[r] = -f.n.dot(point_jacobian_dot_qd(data, ball.link, local, qd)) - f.curvature;
+  if (model.effects.stabilization == Stabilization::baumgarte)
+    c.gamma[r] -= 2.0 / T * c.Cd[r] + c.C[r] / (T * T);
+  c.Jf.row(r) = c.Jc.row(r);
+  c.slide[r] = 0;
+  c.row_friction.col(r).setZero();
+  const bool slides = model.effects.friction && model.contact.friction.mu > 0 &&
+                      (model.contact.friction.law != FrictionLaw::coulomb || !c.sticking[k]);
+  if (slides) sliding_friction(model, data, r, k, f.n, qd);
+}
+
+// Tangent row r of a sticking slot: its contact point must not slip.
+void tangent_row(const Model& model, Data& data, int r, ConstVec qd) {
+  ContactData& c = data.contact;
+  const TangentRow& row = c.tangent_rows[static_cast<std::size_t>(r - c.normal_rows())];
+  const Eigen::Vector3d n = c.row_normal.col(row.normal_row);
+  Eigen::Vector3d t[2];
+  tangent_basis(model, n, t[0], t[1]);
+  const Eigen::Vector3d& tangent = t[row.axis];
+  const int link = c.primitive_of(row.slot).link;
+  const Eigen::Vector3d point = contact_point_local(data, row.slot, n);
+  point_jacobian(model, data, link, point, c.J3);
+  project_row(c, r, tangent);
+  c.C[r] = 0;
+  c.Cd[r] = c.Jc.row(r).dot(qd);
+  c.gamma[r] = -tangent.dot(point_jacobian_dot_qd(data, link, point, qd));
+  if (model.effects.stabilization == Stabilization::baumgarte)
+    c.gamma[r] -= c.Cd[r] / model.contact.baumgarte_time;
+  c.Jf.row(r) = c.Jc.row(r);
+  c.slide[r] = 0;
 }
 
 }  // namespace
 
 void constraint_rows(const Model& model, Data& data, ConstVec qd) {
   ContactData& c = data.contact;
-  const int p = static_cast<int>(c.active.size());
+  const int pn = c.normal_rows();
+  const int p = pn + static_cast<int>(c.tangent_rows.size());
   c.use_rows(p);  // p changes only between steps
-  const double T = model.contact.baumgarte_time;
-  for (int r = 0; r < p; ++r) {
-    const int k = c.active[r];
-    const Primitive& ball = c.primitive_of(k);
-    const Eigen::Vector3d& local = c.detected[k].local;
-    const Eigen::Vector3d& n = c.normal[k];
-    point_jacobian(model, data, ball.link, local, c.J3);
-    for (Eigen::Index j = 0; j < c.J3.cols(); ++j) c.Jc(r, j) = n.dot(c.J3.col(j));
-    const Eigen::Vector3d centre = point_position(data, ball.link, local);
-    c.C[r] = n.dot(centre - c.surface[k]) - ball.radius;
-    c.Cd[r] = c.Jc.row(r).dot(qd);
-    c.gamma[r] = -n.dot(point_jacobian_dot_qd(data, ball.link, local, qd));
-    if (model.effects.stabilization == Stabilization::baumgarte)
-      c.gamma[r] -= 2.0 / T * c.Cd[r] + c.C[r] / (T * T);
-    c.Jf.row(r) = c.Jc.row(r);
-    if (model.effects.friction) friction_row(model, data, r, ball.link, local, ball.radius, n, qd);
-  }
+  for (int r = 0; r < pn; ++r) normal_row(model, data, r, qd);
+  for (int r = pn; r < p; ++r) tangent_row(model, data, r, qd);
 }
 
 }  // namespace elbowsim

@@ -11,8 +11,8 @@ ContactRows::ContactRows(int p, int n)
 
 void ContactRows::swap(ContactRows& o) {
   Jc.swap(o.Jc), Jf.swap(o.Jf), gamma.swap(o.gamma), C.swap(o.C), Cd.swap(o.Cd);
-  fn.swap(o.fn), slide.swap(o.slide), Jf_qd.swap(o.Jf_qd), Y.swap(o.Y), Z.swap(o.Z);
-  A.swap(o.A), rhs.swap(o.rhs), lcp_b.swap(o.lcp_b), lcp_f.swap(o.lcp_f), lcp_w.swap(o.lcp_w);
+  fn.swap(o.fn), slide.swap(o.slide), Jf_qd.swap(o.Jf_qd);
+  Y.swap(o.Y), Z.swap(o.Z), A.swap(o.A), rhs.swap(o.rhs), lcp_b.swap(o.lcp_b), lcp_f.swap(o.lcp_f), lcp_w.swap(o.lcp_w);
 }
 
 SolverWorkspace::SolverWorkspace(int m, int n)
@@ -22,8 +22,9 @@ SolverWorkspace::SolverWorkspace(int m, int n)
       dx(Eigen::VectorXd::Zero(n)), A(block), b(rhs), impulse(rhs), speed_before(rhs), speed_after(rhs),
       energy_lost(rhs), w(rhs) {}
 
-ContactData::ContactData(ContactGeometry g, int links, int boxes, int n, int capacity)
-    : geometry(std::move(g)), lemke(capacity) {
+ContactData::ContactData(ContactGeometry g, int links, int boxes, int n, int capacity,
+                         int cone_capacity)
+    : geometry(std::move(g)), cones(cone_capacity), lemke(capacity) {
   const auto slots = geometry.slots.size();
   const auto cap = static_cast<std::size_t>(capacity);
   resting.assign(slots, 0);
@@ -37,10 +38,21 @@ ContactData::ContactData(ContactGeometry g, int links, int boxes, int n, int cap
   }
   normal.assign(slots, Eigen::Vector3d::UnitZ());
   surface.assign(slots, Eigen::Vector3d::Zero());
+  feature.assign(slots, BoxFeature::face);
+  edge.assign(slots, Eigen::Vector3d::Zero());
+  sticking.assign(slots, 0);
+  slip.assign(slots, Eigen::Vector3d::Zero());
+  slip_stopped.assign(slots, 0);
+  may_stick.assign(slots, 0);
+  was_sticking.assign(slots, 0);
+  tangent_rows.reserve(cap);
+  cone_slip = Eigen::VectorXd::Zero(cone_capacity);
   near_pairs.reserve(geometry.primitives.size() * static_cast<std::size_t>(boxes));
   a_free = Eigen::VectorXd::Zero(n);
   J3 = Matrix3Xd::Zero(3, n);
+  row_normal = row_friction = Matrix3Xd::Zero(3, capacity);
   for (auto* list : {&candidates, &landing, &impact_rows}) list->reserve(slots);
+  events_found.reserve(slots);
   lcp_index.reserve(cap);
   lcp_active.reserve(slots);
   solvers.reserve(cap + 1);  // built in place: copying a factorisation reads its unset status
@@ -54,7 +66,8 @@ ContactData::ContactData(ContactGeometry g, int links, int boxes, int n, int cap
 
 void ContactData::swap_rows(ContactRows& set) {
   Jc.swap(set.Jc), Jf.swap(set.Jf), gamma.swap(set.gamma), C.swap(set.C), Cd.swap(set.Cd);
-  fn.swap(set.fn), slide.swap(set.slide), Jf_qd.swap(set.Jf_qd), Y.swap(set.Y), Z.swap(set.Z);
+  fn.swap(set.fn), slide.swap(set.slide), Jf_qd.swap(set.Jf_qd);
+  Y.swap(set.Y), Z.swap(set.Z);
   A.swap(set.A), rhs.swap(set.rhs), lcp_b.swap(set.lcp_b), lcp_f.swap(set.lcp_f);
   lcp_w.swap(set.lcp_w);
 }

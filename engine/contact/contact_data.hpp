@@ -11,8 +11,11 @@
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <memory>
+#include <utility>
 #include <vector>
 
+#include "engine/contact/friction_lcp.hpp"
+#include "engine/contact/geometry.hpp"
 #include "engine/contact/lemke.hpp"
 #include "engine/contact/primitives.hpp"
 #include "engine/eigen_types.hpp"
@@ -28,17 +31,27 @@ struct SlotContact {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, world, from the box toward the ball
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    // [m] world, the closest point of the box surface
   Eigen::Vector3d local = Eigen::Vector3d::Zero();    // [m] the ball's centre in its link's frame
-  int feature = 0;         // BoxFeature (geometry.hpp)
+  BoxFeature feature = BoxFeature::face;
+  Eigen::Vector3d edge = Eigen::Vector3d::Zero();     // unit, world, along an edge (feature edge)
 };
 
-// The rows of M* for p resting elbows (constraint_rows.hpp) and the Schur
-// solve's p-sized scratch (constrained_dynamics.hpp).
+// A sticking slot's tangent row (friction law coulomb): rows p_n .. p - 1 of
+// the contact system follow the p_n normal rows.
+struct TangentRow {
+  int slot = -1;
+  int normal_row = -1;  // the slot's normal row
+  int axis = 0;         // 0: t1, 1: t2 (friction.hpp, tangent_basis)
+};
+
+// The rows of M* for p rows (constraint_rows.hpp): p_n normal rows, then the
+// tangent rows of sticking slots; and the Schur solve's p-sized scratch
+// (constrained_dynamics.hpp).
 struct ContactRows {
-  Eigen::MatrixXd Jc;      // [p x n] rows j_ck = n_k^T J_k (eq. 8)
-  Eigen::MatrixXd Jf;      // [p x n] Jc - mu Jt: where the normal force acts, with friction (eq. 9)
+  Eigen::MatrixXd Jc;      // [p x n] rows j_ck = n_k^T J_k (eq. 8); a tangent row t^T J_p
+  Eigen::MatrixXd Jf;      // [p x n] Jc - mu s^T J_p: where the row's force acts, with sliding friction (eq. 9)
   Eigen::VectorXd gamma;   // [p] -n^T Jdot qd (eq. 15, 31), plus Baumgarte terms
-  Eigen::VectorXd C, Cd;   // [p] constraint value [m] and rate [m/s]
-  Eigen::VectorXd fn;      // [p] normal forces [N], > 0 when the table pushes
+  Eigen::VectorXd C, Cd;   // [p] constraint value [m] and rate [m/s] (a tangent row: 0 and its slip)
+  Eigen::VectorXd fn;      // [p] row forces [N]: normal ones > 0 when the table pushes; tangent ones
   Eigen::VectorXd slide;   // [p] sliding speed of each contact point [m/s]
   Eigen::VectorXd Jf_qd;   // [p] scratch: Jf qd (friction power)
   Eigen::MatrixXd Y, Z;    // [n x p] scratch: L^-1 Jc^T, L^-1 Jf^T
@@ -74,24 +87,42 @@ struct SolverWorkspace {
 struct ContactData {
   ContactData() = default;
   // Slots from `geometry` (primitives.hpp), rows for up to `capacity` of them.
-  ContactData(ContactGeometry geometry, int links, int boxes, int n, int capacity);
+  // `cone_capacity`: LCP variables of the stick-slip problem (0 without
+  // Coulomb friction).
+  ContactData(ContactGeometry geometry, int links, int boxes, int n, int capacity,
+              int cone_capacity = 0);
 
   ContactGeometry geometry;               // primitives and slots (fixed for the run)
   // --- which slots rest -----------------------------------------------------
   std::vector<char> resting;              // [slots] row of M* on
-  std::vector<int> active;                // [p] slot index of each row (capacity: `capacity`)
+  std::vector<int> active;                // [p_n] slot index of each normal row (capacity: `capacity`)
+  std::vector<TangentRow> tangent_rows;   // [p - p_n] tangent rows of sticking slots (coulomb)
   // --- detection (contact/detection.hpp), at the last detected state -------
   std::vector<SlotContact> detected;      // [slots]
-  std::vector<Eigen::Vector3d> normal;    // [slots] table normal at the slot (world, unit)
-  std::vector<Eigen::Vector3d> surface;   // [slots] the point of the table surface there [m]
   std::vector<int> near_pairs;            // primitive * boxes + box, near at the last detection
-  // --- rows of M* for the p active slots (flat: the ContactRows of size p) --
+  // --- the step's frames: the feature each touching slot rests on, frozen
+  // when the step starts (freeze_frames, detection.hpp); its rows follow the
+  // ball on that feature (a face's plane, an edge's line, a corner's point).
+  std::vector<Eigen::Vector3d> normal;    // [slots] table normal at the slot (world, unit)
+  std::vector<Eigen::Vector3d> surface;   // [slots] a point of the feature [m]
+  std::vector<BoxFeature> feature;        // [slots]
+  std::vector<Eigen::Vector3d> edge;      // [slots] unit edge direction (feature edge)
+  // --- Coulomb friction (law coulomb): each resting slot sticks or slips ----
+  std::vector<char> sticking;             // [slots] 1: tangent rows hold its contact point
+  std::vector<Eigen::Vector3d> slip;      // [slots] unit world direction a sliding slot slips in
+  std::vector<char> slip_stopped;         // [slots] 1: its slip's stop was located (it may stick)
+  std::vector<char> may_stick, was_sticking;  // [slots] scratch of the mode decision (stick_slip.hpp)
+  FrictionLcpScratch cones;               // the stick-slip LCP (friction_lcp.hpp)
+  Eigen::VectorXd cone_slip;              // [cone capacity] its slips sigma
+  // --- rows of M* for the p rows (flat: the ContactRows of size p) ---------
   Eigen::MatrixXd Jc, Jf;
   Eigen::VectorXd gamma, C, Cd, fn, slide, Jf_qd;
   Eigen::MatrixXd Y, Z, A;
   Eigen::VectorXd rhs, lcp_b, lcp_f, lcp_w;
   Eigen::VectorXd a_free;        // [n] scratch: L^-1 (tau - B_J)
   Matrix3Xd J3;                  // [3 x n] scratch point Jacobian
+  Matrix3Xd row_normal;          // [3 x capacity] each normal row's normal at the last constraint_rows
+  Matrix3Xd row_friction;        // [3 x capacity] its sliding friction force per newton of fn (world)
   bool dependent = false;        // last solve met dependent rows
   // --- run totals -----------------------------------------------------------
   double impact_loss = 0;        // [J] kinetic energy lost in impacts so far
@@ -102,6 +133,7 @@ struct ContactData {
   bool dependent_warned = false; // the dependent-rows warning was given
   // --- scratch of the stages (capacities reserved) ---------------------------
   std::vector<int> candidates, landing, impact_rows;  // slot indices
+  std::vector<std::pair<int, int>> events_found;      // slot and event at a step's end (events.cpp)
   std::vector<bool> lcp_active;                       // [<= capacity]
   std::vector<int> lcp_index;                         // [<= capacity]
   std::vector<SolverWorkspace> solvers;               // [capacity + 1], index m
@@ -109,9 +141,10 @@ struct ContactData {
   // The collision world (Bullet), built by reset() for a contact scene.
   std::shared_ptr<CollisionWorld> world;
 
-  // Puts the rows for p slots into the flat members (no allocation).
+  // Puts the rows for p rows into the flat members (no allocation).
   void use_rows(int p);
   int rows() const { return rows_in_use_; }
+  int normal_rows() const { return static_cast<int>(active.size()); }
   int capacity() const { return static_cast<int>(solvers.size()) - 1; }  // most rows at once
   SolverWorkspace& solver(int m) { return solvers[static_cast<std::size_t>(m)]; }
   int slots() const { return static_cast<int>(geometry.slots.size()); }

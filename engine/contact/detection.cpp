@@ -44,16 +44,9 @@ SlotContact measure(const Model& model, const Data& data, const ContactSlot& slo
   s.distance = c.distance;
   s.normal = c.normal;
   s.point = c.point;
-  s.feature = static_cast<int>(c.feature);
+  s.feature = c.feature == BoxFeature::inside ? BoxFeature::face : c.feature;
+  s.edge = c.edge;
   return s;
-}
-
-// The normal and surface point the rows hold for the step.
-void copy_frame(ContactData& c, int pair) {
-  for (int k = c.geometry.first_slot[pair]; k < c.geometry.first_slot[pair + 1]; ++k) {
-    c.normal[k] = c.detected[k].normal;
-    c.surface[k] = c.detected[k].point;
-  }
 }
 
 void measure_pair(const Model& model, Data& data, int pair) {
@@ -81,9 +74,49 @@ void detect_contacts(const Model& model, Data& data) {
   for (int pair = 0; pair < elbow_pairs; ++pair) measure_pair(model, data, pair);
   for (int pair : c.near_pairs)
     if (pair >= elbow_pairs) measure_pair(model, data, pair);
-  for (int pair = 0; pair < elbow_pairs; ++pair) copy_frame(c, pair);
-  for (int pair : c.near_pairs)
-    if (pair >= elbow_pairs) copy_frame(c, pair);
+}
+
+void freeze_frames(Data& data) {
+  ContactData& c = data.contact;
+  for (int k = 0; k < c.slots(); ++k) {
+    const SlotContact& d = c.detected[k];
+    if (!d.near) continue;
+    c.normal[k] = d.normal;
+    c.surface[k] = d.point;
+    c.feature[k] = d.feature;
+    c.edge[k] = d.edge;
+  }
+}
+
+double feature_margin(const Model& model, const Data& data, int slot) {
+  const ContactData& c = data.contact;
+  const ContactSlot& s = c.slot(slot);
+  const TableBox& box = model.table[static_cast<std::size_t>(s.box)];
+  const Eigen::Vector3d h = 0.5 * box.size;
+  const Eigen::Vector3d x = box.rotation.transpose() * (slot_centre(data, slot) - box.center);
+  const Eigen::Vector3d on = box.rotation.transpose() * (c.surface[slot] - box.center);
+  // The box axes the feature is clamped to (a face: its normal's; an edge: all but its own).
+  bool clamped[3] = {true, true, true};
+  Eigen::Index axis = 0;
+  if (c.feature[slot] == BoxFeature::face) {
+    (box.rotation.transpose() * c.normal[slot]).cwiseAbs().maxCoeff(&axis);
+    clamped[0] = clamped[1] = clamped[2] = false;
+    clamped[axis] = true;
+  } else if (c.feature[slot] == BoxFeature::edge) {
+    (box.rotation.transpose() * c.edge[slot]).cwiseAbs().maxCoeff(&axis);
+    clamped[axis] = false;
+  }
+  // A ball of radius 0 sits on its feature's boundary by construction: only its
+  // free axes can tell a change.
+  const bool ball = c.primitive_of(slot).radius > 0 && c.feature[slot] != BoxFeature::face;
+  double margin = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    if (!clamped[i])
+      margin = std::min(margin, h[i] - std::abs(x[i]));
+    else if (ball)
+      margin = std::min(margin, (on[i] >= 0 ? x[i] : -x[i]) - h[i]);
+  }
+  return margin;
 }
 
 double primitive_distance(const Model& model, const Data& data, const Primitive& p,
@@ -106,7 +139,7 @@ double normal_speed(const Model& model, const Data& data, int slot) {
   const Primitive& p = data.contact.primitive_of(slot);
   const Eigen::Vector3d v = point_velocity(data, p.link, data.contact.detected[slot].local,
                                            data.x.segment(s.qd(), s.n));
-  return data.contact.normal[slot].dot(v);
+  return data.contact.detected[slot].normal.dot(v);
 }
 
 }  // namespace elbowsim

@@ -15,6 +15,19 @@ namespace elbowsim {
 // (data.contact.world, built by reset()). Allocates nothing.
 void detect_contacts(const Model& model, Data& data);
 
+// The frames of the step (data.contact.normal, surface, feature, edge) from
+// the last detection, for every slot measured: what the rows of the step
+// hold. Called when a step starts (select_active_set), not inside it, so the
+// rows stay those of the step while events are located.
+void freeze_frames(Data& data);
+
+// How far [m] slot k's ball centre is from leaving the feature of its frame
+// (>= 0 while it stays): a face's ball centre must stay over the face, an
+// edge's between the edge's ends and, for a ball of radius > 0, beside both
+// faces (not over one); likewise a corner's. An event function: the step is
+// cut where it turns negative (events.hpp). Needs forward_kinematics.
+double feature_margin(const Model& model, const Data& data, int slot);
+
 // Normal velocity [m/s] of slot k's ball centre at the rates of data.x, along
 // the table normal last detected (< 0 approaching). Needs forward_kinematics.
 double normal_speed(const Model& model, const Data& data, int slot);

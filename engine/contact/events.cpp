@@ -1,6 +1,7 @@
 #include "engine/contact/events.hpp"
 
 #include "engine/contact/detection.hpp"
+#include "engine/contact/stick_slip.hpp"
 #include "engine/run/derivative.hpp"
 #include "engine/run/integrator.hpp"
 
@@ -9,18 +10,75 @@ namespace elbowsim {
 namespace {
 
 constexpr double kReleaseForce = 1e-9;  // [N] a resting slot pulled harder than this releases
+constexpr double kConeForce = 1e-9;     // [N] a sticking slot's force this far outside its cone slips
 
-// Landing: the slot's signed distance; release: its normal force (both
-// change sign at the event).
-double event_value(const Model& model, Data& data, int slot, bool landing) {
-  if (landing) {
-    detect_contacts(model, data);
-    return data.contact.detected[slot].distance;
+enum class Event {
+  landing,     // a free slot's distance turns negative
+  release,     // a resting slot's normal force turns negative
+  slip_start,  // a sticking slot's force leaves its cone: mu f_n - |f_t| < 0
+  slip_stop,   // a sliding slot's speed along its slip turns negative
+  feature,     // a resting slot's ball leaves the face, edge or corner of its frame
+};
+
+double normal_force(const ContactData& c, int slot) {
+  for (std::size_t r = 0; r < c.active.size(); ++r)
+    if (c.active[r] == slot) return c.fn[static_cast<Eigen::Index>(r)];
+  return 0.0;
+}
+
+// The event function (its sign changes at the event) at the state in data.x.
+double event_value(const Model& model, Data& data, int slot, Event event) {
+  switch (event) {
+    case Event::landing:
+      detect_contacts(model, data);
+      return data.contact.detected[slot].distance;
+    case Event::feature:
+      detect_contacts(model, data);  // forward kinematics
+      return feature_margin(model, data, slot);
+    default: break;
   }
   nonstiff_rates(model, data, data.t, data.x, data.k1);
-  for (std::size_t r = 0; r < data.contact.active.size(); ++r)
-    if (data.contact.active[r] == slot) return data.contact.fn[r];
-  return 0.0;
+  if (event == Event::slip_start) return cone_margin(model, data, slot);
+  if (event == Event::slip_stop) return slip_speed(model, data, slot);
+  return normal_force(data.contact, slot);
+}
+
+// The event a slot meets at the end of the step, if any (at most one per
+// slot, in this order: a slot that lands has no rows; one that releases needs
+// no friction; a change of feature is tested last).
+bool happens(const Model& model, const Data& data, int k, Event& event) {
+  const ContactData& c = data.contact;
+  if (!c.resting[k]) {
+    event = Event::landing;
+    return c.detected[k].distance < 0 && normal_speed(model, data, k) < 0;
+  }
+  // A force that is zero to rounding (a row that carries nothing) is no release:
+  // locating it would shorten every step to the locate tolerance.
+  event = Event::release;
+  if (normal_force(c, k) < -kReleaseForce) return true;
+  if (model.has_coulomb_friction()) {
+    event = c.sticking[k] ? Event::slip_start : Event::slip_stop;
+    if (c.sticking[k] ? cone_margin(model, data, k) < -kConeForce : slip_speed(model, data, k) < 0)
+      return true;
+  }
+  event = Event::feature;
+  return feature_margin(model, data, k) < 0;
+}
+
+// Every event at the end of the step, into data.contact.events_found (slot
+// and event), from one evaluation of the rates there.
+void find_events(const Model& model, Data& data) {
+  ContactData& c = data.contact;
+  c.events_found.clear();
+  bool rates = false;
+  for (int k = 0; k < c.slots(); ++k) {
+    if (c.resting[k] && !rates) {
+      nonstiff_rates(model, data, data.t, data.x, data.k1);  // forces and rows at the end
+      rates = true;
+    }
+    Event event;
+    if (happens(model, data, k, event)) c.events_found.push_back({k, static_cast<int>(event)});
+  }
 }
 
 // Redoes the step from its start over tau <= h; the redone step replaces the
@@ -35,16 +93,16 @@ void redo_step(const Model& model, Data& data, double t0, double tau) {
 // Illinois (modified regula falsi) on the event function over the step, each
 // evaluation integrating from the step start; returns a time just past the
 // event, within model.contact.locate_tolerance.
-double locate(const Model& model, Data& data, double t0, double h, int slot, bool landing) {
+double locate(const Model& model, Data& data, double t0, double h, int slot, Event event) {
   auto value_at = [&](double tau) {
     redo_step(model, data, t0, tau);
-    return event_value(model, data, slot, landing);
+    return event_value(model, data, slot, event);
   };
-  double lo = 0, hi = h, g_hi = event_value(model, data, slot, landing);
+  double lo = 0, hi = h, g_hi = event_value(model, data, slot, event);
   const double t_end = data.t;
   data.x.swap(data.x_start);
   data.t = t0;
-  double g_lo = event_value(model, data, slot, landing);
+  double g_lo = event_value(model, data, slot, event);
   data.x.swap(data.x_start);
   data.t = t_end;
   int side = 0;
@@ -66,6 +124,25 @@ double locate(const Model& model, Data& data, double t0, double h, int slot, boo
   return hi;
 }
 
+// What an event changes at its time (a landing is the impact stage's; a
+// stopped slip or a new feature is the next step's start).
+void apply_event(const Model& model, Data& data, int slot, Event event) {
+  ContactData& c = data.contact;
+  if (event == Event::release) {
+    c.resting[slot] = false;
+    data.log.events.push_back({data.t, slot, ContactEvent::Kind::release, 0, 0, 0});
+  } else if (event == Event::slip_start) {
+    // Against the force that left the cone.
+    nonstiff_rates(model, data, data.t, data.x, data.k1);
+    const Eigen::Vector3d f = friction_force(model, data, slot);
+    c.sticking[slot] = 0;
+    if (f.norm() > 0) c.slip[slot] = -f.normalized();
+    data.log.events.push_back({data.t, slot, ContactEvent::Kind::slip, 0, 0, 0});
+  } else if (event == Event::slip_stop) {
+    c.slip_stopped[slot] = 1;
+  }
+}
+
 }  // namespace
 
 void locate_first_event(const Model& model, Data& data, double t0) {
@@ -73,28 +150,21 @@ void locate_first_event(const Model& model, Data& data, double t0) {
   const double h = data.t - t0;
   detect_contacts(model, data);
   if (model.contact.events != EventTiming::locate) return;
+  find_events(model, data);
   int first = -1;
-  bool first_is_landing = true;
+  Event first_event = Event::landing;
   double first_time = h;
-  for (int k = 0; k < c.slots(); ++k) {
-    const bool landing = !c.resting[k] && c.detected[k].distance < 0 && normal_speed(model, data, k) < 0;
-    // A force that is zero to rounding (a row that carries nothing) is no release:
-    // locating it would shorten every step to the locate tolerance.
-    const bool releasing =
-        c.resting[k] && !landing && event_value(model, data, k, false) < -kReleaseForce;
-    if (!landing && !releasing) continue;
-    const double tau = locate(model, data, t0, h, k, landing);
-    if (tau < first_time || first < 0) first = k, first_time = tau, first_is_landing = landing;
-    // Back to the whole step, for the next slot's test.
-    redo_step(model, data, t0, h);
-    detect_contacts(model, data);
+  for (std::size_t i = 0; i < c.events_found.size(); ++i) {
+    if (i > 0) redo_step(model, data, t0, h);  // back to the whole step
+    const auto [k, kind] = c.events_found[i];
+    const Event event = static_cast<Event>(kind);
+    const double tau = locate(model, data, t0, h, k, event);
+    if (tau < first_time || first < 0) first = k, first_time = tau, first_event = event;
   }
   if (first < 0) return;
   redo_step(model, data, t0, first_time);
+  apply_event(model, data, first, first_event);
   detect_contacts(model, data);
-  if (first_is_landing) return;
-  c.resting[first] = false;
-  data.log.events.push_back({data.t, first, ContactEvent::Kind::release, 0, 0, 0});
 }
 
 }  // namespace elbowsim

@@ -50,6 +50,9 @@ BoxContact sphere_box(const Eigen::Vector3d& centre, double radius, const TableB
     normal = d / length;
     c.distance = length - radius;
     c.feature = clamped == 2 ? BoxFeature::edge : BoxFeature::corner;
+    if (clamped == 2)
+      for (int i = 0; i < 3; ++i)
+        if (x[i] == q[i]) c.edge = box.rotation.col(i);
   }
   c.normal = box.rotation * normal;
   c.point = box.center + box.rotation * surface;

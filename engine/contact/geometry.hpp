@@ -23,6 +23,7 @@ struct BoxContact {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    // [m] world, the closest point of the box surface
   BoxFeature feature = BoxFeature::face;  // where `point` lies (inside: the centre is in the box)
   int face_axis = -1;      // the box axis 0..2 of a face (or of the nearest face, inside); -1 otherwise
+  Eigen::Vector3d edge = Eigen::Vector3d::Zero();  // unit, world, along an edge; zero otherwise
 };
 
 // A sphere of `radius` centred at `centre` (world) against `box`. Inside the

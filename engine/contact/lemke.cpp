@@ -48,12 +48,16 @@ struct Tableau {
         continue;
       }
       const double ab = s.column[best];
-      const double diff = s.x[i] / a - s.x[best] / ab;
-      if (diff < 0) {
+      const double ri = s.x[i] / a, rb = s.x[best] / ab;
+      // Ratios equal up to rounding tie (degenerate problems, e.g. the zero q
+      // of friction cones, give many): exact comparison would break the tie
+      // by rounding, and Lemke's method could cycle or end on a false ray.
+      const double diff = ri - rb, tie = 1e-12 * std::max({1.0, std::abs(ri), std::abs(rb)});
+      if (diff < -tie) {
         best = i;
         continue;
       }
-      if (diff > 0) continue;
+      if (diff > tie) continue;
       if (s.basis[i] == 2 * p) {
         best = i;
         continue;

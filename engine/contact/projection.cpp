@@ -3,6 +3,7 @@
 #include "engine/contact/constraint_rows.hpp"
 #include "engine/contact/detection.hpp"
 #include "engine/contact/min_norm_solve.hpp"
+#include "engine/contact/stick_slip.hpp"
 #include "engine/dynamics/crba.hpp"
 #include "engine/dynamics/energy.hpp"
 #include "engine/dynamics/kinematics.hpp"
@@ -54,7 +55,9 @@ void stabilise(const Model& model, Data& data) {
   c.active.clear();
   for (int k = 0; k < int(c.resting.size()); ++k)
     if (c.resting[k]) c.active.push_back(k);
+  tangent_rows_from_modes(model, data);
   if (c.active.empty()) return;
+  freeze_frames(data);  // onto the features the slots touch now (the detection is current)
   const StateLayout s(model);
   const auto qd = data.x.segment(s.qd(), s.n);
   EnergyTerms before, after;

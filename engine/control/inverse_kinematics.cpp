@@ -33,11 +33,13 @@ struct Rows {
   Eigen::VectorXd e;
 };
 
-// Hand rows (3) then one row per elbow: e = target - current.
+// Hand rows (3) then one row per elbow (its height over its plane), or three
+// (its centre, when pinned): e = target - current.
 void build_rows(const Model& model, Data& data, const IkProblem& problem, Rows& rows) {
   const int p = int(problem.elbows.size());
-  rows.J.resize(3 + p, model.dof);
-  rows.e.resize(3 + p);
+  const bool pinned = !problem.pins.empty();
+  rows.J.resize(3 + p * (pinned ? 3 : 1), model.dof);
+  rows.e.resize(rows.J.rows());
   Matrix3Xd J3(3, model.dof);
   point_jacobian(model, data, model.hand_link, model.hand_point, J3);
   rows.J.topRows(3) = J3;
@@ -46,8 +48,14 @@ void build_rows(const Model& model, Data& data, const IkProblem& problem, Rows& 
     const Elbow& elbow = model.elbows[problem.elbows[k]];
     const TablePlane& plane = problem.planes[k];
     point_jacobian(model, data, elbow.link, elbow.point, J3);
+    const Eigen::Vector3d centre = point_position(data, elbow.link, elbow.point);
+    if (pinned) {
+      rows.J.middleRows(3 + 3 * k, 3) = J3;
+      rows.e.segment(3 + 3 * k, 3) = problem.pins[k] - centre;
+      continue;
+    }
     rows.J.row(3 + k) = plane.normal.transpose() * J3;
-    const double C = plane.normal.dot(point_position(data, elbow.link, elbow.point) - plane.point) - elbow.radius;
+    const double C = plane.normal.dot(centre - plane.point) - elbow.radius;
     rows.e[3 + k] = problem.clearance - C;
   }
 }

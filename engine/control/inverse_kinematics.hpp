@@ -1,6 +1,7 @@
 // Constrained inverse kinematics for the hand task: the hand on its target
-// and the declared elbows on the table (or at a clearance above it) as
-// equality rows; the remaining redundancy goes to a preferred posture.
+// and the declared elbows on the table (or at a clearance above it, or held
+// at a point of it) as equality rows; the remaining redundancy goes to a
+// preferred posture.
 #pragma once
 
 #include <stdexcept>
@@ -27,6 +28,9 @@ struct IkProblem {
   std::vector<int> elbows;         // elbow indices kept at `clearance` above their plane
   std::vector<TablePlane> planes;  // one per elbow
   double clearance = 0.0;          // [m] sphere surface above the table
+  // Resting elbows that stick (Coulomb friction): each elbow's centre held at
+  // its point [m, world] (3 rows), not only on its plane (1 row: it may slide).
+  std::vector<Eigen::Vector3d> pins;
   Eigen::VectorXd posture;         // [n] preferred q
   double posture_gain = 1.0;       // null-space step toward the posture per iteration
   Eigen::VectorXd q_min, q_max;    // [n] limits, or empty

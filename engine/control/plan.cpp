@@ -61,6 +61,12 @@ void check_over_table(const Model& model, Data& data, const IkProblem& problem, 
   }
 }
 
+std::vector<Eigen::Vector3d> elbow_centres(const Model& model, const Data& data, const IkProblem& problem) {
+  std::vector<Eigen::Vector3d> centres;
+  for (int k : problem.elbows) centres.push_back(point_position(data, model.elbows[k].link, model.elbows[k].point));
+  return centres;
+}
+
 void check(const IkResult& r, double t, const Eigen::Vector3d& target) {
   if (r.hand_residual > 1e-6) {
     std::ostringstream msg;
@@ -142,14 +148,21 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
   plan->dt = model.options.step;
   const long N = std::lround(model.options.duration / plan->dt) + 1;
   Eigen::VectorXd q = q_start;
+  // With Coulomb friction a resting elbow sticks: it stays where it lands at
+  // the start instead of sliding along its plane (the feed-forward asks no
+  // friction force of it, so the plan keeps inside any cone).
+  const bool sticks = model.has_coulomb_friction() && base.clearance == 0 && !base.elbows.empty();
+  std::vector<Eigen::Vector3d> pins;
   for (long k = 0; k < N; ++k) {
     const double t = double(k) * plan->dt;
     IkProblem problem = base;
     problem.hand = hand_target(experiment.task, hand_start, t).p;
+    problem.pins = pins;
     const IkResult r = solve_ik(model, data, problem, q);
     check(r, t, problem.hand);
     forward_kinematics(model, data, r.q);
     check_over_table(model, data, problem, t);
+    if (k == 0 && sticks) pins = elbow_centres(model, data, problem);
     q = r.q;
     plan->q.push_back(q);
     plan->hand.push_back(problem.hand);

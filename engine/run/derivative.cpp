@@ -36,14 +36,16 @@ void energy_rates(const Model& model, Data& data, ConstVec qd, double hand_power
   }
   out[2] = model.effects.damping ? qd.dot(model.viscous.cwiseProduct(qd)) : 0.0;
   if (!model.effects.contact) return;
-  // Table power on the arm: fn^T Jf qd = fn^T Jc qd (normal work, zero while
-  // C holds) - fn^T (Jc - Jf) qd (sliding friction loss, >= 0).
+  // Table power on the arm: f^T Jf qd = the normal rows' fn^T Jc qd (normal
+  // work, zero while C holds) - the friction loss (sliding rows: mu fn |v_t|
+  // >= 0; tangent rows of sticking slots: -f_t v_t, zero while they stick).
   const ContactData& c = data.contact;
   if (c.active.empty()) {
     out[3] = out[4] = 0.0;
     return;
   }
-  const double normal = c.fn.dot(c.Cd);
+  const Eigen::Index pn = c.normal_rows();
+  const double normal = c.fn.head(pn).dot(c.Cd.head(pn));
   data.contact.Jf_qd.noalias() = c.Jf * qd;
   out[3] = normal - c.fn.dot(c.Jf_qd);
   out[4] = normal;

@@ -6,6 +6,17 @@
 
 namespace elbowsim {
 
+const char* to_string(ContactEvent::Kind kind) {
+  switch (kind) {
+    case ContactEvent::Kind::landing: return "landing";
+    case ContactEvent::Kind::release: return "release";
+    case ContactEvent::Kind::stick: return "stick";
+    case ContactEvent::Kind::slip: return "slip";
+  }
+  return "?";
+}
+
+
 namespace {
 
 std::string at_time(double t) {
@@ -21,7 +32,7 @@ std::string describe(const Model& model, const Warning& w) {
   switch (w.kind) {
     case Warning::Kind::dependent_rows:
       msg << "dependent contact constraints at " << at_time(w.t) << ": " << w.count
-          << " touching contact points give rows of M* of rank " << w.rank << " (threshold "
+          << " rows of M* of the touching contact points (normal and sticking tangent rows) have rank " << w.rank << " (threshold "
           << model.contact.rank_tolerance << " relative); minimum-norm contact forces are used";
       return msg.str();
   }
@@ -67,13 +78,16 @@ std::string describe(const Model& model, const Failure& f) {
   switch (f.kind) {
     case Failure::Kind::none: return "";
     case Failure::Kind::painleve:
-      return "Painleve paradox at " + at_time(f.t) + ": with friction mu = " +
-             std::to_string(model.contact.friction) +
-             " a normal force on a resting elbow would accelerate it into the table; no "
-             "non-negative elbow force exists (lower contact.friction or change the pose)";
+      msg << "Painleve paradox at " << at_time(f.t) << ": with " << to_string(model.contact.friction.law)
+          << " friction mu = " << model.contact.friction.mu
+          << " a sliding contact's normal force would accelerate it into the table; no "
+             "non-negative contact force exists (lower contact.friction.mu or change the pose)";
+      return msg.str();
     case Failure::Kind::no_contact_solution:
-      return std::string(model.effects.friction ? "Painleve paradox" : "contact failure") + " at " +
-             at_time(f.t) + ": no set of resting elbows has non-negative forces and accelerations";
+      msg << (model.effects.friction ? "Painleve paradox" : "contact failure") << " at " << at_time(f.t)
+          << ": no set of resting contacts has non-negative forces and accelerations"
+          << (model.has_coulomb_friction() ? " with their forces inside the friction cones" : "");
+      return msg.str();
     case Failure::Kind::diverged:
       msg << "simulation diverged at t = " << f.t << " s (step " << f.step
           << "): the state became non-finite or exceeded 1e12" << step_advice(model, f);

@@ -13,23 +13,25 @@ namespace elbowsim {
 
 struct Model;
 
+// A row of M* switched on (landing) or off (release), or a resting slot's
+// friction mode changed (stick: its slip stopped; slip: its force left the cone).
 struct ContactEvent {
-  enum class Kind { landing, release };
+  enum class Kind { landing, release, stick, slip };
   double t = 0;         // [s]
   int slot = -1;        // the contact slot (contact/primitives.hpp; slot k < elbows x boxes: an elbow)
   Kind kind = Kind::landing;
-  double speed = 0;     // [m/s] approach speed at landing (> 0), 0 at release
+  double speed = 0;     // [m/s] approach speed at landing (> 0); slip speed left at stick; else 0
   double impulse = 0;   // [N s] landing impulse
   double energy_lost = 0;  // [J] kinetic energy this elbow's impulse took
 };
 
 struct Warning {
   enum class Kind {
-    dependent_rows,  // touching slots whose rows of M* are dependent: `count` rows of rank `rank`
+    dependent_rows,  // the touching slots' rows of M* are dependent: `count` rows of rank `rank`
   };
   Kind kind = Kind::dependent_rows;
   double t = 0;      // [s]
-  int count = 0;     // touching slots (dependent_rows)
+  int count = 0;     // rows of the touching slots (dependent_rows)
   int rank = 0;      // rank of their rows (dependent_rows)
 };
 
@@ -74,6 +76,8 @@ struct StepLog {
     warnings.clear();
   }
 };
+
+const char* to_string(ContactEvent::Kind kind);
 
 // The messages users read in summary.json, on stderr and in reports.
 std::string describe(const Model& model, const Warning& warning);

@@ -5,6 +5,10 @@
 #include <string>
 
 #include "engine/contact/collision.hpp"
+#include "engine/contact/friction.hpp"
+#include "engine/dynamics/crba.hpp"
+#include "engine/dynamics/walker_orin.hpp"
+#include "engine/run/derivative.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/rnea.hpp"
 #include "engine/run/state_layout.hpp"
@@ -161,7 +165,7 @@ Model SpinningRod::model(double duration) const {
   m.effects.damping = false;
   m.effects.contact = true;
   m.effects.friction = true;
-  m.contact.friction = mu;
+  m.contact.friction.mu = mu;
   m.initial.q = Eigen::Vector2d(0, 0);
   m.initial.qd = Eigen::Vector2d(omega0, 0);
   m.options = {duration, 1e-4, IntegratorKind::rk4, DynamicsMethod::crba};
@@ -172,6 +176,92 @@ Model SpinningRod::model(double duration) const {
 double SpinningRod::normal_force() const { return mass * g * 0.5; }
 double SpinningRod::yaw_inertia() const {
   return 1e-4 + mass * length * length / 12 + mass * (length / 2) * (length / 2);
+}
+
+Eigen::Vector3d PressedTip::tip() const {
+  return Eigen::Vector3d(l1 * std::cos(q1) + l2 * std::cos(q1 + q2), 0,
+                         l1 * std::sin(q1) + l2 * std::sin(q1 + q2));
+}
+
+Eigen::Vector2d PressedTip::torques(double ft, double force) const {
+  Model m = planar_arm({{l1, m1, l1 / 2, 0.02}, {l2, m2, l2 / 2, 0.01}});
+  Data data(m);
+  forward_kinematics(m, data, Eigen::Vector2d(q1, q2));
+  Matrix3Xd J(3, 2);
+  point_jacobian(m, data, 1, Eigen::Vector3d(l2, 0, 0) - r * (data.rotation[1].transpose() * Eigen::Vector3d::UnitZ()), J);
+  return -(J.transpose() * Eigen::Vector3d(ft, 0, force));
+}
+
+Model PressedTip::model(double ratio0, double slope, double duration, double step) const {
+  Model m = planar_arm({{l1, m1, l1 / 2, 0.02}, {l2, m2, l2 / 2, 0.01}});
+  m.gravity.setZero();
+  m.elbows = {Elbow{"tip", 1, Eigen::Vector3d(l2, 0, 0), r}};
+  m.table = {table_under(tip().z() - r, tip().x())};
+  for (Link& link : m.links) link.collision.kind = LinkCollision::Kind::none;
+  m.effects.contact = true;
+  m.effects.friction = true;
+  m.contact.friction.mu = mu;
+  m.initial.q = Eigen::Vector2d(q1, q2);
+  // The friction force is -ratio mu fn along x: the torques push toward +x.
+  const Eigen::Vector2d at0 = torques(-ratio0 * mu * fn, fn);
+  const Eigen::Vector2d rate = torques(-(ratio0 + 1) * mu * fn, fn) - at0;  // per unit ratio
+  m.inputs.quantity = OpenLoopInputs::Quantity::torque;
+  m.inputs.joints = {ramp(at0[0], slope * rate[0]), ramp(at0[1], slope * rate[1])};
+  m.options = {duration, step, IntegratorKind::rk4, DynamicsMethod::crba};
+  finalize(m);
+  return m;
+}
+
+Model two_point_arm(double share, double amplitude, double duration, double step) {
+  Model m = planar_arm({{0.3, 1.0, 0.15, 0.01}, {0.3, 0.8, 0.15, 0.008}, {0.3, 0.5, 0.15, 0.005}});
+  const double q1 = 0.6, j1z = 0.3 * std::sin(q1), r = 0.02, z = -0.05;
+  const double a2 = std::asin((z - j1z) / 0.3);  // link 1's angle: its end at height z
+  const Eigen::Vector3d q(q1, a2 - q1, -a2);      // link 2 level
+  m.elbows = {Elbow{"elbow", 1, Eigen::Vector3d(0.3, 0, 0), r}, Elbow{"tip", 2, Eigen::Vector3d(0.3, 0, 0), r}};
+  m.table = {table_under(z - r, 0.5)};
+  for (Link& link : m.links) link.collision.kind = LinkCollision::Kind::none;
+  m.effects.contact = true;
+  m.effects.friction = true;
+  m.contact.friction.mu = 0.4;
+  m.initial.q = q;
+  finalize(m);
+  Data data(m);
+  forward_kinematics(m, data, q);
+  Eigen::VectorXd gravity(3);
+  inverse_dynamics(m, data, data.zero, data.zero, {false, true, false}, gravity);
+  m.inputs.quantity = OpenLoopInputs::Quantity::torque;
+  m.inputs.joints.assign(3, InputProfile{});
+  const Eigen::Vector3d frequency(1.3, 2.1, 1.7);
+  for (int j = 0; j < 3; ++j) {
+    InputProfile& tau = m.inputs.joints[j];
+    tau.kind = InputProfile::Kind::sine;
+    tau.offset = share * gravity[j];
+    tau.amplitude = amplitude;
+    tau.frequency = frequency[j];
+  }
+  m.options = {duration, step, IntegratorKind::rk4, DynamicsMethod::crba};
+  finalize(m);
+  return m;
+}
+
+Eigen::Vector3d contact_force_from_dynamics(const Model& model, Data& data, int slot) {
+  const StateLayout s(model);
+  nonstiff_rates(model, data, data.t, data.x, data.k1);
+  const Eigen::VectorXd qd = data.x.segment(s.qd(), s.n);
+  mass_matrix_crba(model, data);
+  bias_torques(model, data, qd);
+  const Eigen::VectorXd Q = data.mass_matrix * data.qdd + data.bias - data.actuation;
+  const Primitive& p = data.contact.primitive_of(slot);
+  const Eigen::Vector3d n = data.contact.normal[slot];
+  Matrix3Xd J(3, model.dof);
+  point_jacobian(model, data, p.link, contact_point_local(data, slot, n), J);
+  return J.transpose().completeOrthogonalDecomposition().solve(Q);
+}
+
+double slip_speed_of(const Model& model, Data& data, int slot) {
+  const StateLayout s(model);
+  forward_kinematics(model, data, data.x.segment(s.q(), s.n));
+  return tangential_velocity(data, slot, data.contact.normal[slot], data.x.segment(s.qd(), s.n)).norm();
 }
 
 }  // namespace elbowsim::testing

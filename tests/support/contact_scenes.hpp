@@ -57,4 +57,38 @@ struct SpinningRod {
   double yaw_inertia() const;        // about the z axis through the base
 };
 
+// 2-link planar arm (no gravity, no motors, links without solids) whose hand
+// is a sphere ("tip", radius r, the hand point) resting on the table top at
+// q0. The joint torques tau(t) = -Jp^T (f_x(t), fn) (Jp: the contact point's
+// Jacobian at q0, x and z rows) make the table push the resting tip with the
+// normal force fn and the tangential force f_x(t) = -ratio(t) mu fn, ratio =
+// ratio0 + slope t: the torques push the tip toward +x with ratio(t) times
+// what friction can hold.
+//
+//          o
+//  link 0 / \ link 1
+//        o   O tip
+//   ============== table top
+struct PressedTip {
+  double l1 = 0.4, l2 = 0.35, m1 = 1.0, m2 = 0.8, r = 0.02, q1 = 0.9, q2 = -1.8;
+  double mu = 0.5, fn = 10.0;
+  Model model(double ratio0, double slope, double duration, double step) const;
+  Eigen::Vector3d tip() const;                           // the sphere's centre at q0 [m]
+  Eigen::Vector2d torques(double ft, double fn) const;   // [N m] for the table force (ft, fn) at q0
+};
+
+// 3-link planar arm (gravity, no motors, links without solids) lying on two
+// spheres, "elbow" at the end of link 1 and "tip" at the end of link 2 (link 2
+// level), mu 0.4; joint torques: `share` of the gravity torques at q0 plus
+// sines of `amplitude` [N m] that make the contacts stick and slip.
+Model two_point_arm(double share, double amplitude, double duration, double step);
+
+// The table's force on the arm at the contact point of `slot`, from the
+// dynamics at the state in data.x: Q = (M + Jm) qdd + B - tau = Jp^T f, solved
+// for f in the least-squares sense (exact when Jp has full column rank).
+Eigen::Vector3d contact_force_from_dynamics(const Model& model, Data& data, int slot);
+
+// Speed of slot k's contact point across the table normal [m/s] at the state in data.x.
+double slip_speed_of(const Model& model, Data& data, int slot);
+
 }  // namespace elbowsim::testing

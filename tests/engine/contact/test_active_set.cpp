@@ -31,7 +31,7 @@ namespace {
 Model painleve_scene() {
   Model m = sliding_arm(Stabilization::baumgarte, 0.2, 1e-3);
   m.effects.friction = true;
-  m.contact.friction = 1.0;
+  m.contact.friction.mu = 1.0;
   finalize(m);
   Data data(m);
   reset_state(m, data);
@@ -52,7 +52,7 @@ Model painleve_scene() {
   double B = Jc * data.llt.solve(Jt.transpose());
   if (B < 0) qd = -qd, B = -B;  // slide the way friction pushes the elbow down
   REQUIRE(B > 0);
-  m.contact.friction = 3.0 * A / B;
+  m.contact.friction.mu = 3.0 * A / B;
   m.initial.qd = qd;
   finalize(m);
   return m;

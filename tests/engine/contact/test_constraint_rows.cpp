@@ -101,10 +101,11 @@ TEST_CASE("constraint_rows: Baumgarte adds -(2/T) Cd - C/T^2 to gamma, T = baumg
 
 TEST_CASE("constraint_rows: friction row Jf = Jc - mu t^T J_p, so Jf qd = Cd - mu |v_t| when sliding") {
   // t is the sliding direction of the contact point (sphere centre - r n), regularised as
-  // v_t / max(|v_t|, slip_velocity): below the slip speed t.v = |v_t|^2 / slip_velocity.
+  // v_t / max(|v_t|, slip_velocity) (law saturated): below the slip speed t.v = |v_t|^2 / slip_velocity.
   Model m = without_stabilization(chain_with_elbows(5, 1, 721));
   m.effects.friction = true;
-  m.contact.friction = 0.4;
+  m.contact.friction.mu = 0.4;
+  m.contact.friction.law = FrictionLaw::saturated;
   finalize(m);
   Data data(m);
   const Eigen::VectorXd q = Eigen::VectorXd::Random(5), fast = Eigen::VectorXd::Random(5);
@@ -121,11 +122,11 @@ TEST_CASE("constraint_rows: friction row Jf = Jc - mu t^T J_p, so Jf qd = Cd - m
     CAPTURE(slide);
     constraint_rows(m, data, qd);
     CHECK(approx(data.contact.slide[0], slide, 1e-15, 1e-12));
-    const double along = slide >= m.contact.slip_velocity ? slide : slide * slide / m.contact.slip_velocity;
+    const double along = slide >= m.contact.friction.slip_velocity ? slide : slide * slide / m.contact.friction.slip_velocity;
     // Rounding of sums of O(1) terms scaled by qd: 1e-12 relative to |qd|.
     CHECK(approx(data.contact.Jf.row(0).dot(qd), data.contact.Cd[0] - 0.4 * along, 1e-12 * scale));
   }
-  REQUIRE(1e-6 * fast.norm() < m.contact.slip_velocity);  // the second case is below slip
+  REQUIRE(1e-6 * fast.norm() < m.contact.friction.slip_velocity);  // the second case is below slip
 }
 
 TEST_CASE("friction: a sliding elbow decelerates as mu f_n predicts") {
@@ -146,7 +147,7 @@ TEST_CASE("constraint_rows calls the C allocator zero times, with and without fr
   for (bool friction : {false, true}) {
     Model m = chain_with_elbows(5, 2, 731);
     m.effects.friction = friction;
-    m.contact.friction = 0.4;
+    m.contact.friction.mu = 0.4;
     finalize(m);
     Data data(m);
     const Eigen::VectorXd q = Eigen::VectorXd::Random(5), qd = Eigen::VectorXd::Random(5);

@@ -55,9 +55,11 @@ TEST_CASE("detect_contacts: the analytic distance of the elbow sphere over the t
     CHECK(approx(c.distance, centre.z() - kRadius, kExact));  // negative below, as for q = -0.05
     CHECK(approx(c.normal, Eigen::Vector3d::UnitZ(), kExact));
     CHECK(approx(c.point, Eigen::Vector3d(centre.x(), 0, 0), kExact));
-    // The stages read the table normal and point under each elbow from these copies.
+    // The rows of a step read the frame frozen from the detection when it starts.
+    freeze_frames(data);
     CHECK(data.contact.normal[0] == c.normal);
     CHECK(data.contact.surface[0] == c.point);
+    CHECK(data.contact.feature[0] == BoxFeature::face);
     // And the link frames are those of q (forward kinematics was run).
     CHECK(approx(data.rotation[0](2, 0), std::sin(q), 1e-15));
   }
@@ -75,7 +77,7 @@ TEST_CASE("normal_speed: the elbow centre's speed along the table normal, < 0 ap
       detect_contacts(m, data);
       CAPTURE(tilt);
       CAPTURE(qd);
-      CHECK(approx(data.contact.normal[0],
+      CHECK(approx(data.contact.detected[0].normal,
                    Eigen::Vector3d(0, -std::sin(tilt), std::cos(tilt)), kExact));
       const double expected = std::cos(tilt) * 0.3 * std::cos(q) * qd;
       CHECK(approx(normal_speed(m, data, 0), expected, 1e-9));  // the normal is GJK's: 1e-9
@@ -117,7 +119,7 @@ TEST_CASE("detect_contacts: a link capsule's end and interior slots, exact depth
     detect_contacts(m, data);
     CAPTURE(depth);
     CHECK(approx(data.contact.detected[tip].distance, -depth, 1e-12));
-    CHECK(data.contact.normal[tip] == Eigen::Vector3d::UnitZ());  // the top face, exactly
+    CHECK(data.contact.detected[tip].normal == Eigen::Vector3d::UnitZ());  // the top face, exactly
     // Nothing of the arm is near the side table: its slots stay far.
     for (int k = 0; k < data.contact.slots(); ++k)
       if (data.contact.slot(k).box == 0 && data.contact.primitive_of(k).elbow < 0)
@@ -155,5 +157,5 @@ TEST_CASE("detect_contacts: a capsule lying across the table's edge rests on its
   // 0.05 - 0.4 tan 0.2 = -0.031: it goes into the box before the edge; the nearest point of a
   // segment entering the box is its deepest point.
   CHECK(c.distance < 0);
-  CHECK(c.feature == static_cast<int>(BoxFeature::inside));
+  CHECK(c.feature == BoxFeature::face);  // inside the box: its rows rest on the nearest face
 }

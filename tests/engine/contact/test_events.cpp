@@ -134,7 +134,8 @@ TEST_CASE("locate_first_event: a resting elbow whose force turns negative is rel
   prepare_integrator(m, data);
   data.contact.resting[0] = 1;
   data.contact.active = {0};
-  detect_contacts(m, data);  // the table normal and point of the row
+  detect_contacts(m, data);
+  freeze_frames(data);  // the table normal and point of the row
   data.x_start = data.x;
   integrate_step(m, data, 1e-3);
 

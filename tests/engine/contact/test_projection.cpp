@@ -35,6 +35,7 @@ struct Sunk {
   void place_in(Data& data) const {
     place(m, data, q, qd, 0.3);
     detect_contacts(m, data);
+    freeze_frames(data);  // the rows' frame, as a step's start would
   }
 };
 

@@ -36,7 +36,7 @@ Model bouncing_arm(EventTiming events, Stabilization stabilization) {
   m.inputs.joints[0].values = {0.5 * arm.G1(), 0.5 * arm.G1(), 1.4 * arm.G1()};
   m.initial.q[0] += 0.1;
   m.effects.friction = true;
-  m.contact.friction = 0.3;
+  m.contact.friction.mu = 0.3;
   m.contact.restitution = 0.5;
   m.contact.events = events;
   m.effects.stabilization = stabilization;

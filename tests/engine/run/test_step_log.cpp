@@ -29,14 +29,14 @@ TEST_CASE("describe(Warning): dependent rows name t, the elbow count, the rank a
   MESSAGE(text);
   CHECK(has(text, "dependent"));
   CHECK(has(text, "t = 0.25 s"));
-  CHECK(has(text, "3 touching contact points"));
+  CHECK(has(text, "3 rows of M*"));
   CHECK(has(text, "rank 2"));
   CHECK(has(text, "threshold"));
 }
 
 TEST_CASE("describe(Failure): each kind names its time and quantity; none says nothing") {
   Model model;
-  model.contact.friction = 0.75;
+  model.contact.friction.mu = 0.75;
   model.options.step = 2e-3;
   Failure f;
   CHECK(describe(model, f).empty());
