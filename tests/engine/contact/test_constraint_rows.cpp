@@ -99,34 +99,41 @@ TEST_CASE("constraint_rows: Baumgarte adds -(2/T) Cd - C/T^2 to gamma, T = baumg
   }
 }
 
-TEST_CASE("constraint_rows: friction row Jf = Jc - mu t^T J_p, so Jf qd = Cd - mu |v_t| when sliding") {
-  // t is the sliding direction of the contact point (sphere centre - r n), regularised as
-  // v_t / max(|v_t|, slip_velocity) (law saturated): below the slip speed t.v = |v_t|^2 / slip_velocity.
-  Model m = without_stabilization(chain_with_elbows(5, 1, 721));
-  m.effects.friction = true;
-  m.contact.friction.mu = 0.4;
-  m.contact.friction.law = FrictionLaw::saturated;
-  finalize(m);
-  Data data(m);
-  const Eigen::VectorXd q = Eigen::VectorXd::Random(5), fast = Eigen::VectorXd::Random(5);
-  forward_kinematics(m, data, q);
-  set_random_contacts(m, data);
-  const Elbow& e = m.elbows[0];
-  const Eigen::Vector3d n = data.contact.normal[0];
-  const Eigen::Vector3d contact = point_position(data, e.link, e.point) - e.radius * n;
-  const Eigen::Vector3d local = data.rotation[e.link].transpose() * (contact - data.origin[e.link]);
-  for (const double scale : {1.0, 1e-6}) {
-    const Eigen::VectorXd qd = scale * fast;
-    const Eigen::Vector3d v = point_velocity(data, e.link, local, qd);
-    const double slide = (v - n * n.dot(v)).norm();
-    CAPTURE(slide);
-    constraint_rows(m, data, qd);
-    CHECK(approx(data.contact.slide[0], slide, 1e-15, 1e-12));
-    const double along = slide >= m.contact.friction.slip_velocity ? slide : slide * slide / m.contact.friction.slip_velocity;
-    // Rounding of sums of O(1) terms scaled by qd: 1e-12 relative to |qd|.
-    CHECK(approx(data.contact.Jf.row(0).dot(qd), data.contact.Cd[0] - 0.4 * along, 1e-12 * scale));
+TEST_CASE("constraint_rows: friction row Jf = Jc - mu s^T J_p, so Jf qd = Cd - mu |v_t| scale(|v_t|) when sliding") {
+  // s is the sliding direction of the contact point (sphere centre - r n) times
+  // the law's scale: v / max(v, slip_velocity) (saturated), tanh(v / tanh_velocity)
+  // (tanh). Both sit in the row of M* with f_n (not lagged a step).
+  for (const FrictionLaw law : {FrictionLaw::saturated, FrictionLaw::tanh}) {
+    CAPTURE(to_string(law));
+    Model m = without_stabilization(chain_with_elbows(5, 1, 721));
+    m.effects.friction = true;
+    m.contact.friction.mu = 0.4;
+    m.contact.friction.law = law;
+    finalize(m);
+    Data data(m);
+    const Eigen::VectorXd q = Eigen::VectorXd::Random(5), fast = Eigen::VectorXd::Random(5);
+    forward_kinematics(m, data, q);
+    set_random_contacts(m, data);
+    const Elbow& e = m.elbows[0];
+    const Eigen::Vector3d n = data.contact.normal[0];
+    const Eigen::Vector3d contact = point_position(data, e.link, e.point) - e.radius * n;
+    const Eigen::Vector3d local = data.rotation[e.link].transpose() * (contact - data.origin[e.link]);
+    const FrictionOptions& f = m.contact.friction;
+    for (const double scale : {1.0, 1e-6}) {
+      const Eigen::VectorXd qd = scale * fast;
+      const Eigen::Vector3d v = point_velocity(data, e.link, local, qd);
+      const double slide = (v - n * n.dot(v)).norm();
+      CAPTURE(slide);
+      constraint_rows(m, data, qd);
+      CHECK(approx(data.contact.slide[0], slide, 1e-15, 1e-12));
+      const double along = law == FrictionLaw::tanh ? slide * std::tanh(slide / f.tanh_velocity)
+                           : slide >= f.slip_velocity ? slide
+                                                      : slide * slide / f.slip_velocity;
+      // Rounding of sums of O(1) terms scaled by qd: 1e-12 relative to |qd|.
+      CHECK(approx(data.contact.Jf.row(0).dot(qd), data.contact.Cd[0] - 0.4 * along, 1e-12 * scale));
+    }
+    REQUIRE(1e-6 * fast.norm() < std::min(f.slip_velocity, f.tanh_velocity));  // the second case is below both
   }
-  REQUIRE(1e-6 * fast.norm() < m.contact.friction.slip_velocity);  // the second case is below slip
 }
 
 TEST_CASE("friction: a sliding elbow decelerates as mu f_n predicts") {

@@ -6,6 +6,7 @@
 
 #include "engine/contact/detection.hpp"
 #include "engine/contact/events.hpp"
+#include "engine/dynamics/kinematics.hpp"
 #include "engine/run/integrator.hpp"
 #include "engine/run/simulator.hpp"
 #include "support/approx.hpp"
@@ -148,4 +149,38 @@ TEST_CASE("locate_first_event: a resting elbow whose force turns negative is rel
   CHECK(data.log.events[0].t == data.t);
   CHECK(data.contact.resting[0] == 0);
   CHECK(data.step_count == 1);
+}
+
+TEST_CASE("an elbow sliding off the table's edge releases at the edge") {
+  // The pressed tip (friction mu 0.5, f_n 10 N) pushed along +x with 1.5 mu f_n
+  // slides toward the box's edge 2 cm ahead. A ball of 2 mm radius reaches it
+  // at ~0.3 m/s: v^2 / r ~ 50 m/s^2 outruns the ~10 m/s^2 the push presses it
+  // down with, so it cannot follow the edge round: it leaves as its centre
+  // passes over the edge, x_c = x_edge to (speed x locate tolerance).
+  PressedTip tip;
+  tip.r = 0.002;
+  Model m = tip.model(1.5, 0.0, 0.3, 1e-3);
+  const double x_edge = tip.tip().x() + 0.02;
+  TableBox& box = m.table[0];
+  box.center.x() = x_edge - 0.5 * box.size.x();
+  m.contact.locate_tolerance = 1e-12;
+  finalize(m);
+  const RunResult r = simulate(m, {});
+  REQUIRE(r.completed);
+  const ContactEvent* release = first_event(r, ContactEvent::Kind::release);
+  REQUIRE(release != nullptr);
+  CHECK(r.valid);
+
+  // The state at the release: the same run stopped there.
+  m.options.duration = release->t;
+  finalize(m);
+  const RunResult until = simulate(m, {});
+  Data data(m);
+  forward_kinematics(m, data, Eigen::Vector2d(last(until, "q0"), last(until, "q1")));
+  const Eigen::Vector3d centre = point_position(data, 1, m.elbows[0].point);
+  const double speed = std::hypot(last(until, "qd0"), last(until, "qd1")) * (tip.l1 + tip.l2);
+  MESSAGE("released at t = ", release->t, " s with the centre ", centre.x() - x_edge,
+          " m past the edge (joint-speed bound ", speed, " m/s)");
+  CHECK(std::abs(centre.x() - x_edge) <= speed * 1e-12 + 1e-12);
+  CHECK(std::abs(centre.z() - (box.center.z() + 0.5 * box.size.z() + tip.r)) < 1e-9);
 }

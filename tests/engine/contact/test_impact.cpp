@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "engine/contact/detection.hpp"
+#include "engine/contact/friction.hpp"
+#include "engine/dynamics/crba.hpp"
 #include "engine/contact/impact.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/run/state_layout.hpp"
@@ -49,6 +51,67 @@ TEST_CASE("impact: plastic leaves zero normal speed, restitution e reverses e ti
     if (e == 0.0)
       CHECK(r.kinetic_before - r.kinetic_after ==
             doctest::Approx(0.5 * r.impulse[0] * -r.speed_before[0]).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("impact with Coulomb friction: the contact point stops if mu allows, else slides on with |P_t| = mu P_n") {
+  // The pressed tip (2 links, no motors, no gravity) hits the table moving down
+  // and along +x. Reference by hand: the contact point's velocity changes by
+  // G P, G = J_p M^-1 J_p^T (x and z rows), for the world impulse P = (P_t, P_n).
+  // Plastic: stuck, P = -G^-1 u- if |P_t| <= mu P_n; else P_t = -mu P_n and
+  // u+_z = 0. Rounding only: 1e-12.
+  const PressedTip tip;
+  for (const double mu : {2.0, 0.05}) {
+    CAPTURE(mu);
+    Model m = tip.model(0.0, 0.0, 0.1, 1e-3);
+    REQUIRE(m.effects.motor == MotorModel::none);
+    m.contact.friction.mu = mu;
+    m.contact.restitution = 0.0;
+    finalize(m);
+    Data data(m);
+    const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
+    forward_kinematics(m, data, Eigen::Vector2d(tip.q1, tip.q2));
+    Eigen::MatrixXd J3(3, 2);
+    point_jacobian(m, data, 1, contact_point_local(data, 0, n), J3);
+    Eigen::Matrix2d Jp;
+    Jp << J3.row(0), J3.row(2);
+    // The contact point moving at (0.3, -0.5) m/s.
+    const Eigen::Vector2d qd = Jp.inverse() * Eigen::Vector2d(0.3, -0.5);
+    place(m, data, Eigen::Vector2d(tip.q1, tip.q2), qd, 0.0);
+    detect_contacts(m, data);
+    mass_matrix_crba(m, data);
+    const Eigen::Matrix2d W = data.mass_matrix.inverse();
+    const Eigen::Matrix2d G = Jp * W * Jp.transpose();
+    const Eigen::Vector2d u_before = Jp * qd;
+    REQUIRE(u_before[1] < 0);  // approaching
+    REQUIRE(u_before[0] > 0);  // sliding toward +x
+
+    Eigen::Vector2d P = -G.inverse() * u_before;
+    const bool sticks = std::abs(P[0]) <= mu * P[1];
+    if (!sticks) {
+      // P = P_n (-mu, 1) with (G P)_z = -u-_z.
+      const Eigen::Vector2d d(-mu, 1.0);
+      P = d * (-u_before[1] / G.row(1).dot(d));
+    }
+    CHECK(sticks == (mu == 2.0));  // the two cases are what they claim to be
+
+    const ImpactResult r = apply_impact(m, data, {0}, {});
+    REQUIRE(r.solved);
+    const StateLayout s(m);
+    const Eigen::Vector2d qd_after = data.x.segment(s.qd(), 2);
+    CHECK(approx(qd_after, qd + W * Jp.transpose() * P, 1e-12));
+    const Eigen::Vector2d u_after = Jp * qd_after;
+    CHECK(std::abs(u_after[1]) < 1e-12);
+    if (sticks) {
+      CHECK(std::abs(u_after[0]) < 1e-12);
+      CHECK(data.contact.sticking[0] == 1);
+    } else {
+      // Slides on the same way (faster, here: G's coupling of the normal
+      // impulse outweighs friction's mu P_n).
+      CHECK(u_after[0] > 0);
+      CHECK(data.contact.sticking[0] == 0);
+    }
+    CHECK(r.kinetic_after < r.kinetic_before);
   }
 }
 
