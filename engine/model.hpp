@@ -86,7 +86,6 @@ struct ContactOptions {
   double separation_velocity = 1e-6;   // [m/s] normal speed above which a contact separates
   double baumgarte_time = 0.01;        // [s] Baumgarte time constant T: alpha = 2/T, beta = 1/T^2
   double rank_tolerance = 1e-9;        // relative pivot threshold for dependent rows
-  double link_warning_depth = 0.005;   // [m] a link capsule deeper than this in the table warns
   double initial_penetration = 1e-4;   // [m] an elbow deeper at t = 0 is a scenario error
   // [m] a link or an elbow deeper than this in a table box makes the run invalid, with
   // contact on or off (run/validity.hpp). 1 mm: far above the drift of resting contacts

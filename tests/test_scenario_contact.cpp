@@ -61,7 +61,6 @@ TEST_CASE("contact: defaults without the new sections") {
   CHECK(m.contact.separation_velocity == d.separation_velocity);
   CHECK(m.contact.baumgarte_time == d.baumgarte_time);
   CHECK(m.contact.rank_tolerance == d.rank_tolerance);
-  CHECK(m.contact.link_warning_depth == d.link_warning_depth);
   CHECK(m.contact.initial_penetration == d.initial_penetration);
 }
 
@@ -84,7 +83,6 @@ contact:
   separation_velocity: 3e-6
   baumgarte_time: 0.02
   rank_tolerance: 1e-6
-  link_warning_depth: 0.01
   initial_penetration: 2e-4
   penetration_tolerance: 2e-3
   detection_margin: 0.02
@@ -134,7 +132,6 @@ validity: {energy_residual: 1e-4, current_factor: 5, speed_factor: 4, rest_share
   CHECK(m.contact.separation_velocity == doctest::Approx(3e-6));
   CHECK(m.contact.baumgarte_time == doctest::Approx(0.02));
   CHECK(m.contact.rank_tolerance == doctest::Approx(1e-6));
-  CHECK(m.contact.link_warning_depth == doctest::Approx(0.01));
   CHECK(m.contact.initial_penetration == doctest::Approx(2e-4));
   CHECK(m.contact.penetration_tolerance == doctest::Approx(2e-3));
   CHECK(m.contact.detection_margin == doctest::Approx(0.02));
@@ -300,7 +297,7 @@ TEST_CASE("contact error: contact options out of range") {
               "x.yaml:10:19:", "contact.rank_tolerance", "must be in (0, 1) (got 1)");
   for (const char* key :
        {"locate_tolerance", "touch_distance", "separation_velocity", "baumgarte_time",
-        "link_warning_depth", "initial_penetration", "penetration_tolerance", "detection_margin"}) {
+        "initial_penetration", "penetration_tolerance", "detection_margin"}) {
     CAPTURE(key);
     const std::string text = two_link_with("contact:\n") + "  " + key + ": 0\n";
     CHECK_ERROR(text, "x.yaml:10:", std::string("contact.") + key, "must be > 0 (got 0)");
@@ -327,6 +324,8 @@ TEST_CASE("contact error: friction") {
               "contact.friction.slip_speed", "allowed here: law, mu, stick_velocity, tanh_velocity, slip_velocity");
   CHECK_ERROR(two_link_with("contact: {slip_velocity: 1e-4}\n"), "x.yaml:9:",
               "contact.slip_velocity", "moved to contact.friction.slip_velocity");
+  CHECK_ERROR(two_link_with("contact:\n  link_warning_depth: 0.01\n"), "x.yaml:10:",
+              "contact.link_warning_depth", "replaced by contact.penetration_tolerance");
   CHECK_ERROR(two_link_with("contact: {max_rows: 0}\n"), "x.yaml:9:", "contact.max_rows",
               "must be an integer in 1 .. 100000 (got 0)");
   CHECK_ERROR(two_link_with("validity: {rest_share: 1.5}\n"), "x.yaml:9:", "validity.rest_share",

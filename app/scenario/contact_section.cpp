@@ -148,9 +148,13 @@ ContactOptions read_contact(const Value& contact) {
   if (moved.exists())
     moved.fail("moved to contact.friction.slip_velocity (the saturated law's; give contact.friction "
                "as a map: {law: saturated, mu: ..., slip_velocity: ...})");
+  Value replaced = contact.get("link_warning_depth");
+  if (replaced.exists())
+    replaced.fail("replaced by contact.penetration_tolerance (a link or elbow deeper than it makes "
+                  "the run invalid)");
   contact.allow_keys({"restitution", "friction", "events", "locate_tolerance", "touch_distance",
                       "separation_velocity", "baumgarte_time", "rank_tolerance",
-                      "link_warning_depth", "initial_penetration", "penetration_tolerance",
+                      "initial_penetration", "penetration_tolerance",
                       "detection_margin", "max_rows"});
   auto unit_interval = [](const Value& v) { return in_range(v, 0.0, 1.0, true); };
   auto open_unit_interval = [](const Value& v) { return in_range(v, 0.0, 1.0, false); };
@@ -165,8 +169,6 @@ ContactOptions read_contact(const Value& contact) {
   out.baumgarte_time = value_or(contact.get("baumgarte_time"), out.baumgarte_time, positive);
   out.rank_tolerance =
       value_or(contact.get("rank_tolerance"), out.rank_tolerance, open_unit_interval);
-  out.link_warning_depth =
-      value_or(contact.get("link_warning_depth"), out.link_warning_depth, positive);
   out.initial_penetration =
       value_or(contact.get("initial_penetration"), out.initial_penetration, positive);
   out.penetration_tolerance =

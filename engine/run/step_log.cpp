@@ -115,9 +115,17 @@ std::string describe(const Model& model, const Failure& f) {
         msg << "with contact.events: step a landing is found at the end of the step it happens "
                "in, up to (approach speed x step) deep; use contact.events: locate or a smaller "
                "simulation.step (now " << model.options.step << " s)";
+      else if (f.t <= model.options.step)
+        msg << "in the first step, so the pose the run starts from puts it there, not the "
+               "integration: check initial.q and, with a task, where it rests the elbows (the "
+               "plan's start pose)";
+      else if (f.part == Failure::Part::link &&
+               model.links[static_cast<std::size_t>(f.index)].collision.kind == LinkCollision::Kind::none)
+        msg << "the link has no solid (collision: none), so the table does not hold it; give it "
+               "one or keep it above the table";
       else
-        msg << "no contact row held it (this build gives contact rows to elbow spheres only; a "
-               "link that reaches the table goes through it)";
+        msg << "its contact rows did not hold it: the integration is not accurate enough to keep "
+               "the contact" << step_advice(model, f);
       return msg.str();
     case Failure::Kind::energy_balance:
       msg << "invalid run: the energy balance is off by " << quantity(f.value, "J") << " at "

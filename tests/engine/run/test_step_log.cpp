@@ -87,6 +87,17 @@ TEST_CASE("describe(Failure): the validity checks name the part, the quantity, i
   model.effects.contact = true;
   model.contact.events = EventTiming::step;
   CHECK(has(describe(model, f), "contact.events: locate"));  // with events: step
+  model.contact.events = EventTiming::locate;
+  model.links.resize(3);
+  model.links[2].collision.kind = LinkCollision::Kind::capsule;
+  CHECK(has(describe(model, f), "its contact rows did not hold it"));  // located, with a solid
+  const double later = f.t;
+  f.t = 0.5 * model.options.step;
+  CHECK(has(describe(model, f), "the pose the run starts from puts it there"));
+  f.t = later;
+  CHECK(has(describe(model, f), "try a smaller simulation.step"));
+  model.links[2].collision.kind = LinkCollision::Kind::none;
+  CHECK(has(describe(model, f), "the link has no solid (collision: none)"));
 
   f = Failure{Failure::Kind::energy_balance, 0.5, 100};
   f.value = 2.0, f.limit = 0.1, f.flow = 100.0;
