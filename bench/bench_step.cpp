@@ -7,6 +7,11 @@
 //            the elbow rests on the table in static equilibrium.
 //   sliding: tests' sliding_arm (3 links, quasi-static servos on slow sines,
 //            Baumgarte): the elbow slides along the table.
+//   lying7:  a 7-link planar arm lying on two spheres (end of link 2 and of
+//            link 6, links 3-6 level on the table), torques half its gravity
+//            load plus small sines: with Coulomb friction (mu 0.6) both
+//            contacts stick (2 normal + 2 tangent rows on 7 joints), without
+//            it the same 2 normal rows slide. The s = 7, p = 2 case.
 //
 // RK4, 1 ms steps. reset(model, data) once, then step() repeatedly; every
 // 500 steps (0.5 s of simulated time) the state is reset so the elbow stays
@@ -18,6 +23,8 @@
 
 #include <algorithm>
 
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/dynamics/rnea.hpp"
 #include "engine/run/step.hpp"
 #include "support/contact_scenes.hpp"
 
@@ -42,10 +49,52 @@ Model sliding(bool contact) {
   return m;
 }
 
+Model lying7(bool friction) {
+  constexpr int n = 7;
+  constexpr double L = 0.15, z = -0.05, r = 0.02;
+  std::vector<testing::PlanarLinkSpec> links(n, {L, 0.5, L / 2, 0.001});
+  Model m = testing::planar_arm(links);
+  // Link 0 up, link 1 level, link 2 down to z, links 3-6 level at z.
+  const double up = 0.6, j2z = L * std::sin(up);
+  const double down = std::asin((z - j2z) / L);
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(n);
+  q[0] = up;
+  q[1] = -up;
+  q[2] = down;
+  q[3] = -down;
+  m.elbows = {Elbow{"elbow", 2, Eigen::Vector3d(L, 0, 0), r}, Elbow{"tip", 6, Eigen::Vector3d(L, 0, 0), r}};
+  TableBox box;
+  box.size = Eigen::Vector3d(2.0, 1.0, 0.1);
+  box.center = Eigen::Vector3d(0.5, 0, z - r - 0.05);
+  m.table = {box};
+  for (Link& link : m.links) link.collision.kind = LinkCollision::Kind::none;
+  m.effects.contact = true;
+  m.effects.friction = friction;
+  m.contact.friction.mu = 0.6;
+  m.initial.q = q;
+  finalize(m);
+  Data data(m);
+  forward_kinematics(m, data, q);
+  Eigen::VectorXd gravity(n);
+  inverse_dynamics(m, data, data.zero, data.zero, {false, true, false}, gravity);
+  m.inputs.quantity = OpenLoopInputs::Quantity::torque;
+  m.inputs.joints.assign(n, InputProfile{});
+  for (int j = 0; j < n; ++j) {
+    InputProfile& tau = m.inputs.joints[static_cast<std::size_t>(j)];
+    tau.kind = InputProfile::Kind::sine;
+    tau.offset = 0.5 * gravity[j];
+    tau.amplitude = 0.02;
+    tau.frequency = 1.0 + 0.1 * j;
+  }
+  m.options = {1.0, 1e-3, IntegratorKind::rk4, DynamicsMethod::crba};
+  finalize(m);
+  return m;
+}
+
 void step_cost(benchmark::State& state, const Model& model) {
   Data data(model);
   reset(model, data);
-  long steps = 0, resting = 0;
+  long steps = 0, resting = 0, sticking = 0;
   for (auto _ : state) {
     step(model, data);
     if (data.failure) {
@@ -54,6 +103,7 @@ void step_cost(benchmark::State& state, const Model& model) {
     }
     ++steps;
     if (!data.contact.active.empty()) ++resting;
+    if (!data.contact.tangent_rows.empty()) ++sticking;
     if (data.step_count >= kStepsPerReset) {
       state.PauseTiming();
       reset(model, data);
@@ -64,6 +114,9 @@ void step_cost(benchmark::State& state, const Model& model) {
   // Contact off: no counter (its cv over the repetitions would be 0/0, NaN in the JSON).
   if (model.effects.contact)
     state.counters["resting"] = static_cast<double>(resting) / static_cast<double>(std::max(steps, 1L));
+  // Coulomb friction: share of steps with a sticking contact (tangent rows in M*).
+  if (model.has_coulomb_friction())
+    state.counters["sticking"] = static_cast<double>(sticking) / static_cast<double>(std::max(steps, 1L));
 }
 
 }  // namespace
@@ -72,5 +125,7 @@ BENCHMARK_CAPTURE(step_cost, resting_contact_off, resting_arm(false));
 BENCHMARK_CAPTURE(step_cost, resting_contact_on, resting_arm(true));
 BENCHMARK_CAPTURE(step_cost, sliding_contact_off, sliding(false));
 BENCHMARK_CAPTURE(step_cost, sliding_contact_on, sliding(true));
+BENCHMARK_CAPTURE(step_cost, lying7_frictionless, lying7(false));
+BENCHMARK_CAPTURE(step_cost, lying7_coulomb_sticking, lying7(true));
 
 BENCHMARK_MAIN();
