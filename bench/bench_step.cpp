@@ -22,9 +22,9 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
-#include "engine/dynamics/kinematics.hpp"
-#include "engine/dynamics/rnea.hpp"
 #include "engine/run/step.hpp"
 #include "support/contact_scenes.hpp"
 
@@ -72,20 +72,9 @@ Model lying7(bool friction) {
   m.effects.friction = friction;
   m.contact.friction.mu = 0.6;
   m.initial.q = q;
-  finalize(m);
-  Data data(m);
-  forward_kinematics(m, data, q);
-  Eigen::VectorXd gravity(n);
-  inverse_dynamics(m, data, data.zero, data.zero, {false, true, false}, gravity);
-  m.inputs.quantity = OpenLoopInputs::Quantity::torque;
-  m.inputs.joints.assign(n, InputProfile{});
-  for (int j = 0; j < n; ++j) {
-    InputProfile& tau = m.inputs.joints[static_cast<std::size_t>(j)];
-    tau.kind = InputProfile::Kind::sine;
-    tau.offset = 0.5 * gravity[j];
-    tau.amplitude = 0.02;
-    tau.frequency = 1.0 + 0.1 * j;
-  }
+  std::vector<double> frequency(n);
+  for (int j = 0; j < n; ++j) frequency[static_cast<std::size_t>(j)] = 1.0 + 0.1 * j;
+  testing::gravity_share_with_sines(m, q, 0.5, 0.02, frequency);
   m.options = {1.0, 1e-3, IntegratorKind::rk4, DynamicsMethod::crba};
   finalize(m);
   return m;

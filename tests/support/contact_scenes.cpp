@@ -212,6 +212,24 @@ Model PressedTip::model(double ratio0, double slope, double duration, double ste
   return m;
 }
 
+void gravity_share_with_sines(Model& m, const Eigen::VectorXd& q, double share, double amplitude,
+                              const std::vector<double>& frequency) {
+  finalize(m);
+  Data data(m);
+  forward_kinematics(m, data, q);
+  Eigen::VectorXd gravity(q.size());
+  inverse_dynamics(m, data, data.zero, data.zero, {false, true, false}, gravity);
+  m.inputs.quantity = OpenLoopInputs::Quantity::torque;
+  m.inputs.joints.assign(static_cast<std::size_t>(q.size()), InputProfile{});
+  for (std::size_t j = 0; j < m.inputs.joints.size(); ++j) {
+    InputProfile& tau = m.inputs.joints[j];
+    tau.kind = InputProfile::Kind::sine;
+    tau.offset = share * gravity[static_cast<Eigen::Index>(j)];
+    tau.amplitude = amplitude;
+    tau.frequency = frequency[j];
+  }
+}
+
 Model two_point_arm(double share, double amplitude, double duration, double step) {
   Model m = planar_arm({{0.3, 1.0, 0.15, 0.01}, {0.3, 0.8, 0.15, 0.008}, {0.3, 0.5, 0.15, 0.005}});
   const double q1 = 0.6, j1z = 0.3 * std::sin(q1), r = 0.02, z = -0.05;
@@ -224,21 +242,7 @@ Model two_point_arm(double share, double amplitude, double duration, double step
   m.effects.friction = true;
   m.contact.friction.mu = 0.4;
   m.initial.q = q;
-  finalize(m);
-  Data data(m);
-  forward_kinematics(m, data, q);
-  Eigen::VectorXd gravity(3);
-  inverse_dynamics(m, data, data.zero, data.zero, {false, true, false}, gravity);
-  m.inputs.quantity = OpenLoopInputs::Quantity::torque;
-  m.inputs.joints.assign(3, InputProfile{});
-  const Eigen::Vector3d frequency(1.3, 2.1, 1.7);
-  for (int j = 0; j < 3; ++j) {
-    InputProfile& tau = m.inputs.joints[j];
-    tau.kind = InputProfile::Kind::sine;
-    tau.offset = share * gravity[j];
-    tau.amplitude = amplitude;
-    tau.frequency = frequency[j];
-  }
+  gravity_share_with_sines(m, q, share, amplitude, {1.3, 2.1, 1.7});
   m.options = {duration, step, IntegratorKind::rk4, DynamicsMethod::crba};
   finalize(m);
   return m;

@@ -1,6 +1,8 @@
 // Scenes with elbows on a table, shared by the contact tests and benchmarks.
 #pragma once
 
+#include <vector>
+
 #include "engine/data.hpp"
 #include "support/models.hpp"
 
@@ -76,6 +78,11 @@ struct PressedTip {
   Eigen::Vector3d tip() const;                           // the sphere's centre at q0 [m]
   Eigen::Vector2d torques(double ft, double fn) const;   // [N m] for the table force (ft, fn) at q0
 };
+
+// Joint torque inputs for m at pose q: `share` of the gravity torques there
+// plus sines of `amplitude` [N m] at frequency[j] [Hz] (one per joint).
+void gravity_share_with_sines(Model& m, const Eigen::VectorXd& q, double share, double amplitude,
+                              const std::vector<double>& frequency);
 
 // 3-link planar arm (gravity, no motors, links without solids) lying on two
 // spheres, "elbow" at the end of link 1 and "tip" at the end of link 2 (link 2

@@ -30,6 +30,23 @@ void run_steps(const Model& model, Data& data, Each each) {
   }
 }
 
+// The pressed tip (tip.model(ratio0, slope, duration, step)), located to
+// 1e-12 s, starting with rates that slide it along +x at 5 cm/s without
+// moving it along z.
+Model sliding_tip(const PressedTip& tip, double ratio0, double slope, double duration, double step) {
+  Model m = tip.model(ratio0, slope, duration, step);
+  m.contact.locate_tolerance = 1e-12;
+  Data data(m);
+  forward_kinematics(m, data, m.initial.q);
+  Matrix3Xd J(3, 2);
+  point_jacobian(m, data, 1, Eigen::Vector3d(tip.l2, 0, 0), J);
+  Eigen::Matrix2d Jxz;
+  Jxz << J.row(0), J.row(2);
+  m.initial.qd = Jxz.inverse() * Eigen::Vector2d(0.05, 0);
+  finalize(m);
+  return m;
+}
+
 }  // namespace
 
 TEST_CASE("stick: pushed sideways with 0.9 mu f_n the tip stays put (slip speed <= 1e-9 m/s for 1 s)") {
@@ -93,20 +110,7 @@ TEST_CASE("slip -> stick: a slip that friction stops sticks, at the time a fine 
   // The tip slides toward +x at 5 cm/s, pushed on with half what friction holds:
   // it decelerates, stops and then sticks (0.5 < 1).
   const PressedTip tip;
-  auto sliding = [&](double step) {
-    Model m = tip.model(0.5, 0.0, 0.3, step);
-    m.contact.locate_tolerance = 1e-12;
-    // Rates that move the tip along +x without moving it along z.
-    Data data(m);
-    forward_kinematics(m, data, m.initial.q);
-    Matrix3Xd J(3, 2);
-    point_jacobian(m, data, 1, Eigen::Vector3d(tip.l2, 0, 0), J);
-    Eigen::Matrix2d Jxz;
-    Jxz << J.row(0), J.row(2);
-    m.initial.qd = Jxz.inverse() * Eigen::Vector2d(0.05, 0);
-    finalize(m);
-    return m;
-  };
+  auto sliding = [&](double step) { return sliding_tip(tip, 0.5, 0.0, 0.3, step); };
   const RunResult coarse = simulate(sliding(1e-3), {});
   const RunResult fine = simulate(sliding(1.25e-4), {});
   REQUIRE(coarse.completed);
@@ -134,19 +138,7 @@ TEST_CASE("stick-slip: the energy balance closes at the integrator's order throu
   // sticking and sliding, with the events located to 1e-12 s. RK4: the residual
   // falls ~16x per halving; asserted >= 2^3.5 (order 3.5).
   const PressedTip tip;
-  auto scene = [&](double step) {
-    Model m = tip.model(0.3, 3.0, 0.4, step);
-    m.contact.locate_tolerance = 1e-12;
-    Data data(m);
-    forward_kinematics(m, data, m.initial.q);
-    Matrix3Xd J(3, 2);
-    point_jacobian(m, data, 1, Eigen::Vector3d(tip.l2, 0, 0), J);
-    Eigen::Matrix2d Jxz;
-    Jxz << J.row(0), J.row(2);
-    m.initial.qd = Jxz.inverse() * Eigen::Vector2d(0.05, 0);
-    finalize(m);
-    return m;
-  };
+  auto scene = [&](double step) { return sliding_tip(tip, 0.3, 3.0, 0.4, step); };
   double previous = 0;
   for (const double h : {4e-3, 2e-3, 1e-3, 5e-4}) {
     const RunResult r = simulate(scene(h), {});
