@@ -9,8 +9,10 @@
 //            Baumgarte): the elbow slides along the table.
 //   lying7:  a 7-link planar arm lying on two spheres (end of link 2 and of
 //            link 6, links 3-6 level on the table), torques half its gravity
-//            load plus small sines: with Coulomb friction (mu 0.6) both
-//            contacts stick (2 normal + 2 tangent rows on 7 joints), without
+//            load plus small sines: with Coulomb friction (mu 0.6) the
+//            contacts stick and slip in turn (2 normal rows, plus a tangent
+//            row per sticking contact, on 7 joints; counters: the share of
+//            steps with a sticking contact and located events per step), without
 //            it the same 2 normal rows slide. The s = 7, p = 2 case.
 //
 // RK4, 1 ms steps. reset(model, data) once, then step() repeatedly; every
@@ -83,7 +85,7 @@ Model lying7(bool friction) {
 void step_cost(benchmark::State& state, const Model& model) {
   Data data(model);
   reset(model, data);
-  long steps = 0, resting = 0, sticking = 0;
+  long steps = 0, resting = 0, sticking = 0, events = 0;
   for (auto _ : state) {
     step(model, data);
     if (data.failure) {
@@ -93,6 +95,7 @@ void step_cost(benchmark::State& state, const Model& model) {
     ++steps;
     if (!data.contact.active.empty()) ++resting;
     if (!data.contact.tangent_rows.empty()) ++sticking;
+    events += static_cast<long>(data.log.events.size());
     if (data.step_count >= kStepsPerReset) {
       state.PauseTiming();
       reset(model, data);
@@ -106,6 +109,9 @@ void step_cost(benchmark::State& state, const Model& model) {
   // Coulomb friction: share of steps with a sticking contact (tangent rows in M*).
   if (model.has_coulomb_friction())
     state.counters["sticking"] = static_cast<double>(sticking) / static_cast<double>(std::max(steps, 1L));
+  // Located events (landings, releases, stick and slip) per step: each one redoes the step a few times.
+  if (model.effects.contact)
+    state.counters["events"] = static_cast<double>(events) / static_cast<double>(std::max(steps, 1L));
 }
 
 }  // namespace

@@ -279,10 +279,23 @@ def step(machine, res, ratios):
         rows.append([label, ns(off), ns(on), f"{on / off:.2f}", ns(on - off), f"{resting:.2f}"])
         r[f"{key}: contact on / off"] = f"{on / off:.2f}× ({ns(on)} vs {ns(off)} ns, +{ns(on - off)} ns)"
     ratios["step"] = r
-    return ([header(machine, res, "ns per `step(model, data)`, RK4, 1 ms steps, reset every 500 steps "
-                    "(outside the timing)"), ""]
-            + table(["scene", "contact off", "contact on", "on / off", "on − off",
-                     "steps with the elbow resting (on)"], rows))
+    head = header(machine, res, "ns per `step(model, data)`, RK4, 1 ms steps, reset every 500 steps "
+                                "(outside the timing)")
+    out = [head, ""] + table(["scene", "contact off", "contact on", "on / off", "on − off",
+                              "steps with the elbow resting (on)"], rows)
+    if "step_cost/lying7_coulomb_sticking" not in res.runs:
+        return out
+    # s = 7, p = 2: the target is Coulomb within 1.5x of frictionless.
+    free = res.median("step_cost/lying7_frictionless")
+    coulomb = res.median("step_cost/lying7_coulomb_sticking")
+    sticking = res.median("step_cost/lying7_coulomb_sticking", "sticking")
+    events = res.median("step_cost/lying7_coulomb_sticking", "events")
+    r["lying7: Coulomb / frictionless"] = f"{coulomb / free:.2f}× ({ns(coulomb)} vs {ns(free)} ns)"
+    return out + [""] + table(
+        ["7-link arm on two spheres (s = 7, p = 2)", "frictionless", "Coulomb stick–slip",
+         "Coulomb / frictionless", "steps with a sticking contact", "located events per step"],
+        [["torques: half the gravity load plus small sines", ns(free), ns(coulomb),
+          f"{coulomb / free:.2f}", f"{sticking:.2f}", f"{events:.3f}"]])
 
 
 # --- README --------------------------------------------------------------------------

@@ -1,5 +1,7 @@
 #include "engine/contact/events.hpp"
 
+#include <algorithm>
+
 #include "engine/contact/detection.hpp"
 #include "engine/contact/stick_slip.hpp"
 #include "engine/run/derivative.hpp"
@@ -106,9 +108,13 @@ double locate(const Model& model, Data& data, double t0, double h, int slot, Eve
   data.x.swap(data.x_start);
   data.t = t_end;
   int side = 0;
-  while (hi - lo > model.contact.locate_tolerance) {
+  const double tolerance = model.contact.locate_tolerance;
+  while (hi - lo > tolerance) {
     double tau = hi - g_hi * (hi - lo) / (g_hi - g_lo);
-    if (!(tau > lo + 1e-3 * (hi - lo) && tau < hi - 1e-3 * (hi - lo))) tau = 0.5 * (lo + hi);
+    if (!(tau > lo && tau < hi)) tau = 0.5 * (lo + hi);
+    // Half a tolerance inside the bracket: a converged estimate then closes
+    // it from one side in one more evaluation (instead of bisecting there).
+    tau = std::clamp(tau, lo + 0.5 * tolerance, hi - 0.5 * tolerance);
     const double g = value_at(tau);
     if (g < 0) {
       hi = tau, g_hi = g;
