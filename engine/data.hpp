@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/contact/contact_data.hpp"
+#include "engine/control/digital_loop.hpp"
 #include "engine/eigen_types.hpp"
 #include "engine/model.hpp"
 #include "engine/run/step_log.hpp"
@@ -101,6 +102,7 @@ struct Data {
   // --- task and controller ---------------------------------------------------
   std::shared_ptr<const Controller> controller;  // tracking controller and its plan; null: open loop
   Eigen::VectorXd q_desired, qd_desired, v_feedforward;  // [n] the plan at the stage time
+  DigitalLoopState loop;  // sampled control: measurements, estimate, held voltage (digital_loop.hpp)
 
   EnergyTerms energy;           // at time t
   EnergyTerms energy_initial;   // at t = 0

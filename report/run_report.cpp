@@ -61,8 +61,31 @@ Rows run_rows(const RunData& run) {
                                     number(settings.value("step", 0.0), "s") + ", duration " +
                                     number(settings.value("duration", 0.0), "s")});
   rows.push_back({"dynamics", dynamics_name(settings.value("dynamics", ""))});
-  if (s.contains("controller") && s["controller"].is_string())
-    rows.push_back({"controller", s["controller"].get<std::string>()});
+  if (s.contains("controller") && s["controller"].is_string()) {
+    std::string believes = "knows the plant exactly";
+    if (s.contains("controller_model") && s["controller_model"].is_array() &&
+        !s["controller_model"].empty()) {
+      believes = "believes";
+      for (const auto& o : s["controller_model"]) believes += " " + o.get<std::string>();
+      believes += " (the plant does not)";
+    }
+    rows.push_back({"controller", s["controller"].get<std::string>() + "; " + believes});
+  }
+  if (s.contains("control_loop") && s["control_loop"].is_object()) {
+    const auto& loop = s["control_loop"];
+    std::string text = number(loop.value("sample_rate", 0.0), "Hz") + " sampling, delay " +
+                       std::to_string(loop.value("delay_samples", 0)) + " samples";
+    if (const long counts = loop.value("encoder_counts_per_rev", 0L); counts > 0)
+      text += ", encoder " + std::to_string(counts) + " counts/rev (" +
+              loop.value("encoder_side", "") + " side)";
+    if (const double noise = loop.value("angle_noise", 0.0); noise > 0)
+      text += ", angle noise σ " + number(noise, "rad");
+    if (const int bits = loop.value("pwm_bits", 0); bits > 0)
+      text += ", " + std::to_string(bits) + "-bit amplifier";
+    rows.push_back({"control loop", text});
+  } else if (s.contains("control_loop")) {
+    rows.push_back({"control loop", "continuous (the control law on the true state)"});
+  }
   const auto& contact = s.value("contact", nlohmann::ordered_json::object());
   if (contact.value("enabled", false))
     rows.push_back({"contact", "events: " + contact.value("events", "") +

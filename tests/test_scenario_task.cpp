@@ -224,3 +224,113 @@ TEST_CASE("controller and hand_load error: values") {
   CHECK_ERROR(two_link_with("hand_load: {force: [0, 1]}\n"), "x.yaml:9:", "hand_load.force",
               "expected a list of 3 numbers");
 }
+
+// ---------------------------------------------------------------------------
+// controller.model: what the controller believes, where it differs from the plant
+
+TEST_CASE("controller.model: a second model with the believed values; the plant unchanged") {
+  const Scenario plain = load(scene_with("task: {path: hold}\ncontroller: {type: pd_feedforward}\n"));
+  CHECK(plain.experiment.controller_model == nullptr);
+  CHECK(&plain.experiment.believed(plain.model) == &plain.model);
+  CHECK(plain.controller_model_overrides.empty());
+
+  const Scenario m = load(scene_with(R"(
+task: {path: hold}
+hand_load: {mass: 0.2}
+controller:
+  type: pd_feedforward
+  model:
+    robot.planar.links[0].mass: 1.1
+    hand_load.mass: 0
+    motors.default.resistance: 2.5
+)"));
+  REQUIRE(m.experiment.controller_model != nullptr);
+  const Model& believed = *m.experiment.controller_model;
+  CHECK(&m.experiment.believed(m.model) == &believed);
+  CHECK(m.model.links[0].mass == 1.0);
+  CHECK(believed.links[0].mass == 1.1);
+  CHECK(m.model.hand_load.mass == 0.2);
+  CHECK(believed.hand_load.mass == 0.0);
+  CHECK(believed.resistance[0] == 2.5);
+  CHECK(m.model.resistance[0] != 2.5);
+  // The payload rides on the hand's link: the plant carries it, the controller does not know.
+  CHECK(m.model.links[1].mass == doctest::Approx(0.5 + 0.2));
+  CHECK(believed.links[1].mass == doctest::Approx(0.5));
+  CHECK(believed.links[1].tip == m.model.links[1].tip);  // the rest as the plant's
+  CHECK(m.controller_model_overrides ==
+        std::vector<std::string>{"robot.planar.links[0].mass=1.1", "hand_load.mass=0",
+                                 "motors.default.resistance=2.5"});
+}
+
+TEST_CASE("controller.model error: keys the plan does not read, structure, values") {
+  CHECK_ERROR(scene_with("controller:\n  model:\n    simulation.step: 1e-4\n"), "x.yaml:14:5:",
+              "controller.model.simulation.step", "may change robot, motors, gravity");
+  CHECK_ERROR(scene_with("controller:\n  model:\n    effects.contact: false\n"), "x.yaml:14:",
+              "controller.model.effects.contact", "may change robot");
+  CHECK_ERROR(scene_with("controller:\n  model: [1, 2]\n"), "x.yaml:13:", "controller.model",
+              "expected a map of key.path: value");
+  CHECK_ERROR(scene_with("controller:\n  model:\n    robot.planar.links[0].mass: -1\n"),
+              "x.yaml:14:5:", "robot.planar.links[0].mass", "in the controller's model");
+  CHECK_ERROR(scene_with("controller:\n  model:\n    robot.planar.links[5].mass: 2\n"),
+              "x.yaml:14:5:", "robot.planar.links[5]", "index out of range");
+  CHECK_ERROR(scene_with("controller:\n  model:\n    robot.planar.links: [{length: 0.3, mass: 1}]\n"),
+              "x.yaml:14:5:", "controller.model", "the plant's number of joints (2), got 1");
+}
+
+// ---------------------------------------------------------------------------
+// controller: the digital loop (sample_rate, delay, pwm_bits, sensors)
+
+TEST_CASE("controller: a digital loop at 1 kHz with an encoder, noise and a velocity filter") {
+  const Scenario plain = load(scene_with("task: {path: hold}\ncontroller: {type: pd}\n"));
+  CHECK_FALSE(plain.experiment.controller.loop.sampled());  // default: continuous
+  const Scenario m = load(scene_with(R"(
+task: {path: hold}
+controller:
+  type: pd
+  sample_rate: 1000
+  delay: 1
+  pwm_bits: 12
+  sensors:
+    encoder: {counts_per_rev: 4096, side: joint}
+    noise: 1.0e-5
+    velocity_cutoff: 200
+    seed: 42
+)"));
+  const elbowsim::DigitalLoopSpec& loop = m.experiment.controller.loop;
+  CHECK(loop.sampled());
+  CHECK(loop.sample_period == doctest::Approx(1e-3));
+  CHECK(loop.delay == 1);
+  CHECK(loop.pwm_bits == 12);
+  CHECK(loop.sensors.counts_per_rev == 4096);
+  CHECK(loop.sensors.side == elbowsim::SensorSpec::EncoderSide::joint);
+  CHECK(loop.sensors.noise == 1e-5);
+  CHECK(loop.sensors.velocity_cutoff == 200);
+  CHECK(loop.sensors.seed == 42);
+}
+
+TEST_CASE("controller error: the digital loop") {
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, delay: 1}\n"), "x.yaml:13:",
+              "controller.delay", "needs controller.sample_rate");
+  CHECK_ERROR(scene_with("controller: {sample_rate: 1000}\n"), "x.yaml:12:",
+              "controller.sample_rate", "an open-loop scene has no control loop");
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, sample_rate: 5000}\n"),
+              "x.yaml:13:", "controller.sample_rate", "shorter than simulation.step");
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, sample_rate: -1}\n"),
+              "x.yaml:13:", "controller.sample_rate", "must be > 0");
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, sample_rate: 100, delay: 1.5}\n"),
+              "x.yaml:13:", "controller.delay", "whole number");
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, sample_rate: 100, pwm_bits: 0}\n"),
+              "x.yaml:13:", "controller.pwm_bits", "from 1 to 32");
+  CHECK_ERROR(scene_with(R"(
+task: {path: hold}
+controller: {type: pd, sample_rate: 100, sensors: {encoder: {side: joint}}}
+)"),
+              "x.yaml:13:", "controller.sensors.encoder.counts_per_rev", "required key is missing");
+  CHECK_ERROR(scene_with(R"(
+task: {path: hold}
+controller: {type: pd, sample_rate: 100, sensors: {encoder: {counts_per_rev: 10, side: wheel}}}
+)"),
+              "x.yaml:13:", "controller.sensors.encoder.side", "must be one of motor, joint");
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, sample_rate: 100, sensors: {noise: -1}}\n"),
+              "x.yaml:13:", "controller.sensors.noise", "must be >= 0");
+}

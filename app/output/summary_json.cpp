@@ -57,6 +57,22 @@ nlohmann::ordered_json settings_json(const Options& o) {
 
 }  // namespace
 
+// "continuous", or the digital loop's settings (engine/control/digital_loop.hpp).
+static nlohmann::ordered_json control_loop_json(const DigitalLoopSpec& loop) {
+  if (!loop.sampled()) return "continuous";
+  const SensorSpec& s = loop.sensors;
+  nlohmann::ordered_json j;
+  j["sample_rate"] = 1.0 / loop.sample_period;
+  j["delay_samples"] = loop.delay;
+  j["pwm_bits"] = loop.pwm_bits;  // 0: exact voltage
+  j["encoder_counts_per_rev"] = s.counts_per_rev;  // 0: exact angles
+  j["encoder_side"] = s.side == SensorSpec::EncoderSide::motor ? "motor" : "joint";
+  j["angle_noise"] = s.noise;
+  j["velocity_cutoff"] = s.velocity_cutoff;  // 0: raw backward difference
+  j["noise_seed"] = s.seed;
+  return j;
+}
+
 nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& result) {
   const Model& m = scenario.model;
   const double e_in = result.energy_final.electrical_in;
@@ -80,6 +96,9 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   j["balance_residual_relative"] = e_in != 0 ? std::abs(result.balance_residual / e_in) : 0.0;
   j["metrics"] = report::metrics_json(result.metrics);  // the vocabulary of engine/recording/metrics.hpp
   j["controller"] = to_string(scenario.experiment.controller.kind);
+  // Where the controller's model differs from the plant ([] when it knows it exactly).
+  j["controller_model"] = scenario.controller_model_overrides;
+  j["control_loop"] = control_loop_json(scenario.experiment.controller.loop);
   j["contact"] = contact_json(m, result);
   j["warnings"] = result.warnings;
   return j;

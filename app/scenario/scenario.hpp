@@ -29,6 +29,9 @@ struct Scenario {
   std::string description;
   Model model;  // finalized (elbowsim::finalize called); model.initial from `initial:`
   Experiment experiment;  // task: and controller: (the plant never reads them)
+  // controller.model as given ("key.path=value" each): where the controller's
+  // model (experiment.controller_model) differs from the plant. Empty: none.
+  std::vector<std::string> controller_model_overrides;
   OutputSettings output;
   RenderSettings render;  // how frames look; rendered when output.video or output.frames
   // The scenario as run: the file's YAML with the overrides applied. A run

@@ -80,7 +80,8 @@ void finalize_model(Model& model, const Source& source) {
 // The sections, in dependency order: effects and robot (dof) before motors,
 // elbows, initial state, inputs and the task. Fills `variants` with the
 // variants: section (with where each entry is written).
-Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>& variants) {
+Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>& variants,
+              std::vector<VariantSpec::Entry>& beliefs) {
   root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "elbows",
                    "table", "contact", "initial", "simulation", "inputs", "output", "render",
                    "task", "controller", "hand_load", "variants", "validity"});
@@ -104,6 +105,8 @@ Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>&
   model.inputs = read_inputs(root.get("inputs"), model);
   s.experiment.task = read_task(root.get("task"), model);
   s.experiment.controller = read_controller(root.get("controller"), model, s.experiment.task);
+  if (const Value controller = root.get("controller"); controller.present())
+    beliefs = read_controller_model(controller.get("model"));
   model.hand_load = read_hand_load(root.get("hand_load"));
   s.output = read_output(root.get("output"), model.name);
   s.render = read_render(root.get("render"));
@@ -115,6 +118,36 @@ Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>&
     for (const VariantSpec::Entry& e : v.overrides) s.variants.back().second.push_back(e.text);
   }
   return s;
+}
+
+// The controller's model: the scenario (as loaded so far) with controller.model's
+// entries applied, read like the plant, so every key is checked the same way.
+// Its structure must be the plant's: it may believe other numbers only.
+Model read_believed(const YAML::Node& root, Source source,
+                    const std::vector<VariantSpec::Entry>& beliefs, const Model& plant) {
+  YAML::Node copy = YAML::Clone(root);
+  YAML::Node controller = copy["controller"];
+  controller.remove("model");
+  copy.remove("variants");
+  source.set_note(source.note() + " (in the controller's model, controller.model)");
+  for (const VariantSpec::Entry& e : beliefs) apply_override(copy, e.text, source, e.origin);
+  std::vector<VariantSpec> none;
+  std::vector<VariantSpec::Entry> no_beliefs;
+  Model believed = read(Value(source, copy), source, none, no_beliefs).model;
+  auto differs = [&](const char* what, std::size_t a, std::size_t b) {
+    if (a == b) return;
+    const VariantSpec::Entry& e = beliefs.front();
+    throw ScenarioError(e.origin.file, e.origin.line, e.origin.column, "controller.model",
+                        std::string("the controller's model must have the plant's ") + what +
+                            " (" + std::to_string(b) + "), got " + std::to_string(a) +
+                            ": it may believe other values, not another structure");
+  };
+  differs("number of joints", static_cast<std::size_t>(believed.dof),
+          static_cast<std::size_t>(plant.dof));
+  differs("number of motors", believed.motors.size(), plant.motors.size());
+  differs("number of elbows", believed.elbows.size(), plant.elbows.size());
+  differs("number of table boxes", believed.table.size(), plant.table.size());
+  return believed;
 }
 
 // One load: the file, then `variant`'s overrides (if any; errors they cause
@@ -130,8 +163,14 @@ Scenario load_once(const std::string& text, const std::string& file, const Varia
   }
   for (const std::string& o : overrides) apply_override(root, o, source);
   if (variant) root.remove("variants");
-  Scenario scenario = read(Value(source, root), source, variants);
+  std::vector<VariantSpec::Entry> beliefs;
+  Scenario scenario = read(Value(source, root), source, variants, beliefs);
   scenario.variant = variant ? variant->name : "";
+  if (!beliefs.empty()) {
+    scenario.experiment.controller_model =
+        std::make_shared<const Model>(read_believed(root, source, beliefs, scenario.model));
+    for (const VariantSpec::Entry& e : beliefs) scenario.controller_model_overrides.push_back(e.text);
+  }
   YAML::Emitter resolved;
   resolved << root;
   scenario.resolved_yaml = std::string(resolved.c_str()) + "\n";

@@ -52,6 +52,9 @@ void check_initial_penetration(const Value& root, const Model& model);
 HandTask read_task(const Value& task, const Model& model);
 ControllerSpec read_controller(const Value& controller, const Model& model, const HandTask& task);
 HandLoad read_hand_load(const Value& hand_load);
+// controller.sample_rate, delay, pwm_bits, sensors: the digital loop (default:
+// continuous control). `step` is simulation.step: the period may not be shorter.
+DigitalLoopSpec read_digital_loop(const Value& controller, double step);
 
 // variants (optional): name -> overrides "key.path=value", in file order, each
 // with where it was written (for errors found when the variant is loaded).
@@ -64,5 +67,10 @@ struct VariantSpec {
   std::vector<Entry> overrides;
 };
 std::vector<VariantSpec> read_variants(const Value& variants);
+
+// controller.model (optional): what the controller believes where it differs
+// from the plant, as overrides "key.path=value" of robot, motors, gravity,
+// hand_load, elbows or table keys (the loader reads them into a second model).
+std::vector<VariantSpec::Entry> read_controller_model(const Value& model);
 
 }  // namespace elbowsim::loader

@@ -176,7 +176,8 @@ ControllerSpec read_controller(const Value& controller, const Model& model, cons
   out.kp = Eigen::VectorXd::Constant(dof, kDefaultKp);
   out.kd = Eigen::VectorXd::Constant(dof, kDefaultKd);
   if (!controller.present()) return out;
-  controller.allow_keys({"type", "kp", "kd", "desired_force"});
+  controller.allow_keys({"type", "kp", "kd", "desired_force", "model", "sample_rate", "delay",
+                         "pwm_bits", "sensors"});
   const Value type = controller.get("type");
   if (type.present())
     out.kind = choose(type, std::vector<std::pair<Kind, std::string_view>>{
@@ -187,7 +188,13 @@ ControllerSpec read_controller(const Value& controller, const Model& model, cons
   out.kp = read_gains(controller.get("kp"), kDefaultKp, dof);
   out.kd = read_gains(controller.get("kd"), kDefaultKd, dof);
   out.desired_force = value_or(controller.get("desired_force"), out.desired_force, positive);
-  if (out.kind == Kind::open_loop) return out;
+  out.loop = read_digital_loop(controller, model.options.step);
+  if (out.kind == Kind::open_loop) {
+    if (out.loop.sampled())
+      controller.get("sample_rate").fail("an open-loop scene has no control loop to sample (give "
+                                         "controller.type pd, pd_feedforward or force)");
+    return out;
+  }
   // A closed-loop controller tracks the task through the motors.
   const std::string kind = type.text();
   if (task.path == Path::none)

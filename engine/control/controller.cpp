@@ -36,7 +36,7 @@ void track(const Controller& controller, Data& data, double t, ConstVec q, Const
 
 }  // namespace
 
-void command(const Model& model, Data& data, double t, ConstVec q, ConstVec qd) {
+void control_law(const Model& model, Data& data, double t, ConstVec q, ConstVec qd) {
   if (!model.has_motor()) {
     for (int j = 0; j < model.dof; ++j) data.actuation[j] = input_at(model, j, t);
     return;
@@ -45,6 +45,17 @@ void command(const Model& model, Data& data, double t, ConstVec q, ConstVec qd) 
   if (controller && controller->plan && controller->spec.kind != ControllerSpec::Kind::open_loop)
     return track(*controller, data, t, q, qd);
   for (int j = 0; j < model.dof; ++j) data.voltage[j] = input_at(model, j, t);
+}
+
+void command(const Model& model, Data& data, double t, ConstVec q, ConstVec qd) {
+  const Controller* controller = data.controller.get();
+  if (model.has_motor() && controller && controller->plan &&
+      controller->spec.kind != ControllerSpec::Kind::open_loop && controller->spec.loop.sampled()) {
+    // Zero-order hold: the plan at t is still what the last sample left.
+    data.voltage = data.loop.held;
+    return;
+  }
+  control_law(model, data, t, q, qd);
 }
 
 }  // namespace elbowsim

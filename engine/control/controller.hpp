@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <memory>
 
+#include "engine/control/digital_loop.hpp"
 #include "engine/data.hpp"
 
 namespace elbowsim {
@@ -24,6 +25,7 @@ struct ControllerSpec {
   Eigen::VectorXd kp;             // [V/rad] per joint
   Eigen::VectorXd kd;             // [V s/rad] per joint
   double desired_force = 5.0;     // [N] per resting elbow (force control)
+  DigitalLoopSpec loop;           // sampling, sensors, amplifier (digital_loop.hpp); default: continuous
 };
 
 const char* to_string(ControllerSpec::Kind k);
@@ -41,6 +43,13 @@ struct Controller {
 // unsaturated voltage into data.voltage [V]; without one, the joint torque
 // into data.actuation [N m]. Tracking controllers also leave the plan's
 // q_desired, qd_desired (and v_feedforward) at t in data. Allocates nothing.
+// Sampled control (spec.loop.sampled()): the voltage the amplifier holds
+// (digital_loop.hpp), whatever t, q and qd.
 void command(const Model& model, Data& data, double t, ConstVec q, ConstVec qd);
+
+// The control law itself on the state (q, qd) it is given (true or
+// measured): the unsaturated voltage into data.voltage. A tracking
+// controller also leaves the plan at t in data. Allocates nothing.
+void control_law(const Model& model, Data& data, double t, ConstVec q, ConstVec qd);
 
 }  // namespace elbowsim

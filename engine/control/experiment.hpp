@@ -4,6 +4,8 @@
 // voltages before a run; the dynamics never read it.
 #pragma once
 
+#include <memory>
+
 #include "engine/control/controller.hpp"
 #include "engine/control/task.hpp"
 
@@ -12,6 +14,15 @@ namespace elbowsim {
 struct Experiment {
   HandTask task;
   ControllerSpec controller;
+  // What the controller believes the plant is, when it differs from the
+  // plant: the plan, its feed-forward and inverse kinematics are built from
+  // it. Null: the controller knows the plant exactly.
+  std::shared_ptr<const Model> controller_model;
+
+  // The model the plan is built from: the controller's, else the plant's.
+  const Model& believed(const Model& plant) const {
+    return controller_model ? *controller_model : plant;
+  }
 
   // Whether a run needs a plan: a hand task, or a controller that tracks one.
   bool needs_plan() const {

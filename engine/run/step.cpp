@@ -9,6 +9,7 @@
 #include "engine/contact/impact.hpp"
 #include "engine/contact/projection.hpp"
 #include "engine/control/controller.hpp"
+#include "engine/control/digital_loop.hpp"
 #include "engine/control/plan.hpp"
 #include "engine/dynamics/energy.hpp"
 #include "engine/run/derivative.hpp"
@@ -24,10 +25,14 @@ Eigen::VectorXd or_zeros(const Eigen::VectorXd& v, int n) {
   return v.size() == n ? v : Eigen::VectorXd::Zero(n);
 }
 
-// The length of the coming step: the scene's, or what is left before the end.
+// The length of the coming step: the scene's, or what is left before the end
+// or before the digital loop's next sample instant (the voltage changes there).
 double step_length(const Model& model, const Data& data) {
   const double left = model.options.duration - data.t;
-  return left > 1e-3 * model.options.step ? std::min(model.options.step, left) : model.options.step;
+  double h = left > 1e-3 * model.options.step ? std::min(model.options.step, left) : model.options.step;
+  const double to_sample = time_to_sample(data);
+  if (to_sample > 1e-9 * model.options.step) h = std::min(h, to_sample);
+  return h;
 }
 
 // Landings and releases inside the step, impacts, drift control and the
@@ -83,6 +88,7 @@ void reset(const Model& model, Data& data) {
   check_data(model, data);
   prepare_integrator(model, data);
   reset_state(model, data);
+  start_digital_loop(model, data);  // the first sample, before anything reads the voltage
   data.failure = Failure{};
   data.validity = ValidityTrack{};
   data.log.clear();
@@ -108,6 +114,7 @@ void step(const Model& model, Data& data) {
   integrate_step(model, data, step_length(model, data));
   if (model.effects.contact) contact_after_step(model, data, t0);
   check_step(model, data);  // run/validity.hpp: divergence, bounds, penetration
+  if (!data.failure) sample_if_due(model, data);
 }
 
 }  // namespace elbowsim

@@ -80,3 +80,46 @@ TEST_CASE("the experiment: resting the elbow takes less electrical energy for th
   CHECK(on.metrics["hand_error_rms"] < 1e-6);
   CHECK(off.metrics["hand_error_rms"] < 1e-6);
 }
+
+// The plant with every link mass scaled by `factor` (the controller's belief).
+static std::shared_ptr<const Model> masses_scaled(const Model& plant, double factor) {
+  Model believed = plant;
+  for (Link& link : believed.links) link.mass *= factor;
+  finalize(believed);
+  return std::make_shared<const Model>(believed);
+}
+
+TEST_CASE("controller model equal to the plant: the same run, bit for bit") {
+  const ExperimentScene scene = WritingArm{}.scene();
+  Experiment believing = scene.experiment;
+  believing.controller_model = std::make_shared<const Model>(scene.model);
+  const RunResult a = simulate(scene.model, scene.experiment, RunOptions{10, {}});
+  const RunResult b = simulate(scene.model, believing, RunOptions{10, {}});
+  REQUIRE(a.valid);
+  REQUIRE(a.trajectory.values.size() == b.trajectory.values.size());
+  CHECK(std::memcmp(a.trajectory.values.data(), b.trajectory.values.data(),
+                    a.trajectory.values.size() * sizeof(double)) == 0);
+}
+
+TEST_CASE("controller model with wrong link masses: the hand error grows with the mismatch") {
+  // Elbow off (held above the table): the feed-forward carries the whole arm,
+  // so its error in the masses reaches the hand through the PD loop only.
+  WritingArm arm;
+  arm.elbow_on = false;
+  const ExperimentScene scene = arm.scene();
+  double previous = -1, exact = 0;
+  for (double mismatch : {0.0, 0.05, 0.10, 0.20}) {
+    Experiment x = scene.experiment;
+    x.controller_model = masses_scaled(scene.model, 1.0 + mismatch);
+    const RunResult r = simulate(scene.model, x, RunOptions{10, {}});
+    REQUIRE(r.valid);
+    const double error = r.metrics["hand_error_rms"];
+    MESSAGE("masses believed +", 100 * mismatch, " %: RMS hand error ", error, " m");
+    CHECK(error > previous);
+    // A model error, not integration error: 5 % already gives ten times the
+    // error of the exact model (which is integration error, < 1e-6 m above).
+    if (mismatch == 0) exact = error;
+    else CHECK(error > 10 * exact);
+    previous = error;
+  }
+}
