@@ -201,26 +201,26 @@ def constrained(machine, res, ratios):
 
 
 def collision(machine, res, ratios):
-    shapes = []
-    for n in res.names():
-        m = re.fullmatch(r"BM_ElbowContacts/elbows:(\d+)/boxes:(\d+)", n)
-        if m:
-            shapes.append((int(m[2]), int(m[1])))
-    rows, elbow, link = [], {}, {}
-    for boxes, elbows in sorted(shapes):
-        suffix = f"elbows:{elbows}/boxes:{boxes}"
-        elbow[elbows, boxes] = res.median(f"BM_ElbowContacts/{suffix}")
-        link[elbows, boxes] = res.median(f"BM_LinkPenetrations/{suffix}")
-        pen = res.median(f"BM_LinkPenetrations/{suffix}", "penetrations_per_call")
-        rows.append([elbows, boxes, us(elbow[elbows, boxes]), us(link[elbows, boxes]), f"{pen:.2f}"])
-    r = {
-        "elbow distances, µs": ", ".join(f"{e} elbows/{b} boxes: {us(v)}" for (e, b), v in sorted(elbow.items())),
-        "link-capsule checks, µs": span([v / 1e3 for v in link.values()]),
-    }
+    sizes = sorted({int(m[1]) for n in res.names()
+                    if (m := re.fullmatch(r"BM_Detection/s:(\d+)/lifted:0", n))})
+    rows, r = [], {}
+    for s_ in sizes:
+        fk = res.median(f"BM_ForwardKinematics/s:{s_}/lifted:0")
+        near = res.median(f"BM_Detection/s:{s_}/lifted:0")
+        far = res.median(f"BM_Detection/s:{s_}/lifted:1")
+        far_fk = res.median(f"BM_ForwardKinematics/s:{s_}/lifted:1")
+        gjk = res.median(f"BM_ElbowSpheresGjk/s:{s_}/lifted:0")
+        pairs = res.median(f"BM_Detection/s:{s_}/lifted:0", "near_pairs")
+        slots = res.median(f"BM_Detection/s:{s_}/lifted:0", "slots")
+        rows.append([s_, f"{slots:.0f}", f"{pairs:.0f}", us(fk), us(near), us(near - fk),
+                     us(far), us(far - far_fk), us(gjk)])
+        r[f"s = {s_}: detection lying / lifted, µs"] = f"{us(near)} / {us(far)} (forward kinematics {us(fk)})"
     ratios["collision"] = r
-    return ([header(machine, res, "µs per call, 4-link arm, averaged over 64 poses"), ""]
-            + table(["elbows", "table boxes", "elbow distances (µs)", "link-capsule checks (µs)",
-                     "link penetrations found per call"], rows))
+    return ([header(machine, res, "µs per call, arms of s links over three table boxes"), ""]
+            + table(["s", "slots (links + elbows, × boxes)", "near pairs (lying)",
+                     "forward kinematics", "detection, lying on the table",
+                     "of which the query", "detection, lifted 1 m", "of which the query",
+                     "before: elbow spheres by GJK (lying)"], rows))
 
 
 def render(machine, path, ratios):
