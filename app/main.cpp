@@ -2,7 +2,10 @@
 // --set values are YAML and may hold commas: do not split them.
 #define CXXOPTS_VECTOR_DELIMITER '\0'
 #include <cxxopts.hpp>
+#include <algorithm>
+#include <charconv>
 #include <iostream>
+#include <thread>
 
 #include "app/commands/commands.hpp"
 
@@ -21,6 +24,8 @@ constexpr const char* kUsage = R"(usage:
   elbowsim report RUN_DIR [--expect EXPR ...]               rebuild report.html (no simulation)
   elbowsim compare RUN_DIR RUN_DIR ... [--out DIR] [--expect EXPR ...]
                                                             compare saved runs in one report
+  elbowsim montecarlo SCENARIO [--samples N] [--seed S] [--jobs J] [--out DIR] [--set ...]
+                       [--no-report]                        draw the uncertain plant N times
   elbowsim --help | --version
 
 Outputs of run (in output.folder, or DIR): scenario.yaml (as run), trajectory.csv,
@@ -34,7 +39,10 @@ summary.json metric (compare: "A.energy_final.joule < B.energy_final.joule", A a
 run folder names); README "Expectations" has the language.
 A scenario with variants: runs each into DIR/<variant>/, then DIR/comparison.csv and
 comparison.json. sweep writes DIR/KEY=V/ per value and DIR/sweep.csv (DIR default:
-output.folder/sweep).
+output.folder/sweep). montecarlo draws the scenario's uncertainty: parameters N times
+(default 30), runs every variant on each draw under the nominal controller, and writes
+DIR/samples.csv, montecarlo.json and report.html (DIR default: output.folder/montecarlo);
+--jobs defaults to the machine's cores.
 Exit codes: 0 ok, 1 I/O error, 2 bad input, 3 run stopped early (outputs kept),
 4 an --expect expression does not hold.
 Scenario keys: scenarios/README.md)";
@@ -54,7 +62,10 @@ cxxopts::Options make_options() {
       "size", "render: WIDTHxHEIGHT", cxxopts::value<std::string>())(
       "fps", "render: frames per second", cxxopts::value<std::string>())(
       "key", "sweep: the key path to vary", cxxopts::value<std::string>())(
-      "values", "sweep: its values, comma-separated", cxxopts::value<std::string>());
+      "values", "sweep: its values, comma-separated", cxxopts::value<std::string>())(
+      "samples", "montecarlo: number of draws", cxxopts::value<std::string>())(
+      "seed", "montecarlo: seed of the draws", cxxopts::value<std::string>())(
+      "jobs", "montecarlo: threads", cxxopts::value<std::string>());
   options.parse_positional({"positional"});
   return options;
 }
@@ -95,6 +106,31 @@ int dispatch(const cxxopts::ParseResult& parsed) {
     return render_command(args);
   }
   if (command == "validate" && words.size() == 2) return validate_command(words[1], sets);
+  if (command == "montecarlo" && words.size() == 2) {
+    MonteCarloArguments args;
+    args.scenario = words[1];
+    args.sets = sets;
+    if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
+    // Whole numbers parsed here (cxxopts' integer parser trips GCC 12's -Wrestrict).
+    long number = 0;
+    for (const char* key : {"samples", "seed", "jobs"}) {
+      if (!parsed.count(key)) continue;
+      const std::string text = parsed[key].as<std::string>();
+      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
+      if (ec != std::errc{} || end != text.data() + text.size() || number < 0) {
+        std::cerr << "error: montecarlo: --" << key << " needs a whole number >= 0 (got \"" << text
+                  << "\")\n";
+        return exit_bad_input;
+      }
+      if (std::string(key) == "samples") args.samples = number;
+      if (std::string(key) == "seed") args.seed = static_cast<std::uint64_t>(number);
+      if (std::string(key) == "jobs") args.jobs = static_cast<int>(std::min(number, 256L));
+    }
+    if (!parsed.count("jobs"))
+      args.jobs = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    args.report = !parsed.count("no-report");
+    return montecarlo_command(args);
+  }
   if (command == "report" && words.size() == 2)
     return report_command({words[1], strings(parsed, "expect")});
   if (command == "compare" && words.size() >= 3) {

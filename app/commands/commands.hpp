@@ -4,6 +4,7 @@
 // --expect expression does not hold.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
@@ -76,6 +77,18 @@ struct CompareArguments {
   std::optional<std::string> out;  // default: "compare" beside the first run folder
   std::vector<std::string> expect;  // paths start with a run label (folder name)
 };
+// elbowsim montecarlo SCENARIO [--samples N] [--seed S] [--jobs J] [--out DIR] [--set ...]
+struct MonteCarloArguments {
+  std::string scenario;
+  std::optional<std::string> out;  // default: output.folder + "/montecarlo"
+  std::vector<std::string> sets;
+  long samples = 30;
+  std::optional<std::uint64_t> seed;  // default: uncertainty.seed
+  int jobs = 1;
+  bool report = true;  // false: --no-report
+};
+int montecarlo_command(const MonteCarloArguments& args);
+
 int report_command(const ReportArguments& args);
 int compare_command(const CompareArguments& args);
 

@@ -3,6 +3,7 @@
 // The schema is documented key by key in scenarios/README.md.
 #pragma once
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -24,6 +25,27 @@ struct OutputSettings {
   bool frames = false;                          // render frames/frame_00001.png ...
 };
 
+// uncertainty: the plant parameters a Monte Carlo study draws (elbowsim
+// montecarlo); a single run uses the nominal values. One entry per concrete
+// key ("links[*]" in the file is expanded to every link).
+struct UncertainParameter {
+  enum class Law {
+    uniform,  // nominal x (1 + u), u uniform in [-spread, +spread]
+    normal,   // nominal x (1 + spread z), z standard normal truncated at +-3
+    range,    // uniform in [low, high], absolute (a payload, a table height)
+  };
+  std::string key;     // concrete key path, e.g. robot.planar.links[2].mass
+  std::string given;   // as written in the file (may hold [*])
+  Law law = Law::uniform;
+  double spread = 0;   // uniform, normal: relative
+  double low = 0, high = 0;  // range
+  double nominal = 0;  // its value in this scenario (NaN when absent: range only)
+};
+struct Uncertainty {
+  std::uint64_t seed = 1;  // default of --seed
+  std::vector<UncertainParameter> parameters;
+};
+
 struct Scenario {
   std::string file;  // path it was loaded from
   std::string description;
@@ -32,6 +54,7 @@ struct Scenario {
   // controller.model as given ("key.path=value" each): where the controller's
   // model (experiment.controller_model) differs from the plant. Empty: none.
   std::vector<std::string> controller_model_overrides;
+  Uncertainty uncertainty;  // uncertainty: (empty: nothing is drawn)
   OutputSettings output;
   RenderSettings render;  // how frames look; rendered when output.video or output.frames
   // The scenario as run: the file's YAML with the overrides applied. A run

@@ -84,7 +84,7 @@ Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>&
               std::vector<VariantSpec::Entry>& beliefs) {
   root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "elbows",
                    "table", "contact", "initial", "simulation", "inputs", "output", "render",
-                   "task", "controller", "hand_load", "variants", "validity"});
+                   "task", "controller", "hand_load", "variants", "validity", "uncertainty"});
   Scenario s;
   s.file = source.file();
   Model& model = s.model;
@@ -166,6 +166,7 @@ Scenario load_once(const std::string& text, const std::string& file, const Varia
   std::vector<VariantSpec::Entry> beliefs;
   Scenario scenario = read(Value(source, root), source, variants, beliefs);
   scenario.variant = variant ? variant->name : "";
+  scenario.uncertainty = read_uncertainty(Value(source, root).get("uncertainty"), root);
   if (!beliefs.empty()) {
     scenario.experiment.controller_model =
         std::make_shared<const Model>(read_believed(root, source, beliefs, scenario.model));

@@ -68,6 +68,11 @@ struct VariantSpec {
 };
 std::vector<VariantSpec> read_variants(const Value& variants);
 
+// uncertainty (optional): the plant parameters a Monte Carlo study draws,
+// expanded ("[*]") and with their nominal values looked up in `root` (the
+// scenario as loaded: after variants and --set).
+Uncertainty read_uncertainty(const Value& uncertainty, const YAML::Node& root);
+
 // controller.model (optional): what the controller believes where it differs
 // from the plant, as overrides "key.path=value" of robot, motors, gravity,
 // hand_load, elbows or table keys (the loader reads them into a second model).

@@ -1,0 +1,377 @@
+// elbowsim montecarlo: the scenario's uncertain plant parameters drawn N
+// times (its uncertainty: section), each draw applied to every variant (a
+// paired comparison) while the controller keeps the nominal model; then
+// samples.csv, montecarlo.json and a report with the verdict. The same seed
+// gives the same bytes, whatever --jobs.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <thread>
+
+#include "app/commands/commands.hpp"
+#include "app/output/atomic_file.hpp"
+#include "app/scenario/scenario.hpp"
+#include "app/study/draws.hpp"
+#include "engine/control/inverse_kinematics.hpp"
+#include "engine/run/simulator.hpp"
+#include "report/montecarlo_report.hpp"
+#include "report/statistics.hpp"
+
+namespace elbowsim {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// The metrics a study compares, with their units.
+const std::vector<std::pair<std::string, std::string>> kMetrics = {
+    {"energy_in", "J"}, {"joule", "J"}, {"hand_error_rms", "m"}, {"hand_error_max", "m"},
+    {"hand_error_final", "m"}};
+
+constexpr double kLevel = 0.95;
+constexpr int kResamples = 4000;
+// Hand errors below this many times the integration floor measure the
+// integrator, not the controller: no accuracy verdict (10x: at most ~10 %
+// of the error is integration error).
+constexpr double kFloorFactor = 10;
+// More invalid draws than this share: no verdict at all.
+constexpr double kMaxInvalidShare = 0.10;
+
+struct Sample {
+  bool valid = false;
+  std::string failure;
+  std::map<std::string, double> metrics;
+};
+
+// One variant as the study runs it: its nominal scenario and what its
+// controller believes (the nominal plant, or its controller.model).
+struct Variant {
+  std::string name;  // "" without variants
+  Scenario nominal;
+  std::shared_ptr<const Model> believed;
+};
+
+Scenario load_variant(const MonteCarloArguments& args, const std::string& name,
+                      const std::vector<std::string>& extra) {
+  std::vector<std::string> sets = args.sets;
+  sets.insert(sets.end(), extra.begin(), extra.end());
+  return name.empty() ? load_scenario(args.scenario, sets)
+                      : load_scenario_variant(args.scenario, name, sets);
+}
+
+Sample run_one(const Scenario& scenario, const std::shared_ptr<const Model>& believed) {
+  Sample s;
+  Experiment x = scenario.experiment;
+  x.controller_model = believed;
+  try {
+    const RunResult r = simulate(scenario.model, x, RunOptions{scenario.output.every, {}});
+    s.valid = r.valid;
+    s.failure = r.failure;
+    for (const auto& [name, unit] : kMetrics)
+      if (const Metric* m = r.metrics.find(name)) s.metrics[name] = m->values.front();
+  } catch (const PlanError& e) {
+    s.failure = std::string("the plan failed: ") + e.what();
+  }
+  return s;
+}
+
+// Draw `d` of variant `v`: its drawn plant under the nominal controller.
+Sample run_draw(const MonteCarloArguments& args, const Variant& v, const study::Draw& d) {
+  Scenario drawn;
+  try {
+    drawn = load_variant(args, v.name, study::draw_overrides(v.nominal.uncertainty, d));
+  } catch (const ScenarioError& e) {
+    Sample s;
+    s.failure = std::string("the drawn values are not a valid scenario: ") + e.what();
+    return s;
+  }
+  return run_one(drawn, v.believed);
+}
+
+// Runs every (draw, variant) on `jobs` threads; results by index, so the
+// order of completion does not matter.
+std::vector<std::vector<Sample>> run_all(const MonteCarloArguments& args,
+                                         const std::vector<Variant>& variants,
+                                         const std::vector<study::Draw>& draws, int jobs) {
+  const std::size_t nv = variants.size(), total = draws.size() * nv;
+  std::vector<std::vector<Sample>> out(draws.size(), std::vector<Sample>(nv));
+  std::atomic<std::size_t> next{0}, done{0};
+  auto worker = [&] {
+    for (std::size_t k; (k = next++) < total;) {
+      out[k / nv][k % nv] = run_draw(args, variants[k % nv], draws[k / nv]);
+      const std::size_t finished = ++done;
+      if (finished % std::max<std::size_t>(1, total / 10) == 0)
+        std::cerr << "montecarlo: " << finished << " of " << total << " runs\n";
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+  return out;
+}
+
+// The integration floor of the hand error: the nominal run at the step and
+// at half of it.
+Json accuracy_floor(const MonteCarloArguments& args, const Variant& v) {
+  const double h = v.nominal.model.options.step;
+  const Sample full = run_one(v.nominal, v.believed);
+  const Scenario halved = load_variant(args, v.name, {"simulation.step=" + study::exact(h / 2)});
+  const Sample half = run_one(halved, v.believed);
+  Json f;
+  f["step"] = h;
+  const auto rms = [](const Sample& s) {
+    const auto it = s.metrics.find("hand_error_rms");
+    return s.valid && it != s.metrics.end() ? it->second : std::nan("");
+  };
+  f["hand_error_rms_step"] = rms(full);
+  f["hand_error_rms_half_step"] = rms(half);
+  f["floor"] = std::abs(rms(full) - rms(half));
+  f["nominal_valid"] = full.valid && half.valid;
+  return f;
+}
+
+std::string percent(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", 100 * x);
+  return b;
+}
+
+std::string num(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", x);
+  return b;
+}
+
+// One metric's verdict line for the pair A/B.
+std::string metric_verdict(const std::string& a, const std::string& b, const std::string& what,
+                           const report::PairedRatio& r) {
+  const std::string ci = "paired 95 % CI of " + a + "/" + b + ": " + num(r.ci.low) + "–" +
+                         num(r.ci.high) + ", " + std::to_string(r.pairs) + " draws";
+  if (r.ci.contains(1.0))
+    return what + ": no significant difference between " + a + " and " + b + " (" + ci +
+           ", contains 1)";
+  const bool less = r.ratio < 1;
+  return what + ": " + a + " " + (less ? percent(1 - r.ratio) + " % lower" : percent(r.ratio - 1) + " % higher") +
+         " than " + b + " (" + ci + "; " + a + " lower in " + percent(r.win_rate) + " % of draws)";
+}
+
+Json pair_json(const std::vector<Variant>& variants, std::size_t ia, std::size_t ib,
+               const std::vector<std::vector<Sample>>& samples, const Json& floors,
+               std::uint64_t seed) {
+  const std::string a = variants[ia].name, b = variants[ib].name;
+  Json p;
+  p["a"] = a;
+  p["b"] = b;
+  std::vector<std::string> verdict;
+  long dropped = 0;
+  std::map<std::string, std::vector<double>> va, vb;
+  for (const auto& draw : samples) {
+    const Sample &sa = draw[ia], &sb = draw[ib];
+    if (!sa.valid || !sb.valid) {
+      ++dropped;
+      continue;
+    }
+    for (const char* m : {"energy_in", "hand_error_rms"})
+      if (sa.metrics.count(m) && sb.metrics.count(m)) {
+        va[m].push_back(sa.metrics.at(m));
+        vb[m].push_back(sb.metrics.at(m));
+      }
+  }
+  p["pairs_with_an_invalid_run"] = dropped;
+  const double n = static_cast<double>(samples.size());
+  const bool too_many_invalid = static_cast<double>(dropped) > kMaxInvalidShare * n;
+  for (const char* m : {"energy_in", "hand_error_rms"}) {
+    const std::string what = std::string(m) == "energy_in" ? "electrical energy" : "RMS hand error";
+    if (va[m].size() < 2) {
+      verdict.push_back(what + ": no verdict (fewer than 2 draws where both runs are valid)");
+      continue;
+    }
+    const report::PairedRatio r = report::paired_ratio(va[m], vb[m], kLevel, kResamples, seed);
+    p[m] = {{"pairs", r.pairs}, {"ratio", r.ratio}, {"ci95", {r.ci.low, r.ci.high}},
+            {"win_rate", r.win_rate}};
+    if (too_many_invalid) {
+      verdict.push_back(what + ": no verdict (" + std::to_string(dropped) + " of " +
+                        std::to_string(samples.size()) + " draws have an invalid run)");
+      continue;
+    }
+    if (std::string(m) == "hand_error_rms") {
+      const double fa = floors[a.empty() ? "run" : a].value("floor", NAN);
+      const double fb = floors[b.empty() ? "run" : b].value("floor", NAN);
+      const double ma = report::median(va[m]), mb = report::median(vb[m]);
+      if (!(ma > kFloorFactor * fa && mb > kFloorFactor * fb)) {
+        verdict.push_back(what + ": no verdict: the medians (" + num(ma) + " m, " + num(mb) +
+                          " m) are not above 10 x the integration floor (" + num(fa) + " m, " +
+                          num(fb) + " m; step halving of the nominal runs): they measure the "
+                          "integrator, not the arm");
+        continue;
+      }
+    }
+    verdict.push_back(metric_verdict(a, b, what, r));
+  }
+  if (dropped > 0 && !too_many_invalid)
+    verdict.push_back(std::to_string(dropped) + " of " + std::to_string(samples.size()) +
+                      " draws left out: a run of the pair was invalid (listed below)");
+  p["verdict"] = verdict;
+  return p;
+}
+
+void write_samples_csv(const std::filesystem::path& path, const std::vector<Variant>& variants,
+                       const std::vector<study::Draw>& draws,
+                       const std::vector<std::vector<Sample>>& samples) {
+  write_atomically(path, [&](std::ostream& out) {
+    out << "draw,variant,valid";
+    for (const UncertainParameter& p : variants.front().nominal.uncertainty.parameters)
+      out << "," << p.key;
+    for (const auto& [name, unit] : kMetrics) out << "," << name << " [" << unit << "]";
+    out << ",failure\n";
+    for (std::size_t d = 0; d < draws.size(); ++d)
+      for (std::size_t v = 0; v < variants.size(); ++v) {
+        const Sample& s = samples[d][v];
+        out << draws[d].index << "," << variants[v].name << "," << (s.valid ? "true" : "false");
+        const auto& params = variants[v].nominal.uncertainty.parameters;
+        for (std::size_t j = 0; j < params.size(); ++j)
+          out << "," << study::exact(study::drawn_value(params[j], draws[d].u[j]));
+        for (const auto& [name, unit] : kMetrics) {
+          const auto it = s.metrics.find(name);
+          out << "," << (it == s.metrics.end() ? std::string() : study::exact(it->second));
+        }
+        std::string failure = s.failure;
+        std::replace(failure.begin(), failure.end(), '"', '\'');
+        out << ",\"" << failure << "\"\n";
+      }
+  });
+}
+
+int usage_error(const std::string& message) {
+  std::cerr << "error: montecarlo: " << message << '\n';
+  return exit_bad_input;
+}
+
+}  // namespace
+
+int montecarlo_command(const MonteCarloArguments& args) {
+  if (args.samples < 2) return usage_error("--samples must be at least 2");
+  if (args.jobs < 1) return usage_error("--jobs must be at least 1");
+  Scenario base;
+  std::vector<Variant> variants;
+  try {
+    base = load_scenario(args.scenario, args.sets);
+    if (base.uncertainty.parameters.empty())
+      return usage_error(args.scenario + " has no uncertainty: parameters to draw (scenarios/README.md, uncertainty)");
+    std::vector<std::string> names;
+    for (const auto& [name, overrides] : base.variants) names.push_back(name);
+    if (names.empty()) names.push_back("");
+    for (const std::string& name : names) {
+      Scenario nominal = load_variant(args, name, {});
+      std::vector<std::string> keys, base_keys;
+      for (const auto& p : nominal.uncertainty.parameters) keys.push_back(p.key);
+      for (const auto& p : base.uncertainty.parameters) base_keys.push_back(p.key);
+      if (keys != base_keys)
+        return usage_error("variant " + name + " changes which keys are uncertain; a paired study "
+                           "needs the same parameters in every variant");
+      auto believed = std::make_shared<const Model>(nominal.experiment.believed(nominal.model));
+      variants.push_back({name, std::move(nominal), std::move(believed)});
+    }
+  } catch (const ScenarioError& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_bad_input;
+  }
+  const std::uint64_t seed = args.seed.value_or(base.uncertainty.seed);
+  const std::filesystem::path folder = args.out.value_or(base.output.folder + "/montecarlo");
+
+  std::vector<study::Draw> draws;
+  for (long i = 0; i < args.samples; ++i)
+    draws.push_back(study::draw_parameters(base.uncertainty, seed, i));
+  Json floors;
+  try {
+    for (const Variant& v : variants) floors[v.name.empty() ? "run" : v.name] = accuracy_floor(args, v);
+  } catch (const ScenarioError& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_bad_input;
+  }
+  const auto samples = run_all(args, variants, draws, args.jobs);
+
+  Json doc;
+  doc["scenario"] = base.model.name;
+  doc["file"] = args.scenario;
+  doc["seed"] = seed;
+  doc["samples"] = args.samples;
+  doc["confidence_level"] = kLevel;
+  doc["bootstrap_resamples"] = kResamples;
+  Json names = Json::array();
+  for (const Variant& v : variants) names.push_back(v.name.empty() ? "run" : v.name);
+  doc["variants"] = names;
+  Json params = Json::array();
+  for (std::size_t j = 0; j < base.uncertainty.parameters.size(); ++j) {
+    const UncertainParameter& p = base.uncertainty.parameters[j];
+    Json q{{"key", p.key}, {"given", p.given}};
+    q["law"] = p.law == UncertainParameter::Law::uniform  ? "uniform"
+               : p.law == UncertainParameter::Law::normal ? "normal"
+                                                           : "range";
+    if (p.law == UncertainParameter::Law::range) q["range"] = {p.low, p.high};
+    else q["spread"] = p.spread;
+    for (const Variant& v : variants)
+      q["nominal"][v.name.empty() ? "run" : v.name] = v.nominal.uncertainty.parameters[j].nominal;
+    params.push_back(q);
+  }
+  doc["parameters"] = params;
+  doc["accuracy_floor"] = floors;
+  Json invalid = Json::array();
+  for (std::size_t v = 0; v < variants.size(); ++v) {
+    const std::string vname = v < names.size() ? names[v].get<std::string>() : "run";
+    for (const auto& [name, unit] : kMetrics) {
+      std::vector<double> x;
+      Json all = Json::array();
+      for (const auto& draw : samples) {
+        const Sample& s = draw[v];
+        const auto it = s.metrics.find(name);
+        const bool ok = s.valid && it != s.metrics.end();
+        if (ok) x.push_back(it->second);
+        all.push_back(ok ? Json(it->second) : Json(nullptr));
+      }
+      doc["draws"][vname][name] = all;
+      if (x.empty()) continue;
+      Json m{{"unit", unit}, {"valid", x.size()}, {"mean", report::mean(x)}, {"median", report::median(x)}};
+      if (x.size() >= 2) {
+        const report::Interval ci = report::bootstrap_mean(x, kLevel, kResamples, seed);
+        m["ci95"] = {ci.low, ci.high};
+      }
+      doc["metrics"][vname][name] = m;
+    }
+    for (std::size_t d = 0; d < samples.size(); ++d)
+      if (!samples[d][v].valid)
+        invalid.push_back({{"draw", draws[d].index}, {"variant", vname}, {"failure", samples[d][v].failure}});
+  }
+  Json pairs = Json::array(), verdict = Json::array();
+  for (std::size_t a = 0; a < variants.size(); ++a)
+    for (std::size_t b = a + 1; b < variants.size(); ++b) {
+      pairs.push_back(pair_json(variants, a, b, samples, floors, seed));
+      for (const Json& line : pairs.back()["verdict"]) verdict.push_back(line);
+    }
+  if (variants.size() < 2) verdict.push_back("one variant: nothing to compare (distributions only)");
+  doc["pairs"] = pairs;
+  doc["invalid"] = invalid;
+  doc["verdict"] = verdict;
+
+  try {
+    std::filesystem::create_directories(folder);
+    write_samples_csv(folder / "samples.csv", variants, draws, samples);
+    write_atomically(folder / "montecarlo.json", [&](std::ostream& out) { out << doc.dump(2) << '\n'; });
+    if (args.report) report::write_montecarlo_report(folder);
+  } catch (const std::exception& e) {
+    std::cerr << "error: montecarlo: " << e.what() << '\n';
+    return exit_io;
+  }
+  std::cout << base.model.name << ": " << args.samples << " draws x " << variants.size()
+            << " variants (seed " << seed << ", " << invalid.size() << " invalid runs) in "
+            << folder.string() << "\n";
+  for (const Json& line : verdict) std::cout << "  " << line.get<std::string>() << "\n";
+  return exit_ok;
+}
+
+}  // namespace elbowsim

@@ -1,0 +1,36 @@
+// Monte Carlo draws of the uncertain plant parameters (the scenario's
+// uncertainty: section). Draw i depends only on the seed and i, not on how
+// many draws a study takes or in which order they run; each draw is applied
+// to every variant (a paired comparison), relative laws around each variant's
+// own nominal value.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "app/scenario/scenario.hpp"
+
+namespace elbowsim::study {
+
+// One draw: per parameter, the relative deviation u (uniform, normal: the
+// value is nominal x (1 + u)) or the absolute value (range).
+struct Draw {
+  long index = 0;
+  std::vector<double> u;
+};
+
+Draw draw_parameters(const Uncertainty& uncertainty, std::uint64_t seed, long index);
+
+// The value a draw gives parameter p.
+double drawn_value(const UncertainParameter& p, double u);
+
+// "key=value" overrides that set the draw's values, exact to the last bit
+// (17 significant digits), around the nominal values of `uncertainty` (a
+// variant's own).
+std::vector<std::string> draw_overrides(const Uncertainty& uncertainty, const Draw& draw);
+
+// A number as 17 significant digits (round-trips a double).
+std::string exact(double x);
+
+}  // namespace elbowsim::study

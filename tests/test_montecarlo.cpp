@@ -1,0 +1,139 @@
+// The Monte Carlo study: the uncertainty: section (expansion, nominal values,
+// errors), the draws (seeded, independent of the number taken), and
+// `elbowsim montecarlo` as a process (same seed -> same bytes whatever
+// --jobs; identical variants -> no significant difference).
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "app/study/draws.hpp"
+#include "support/process.hpp"
+#include "support/scratch.hpp"
+#include "test_scenario_helpers.hpp"
+
+namespace fs = std::filesystem;
+using elbowsim::UncertainParameter;
+using namespace scenario_test;
+
+namespace {
+
+// A two-link arm holding its hand still under PD + feed-forward, 1 s.
+const std::string kHolding = two_link_with(R"(
+task: {path: hold}
+controller: {type: pd_feedforward}
+uncertainty:
+  seed: 7
+  parameters:
+    robot.planar.links[*].mass: {uniform: 0.1}
+    robot.planar.links[1].com: {normal: 0.05}
+    hand_load.mass: {range: [0, 0.2]}
+)");
+
+}  // namespace
+
+TEST_CASE("uncertainty: [*] expands to every item, with each nominal value; range needs none") {
+  const Scenario s = load(kHolding);
+  const auto& p = s.uncertainty.parameters;
+  REQUIRE(p.size() == 4);
+  CHECK(s.uncertainty.seed == 7);
+  CHECK(p[0].key == "robot.planar.links[0].mass");
+  CHECK(p[0].given == "robot.planar.links[*].mass");
+  CHECK(p[0].nominal == 1.0);
+  CHECK(p[1].key == "robot.planar.links[1].mass");
+  CHECK(p[1].nominal == 0.5);
+  CHECK(p[2].law == UncertainParameter::Law::normal);
+  CHECK(p[2].nominal == 0.08);
+  CHECK(p[3].law == UncertainParameter::Law::range);
+  CHECK(std::isnan(p[3].nominal));
+  CHECK(s.model.links[0].mass == 1.0);  // a single run is the nominal plant
+}
+
+TEST_CASE("uncertainty errors: keys, laws, missing nominal values") {
+  auto with = [](const char* parameters) {
+    return two_link_with((std::string("uncertainty:\n  parameters:\n") + parameters).c_str());
+  };
+  CHECK_ERROR(with("    robot.planar.links[0].mas: {uniform: 0.1}\n"), "x.yaml:11:5:",
+              "uncertainty.parameters.robot.planar.links[0].mas", "not given in the scenario");
+  CHECK_ERROR(with("    robot.planar.links[4].mass: {uniform: 0.1}\n"), "x.yaml:11:5:",
+              "uncertainty.parameters.robot.planar.links[4].mass", "out of range");
+  CHECK_ERROR(with("    robot.planar.links[1].mass: {uniform: 1.5}\n"), "x.yaml:11:",
+              "uncertainty.parameters.robot.planar.links[1].mass.uniform", "spread of 1 or more");
+  CHECK_ERROR(with("    robot.planar.links[1].mass: {gauss: 0.1}\n"), "x.yaml:11:",
+              "uncertainty.parameters.robot.planar.links[1].mass.gauss", "unknown key");
+  CHECK_ERROR(with("    robot.planar.links[1].mass: {uniform: 0.1, normal: 0.1}\n"), "x.yaml:11:",
+              "uncertainty.parameters.robot.planar.links[1].mass", "give one law");
+  CHECK_ERROR(with("    hand_load.mass: {range: [0.2, 0]}\n"), "x.yaml:11:",
+              "uncertainty.parameters.hand_load.mass.range", "low <= high");
+  CHECK_ERROR(with("    simulation.step: {uniform: 0.1}\n"), "x.yaml:11:5:",
+              "uncertainty.parameters.simulation.step", "only plant parameters");
+  CHECK_ERROR(with("    robot.planar.links[*].mass: {uniform: 0.1}\n    robot.planar.links[0].mass: {uniform: 0.2}\n"),
+              "x.yaml:12:5:",
+              "uncertainty.parameters.robot.planar.links[0].mass", "drawn twice");
+}
+
+TEST_CASE("draws: seeded, within their laws, and draw i the same however many are taken") {
+  const Scenario s = load(kHolding);
+  const auto d3 = elbowsim::study::draw_parameters(s.uncertainty, 7, 3);
+  CHECK(d3.u == elbowsim::study::draw_parameters(s.uncertainty, 7, 3).u);
+  CHECK(d3.u != elbowsim::study::draw_parameters(s.uncertainty, 8, 3).u);
+  CHECK(d3.u != elbowsim::study::draw_parameters(s.uncertainty, 7, 4).u);
+  for (long i = 0; i < 500; ++i) {
+    const auto d = elbowsim::study::draw_parameters(s.uncertainty, 7, i);
+    CHECK(std::abs(d.u[0]) <= 0.1);
+    CHECK(std::abs(d.u[2]) <= 3 * 0.05);
+    CHECK(d.u[3] >= 0);
+    CHECK(d.u[3] <= 0.2);
+  }
+  const auto overrides = elbowsim::study::draw_overrides(s.uncertainty, d3);
+  REQUIRE(overrides.size() == 4);
+  CHECK(overrides[0].starts_with("robot.planar.links[0].mass="));
+  const double drawn = std::stod(overrides[0].substr(overrides[0].find('=') + 1));
+  CHECK(drawn == 1.0 * (1 + d3.u[0]));  // 17 digits: exact
+}
+
+TEST_CASE("cli: montecarlo: same seed -> same bytes (jobs 1 or 2); identical variants -> no difference") {
+  const fs::path dir = elbowsim::testing::scratch("cli", "montecarlo");
+  const fs::path file = dir / "holding.yaml";
+  std::ofstream(file) << kHolding << "variants: {a: {}, b: {}}\n";
+  auto run = [&](const std::string& out, const std::string& options) {
+    return elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples 6 --no-report --out " +
+                                           (dir / out).string() + " " + options);
+  };
+  const auto first = run("one", "--jobs 1");
+  INFO(first.output);
+  REQUIRE(first.exit_code == 0);
+  REQUIRE(run("two", "--jobs 2").exit_code == 0);
+  REQUIRE(run("seed", "--jobs 2 --seed 8").exit_code == 0);
+  for (const char* f : {"samples.csv", "montecarlo.json"})
+    CHECK(elbowsim::testing::slurp(dir / "one" / f) == elbowsim::testing::slurp(dir / "two" / f));
+  CHECK(elbowsim::testing::slurp(dir / "one" / "samples.csv") !=
+        elbowsim::testing::slurp(dir / "seed" / "samples.csv"));
+
+  const auto doc = nlohmann::json::parse(elbowsim::testing::slurp(dir / "one" / "montecarlo.json"));
+  CHECK(doc["seed"] == 7);  // the scenario's
+  CHECK(doc["samples"] == 6);
+  CHECK(doc["invalid"].empty());
+  const auto& energy = doc["pairs"][0]["energy_in"];
+  CHECK(energy["ci95"][0].get<double>() <= 1.0);
+  CHECK(energy["ci95"][1].get<double>() >= 1.0);
+  const std::string verdict = doc["verdict"][0];
+  CHECK(verdict.starts_with("electrical energy: no significant difference between a and b"));
+  CHECK(first.output.find("no significant difference") != std::string::npos);
+
+  // The draws vary the plant: link 0's mass differs between draws.
+  CHECK(doc["metrics"]["a"]["energy_in"]["valid"] == 6);
+  const auto& e = doc["draws"]["a"]["energy_in"];
+  CHECK(e[0] != e[1]);
+}
+
+TEST_CASE("cli: montecarlo refuses a scenario without uncertainty, and bad numbers") {
+  const std::string pendulum = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/two_link_pendulum.yaml";
+  const auto none = elbowsim::testing::run_elbowsim("montecarlo " + pendulum + " --samples 3");
+  CHECK(none.exit_code == 2);
+  CHECK(none.output.find("has no uncertainty: parameters") != std::string::npos);
+  const auto bad = elbowsim::testing::run_elbowsim("montecarlo " + pendulum + " --samples x");
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output.find("--samples needs a whole number") != std::string::npos);
+}
