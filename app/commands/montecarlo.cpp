@@ -92,6 +92,19 @@ Sample run_draw(const MonteCarloArguments& args, const Variant& v, const study::
   return run_one(drawn, v.believed);
 }
 
+// Calls task(k) for k = 0 .. count-1 on `jobs` threads (this one included).
+template <class Task>
+void parallel_for(std::size_t count, int jobs, const Task& task) {
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t k; (k = next++) < count;) task(k);
+  };
+  std::vector<std::thread> threads;
+  for (int j = 1; j < jobs && static_cast<std::size_t>(j) < count; ++j) threads.emplace_back(worker);
+  worker();
+  for (std::thread& t : threads) t.join();
+}
+
 // Runs every (draw, variant) on `jobs` threads; results by index, so the
 // order of completion does not matter.
 std::vector<std::vector<Sample>> run_all(const MonteCarloArguments& args,
@@ -99,40 +112,49 @@ std::vector<std::vector<Sample>> run_all(const MonteCarloArguments& args,
                                          const std::vector<study::Draw>& draws, int jobs) {
   const std::size_t nv = variants.size(), total = draws.size() * nv;
   std::vector<std::vector<Sample>> out(draws.size(), std::vector<Sample>(nv));
-  std::atomic<std::size_t> next{0}, done{0};
-  auto worker = [&] {
-    for (std::size_t k; (k = next++) < total;) {
-      out[k / nv][k % nv] = run_draw(args, variants[k % nv], draws[k / nv]);
-      const std::size_t finished = ++done;
-      if (finished % std::max<std::size_t>(1, total / 10) == 0)
-        std::cerr << "montecarlo: " << finished << " of " << total << " runs\n";
-    }
-  };
-  std::vector<std::thread> threads;
-  for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
-  worker();
-  for (std::thread& t : threads) t.join();
+  std::atomic<std::size_t> done{0};
+  parallel_for(total, jobs, [&](std::size_t k) {
+    out[k / nv][k % nv] = run_draw(args, variants[k % nv], draws[k / nv]);
+    const std::size_t finished = ++done;
+    if (finished % std::max<std::size_t>(1, total / 10) == 0)
+      std::cerr << "montecarlo: " << finished << " of " << total << " runs\n";
+  });
   return out;
 }
 
 // The integration floor of the hand error: the nominal run at the step and
 // at half of it.
-Json accuracy_floor(const MonteCarloArguments& args, const Variant& v) {
-  const double h = v.nominal.model.options.step;
-  const Sample full = run_one(v.nominal, v.believed);
-  const Scenario halved = load_variant(args, v.name, {"simulation.step=" + study::exact(h / 2)});
-  const Sample half = run_one(halved, v.believed);
-  Json f;
-  f["step"] = h;
+// Each variant's nominal run at its step and at half of it, on `jobs` threads.
+Json accuracy_floors(const MonteCarloArguments& args, const std::vector<Variant>& variants, int jobs) {
+  std::vector<Scenario> halved;
+  for (const Variant& v : variants)  // loaded here: a ScenarioError leaves before any run
+    // Twice the steps between records: the same sample times, so the two RMS
+    // errors average the same instants.
+    halved.push_back(load_variant(
+        args, v.name,
+        {"simulation.step=" + study::exact(v.nominal.model.options.step / 2),
+         "output.every=" + std::to_string(2 * v.nominal.output.every)}));
+  std::vector<Sample> runs(2 * variants.size());
+  parallel_for(runs.size(), jobs, [&](std::size_t k) {
+    const Variant& v = variants[k / 2];
+    runs[k] = run_one(k % 2 == 0 ? v.nominal : halved[k / 2], v.believed);
+  });
   const auto rms = [](const Sample& s) {
     const auto it = s.metrics.find("hand_error_rms");
     return s.valid && it != s.metrics.end() ? it->second : std::nan("");
   };
-  f["hand_error_rms_step"] = rms(full);
-  f["hand_error_rms_half_step"] = rms(half);
-  f["floor"] = std::abs(rms(full) - rms(half));
-  f["nominal_valid"] = full.valid && half.valid;
-  return f;
+  Json floors;
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    const Sample &full = runs[2 * i], &half = runs[2 * i + 1];
+    Json f;
+    f["step"] = variants[i].nominal.model.options.step;
+    f["hand_error_rms_step"] = rms(full);
+    f["hand_error_rms_half_step"] = rms(half);
+    f["floor"] = std::abs(rms(full) - rms(half));
+    f["nominal_valid"] = full.valid && half.valid;
+    floors[variants[i].name.empty() ? "run" : variants[i].name] = f;
+  }
+  return floors;
 }
 
 std::string percent(double x) {
@@ -289,7 +311,7 @@ int montecarlo_command(const MonteCarloArguments& args) {
     draws.push_back(study::draw_parameters(base.uncertainty, seed, i));
   Json floors;
   try {
-    for (const Variant& v : variants) floors[v.name.empty() ? "run" : v.name] = accuracy_floor(args, v);
+    floors = accuracy_floors(args, variants, args.jobs);
   } catch (const ScenarioError& e) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_bad_input;
