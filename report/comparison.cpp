@@ -1,5 +1,7 @@
 #include "report/comparison.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -111,6 +113,17 @@ std::vector<std::string> failures(const std::vector<RunData>& runs) {
   return sentences;
 }
 
+// A closed-loop controller with the plant's own model and continuous control
+// on the true state (summaries from before these keys existed included).
+bool controller_knows_everything(const RunData& run) {
+  const auto& s = run.summary;
+  const auto believes = s.find("controller_model");
+  const auto loop = s.find("control_loop");
+  const bool exact_model = believes == s.end() || (believes->is_array() && believes->empty());
+  const bool continuous = loop == s.end() || (loop->is_string() && *loop == "continuous");
+  return exact_model && continuous;
+}
+
 bool all_zero(const Comparison& table, const std::string& path) {
   for (const ComparedMetric& m : table.metrics)
     if (m.path == path) {
@@ -155,11 +168,27 @@ std::vector<std::string> verdict(const std::vector<RunData>& runs, const Compari
   const char* accuracy = nullptr;
   for (const ComparedMetric& m : table.metrics)
     if (m.path == "metrics.hand_error_rms") accuracy = "metrics.hand_error_rms";
-  if (!accuracy)
+  if (!accuracy) {
     sentences.push_back("Hand accuracy is not compared: no run recorded a hand_error column.");
-  else
-    for (auto& s : smaller_is_better(table, accuracy, "smaller", "RMS hand error"))
-      sentences.push_back(std::move(s));
+    return sentences;
+  }
+  std::vector<std::string> errors = smaller_is_better(table, accuracy, "smaller", "RMS hand error");
+  if (std::all_of(runs.begin(), runs.end(), controller_knows_everything)) {
+    // The feed-forward inverts the plant exactly and sees the true state: what
+    // is left of the hand error is the integrator's (README, the experiment).
+    std::string numbers;
+    for (const std::string& e : errors) numbers += (numbers.empty() ? "" : " ") + e;
+    sentences.push_back("Hand accuracy: no verdict. In these runs the controller knows the plant "
+                        "exactly and sees its true state (controller_model [], control_loop "
+                        "continuous), so the hand errors are integration error, not control "
+                        "error: " + numbers +
+                        " For an accuracy verdict give controller.model or uncertainty: and run "
+                        "elbowsim montecarlo.");
+    return sentences;
+  }
+  for (auto& e : errors) sentences.push_back(std::move(e));
+  sentences.push_back("One run each: these differences have no confidence interval (elbowsim "
+                      "montecarlo gives one).");
   return sentences;
 }
 

@@ -113,10 +113,21 @@ TEST_CASE("verdict: computed from the numbers") {
     auto a = run_with("on", 2.0), b = run_with("off", 8.0);
     a.summary["metrics"] = {{"hand_error_rms", 1e-8}};
     b.summary["metrics"] = {{"hand_error_rms", 4e-8}};
+    // The controller knows the plant and sees the true state: integration error, no verdict.
+    const auto exact = r::compare_runs({a, b});
+    REQUIRE(exact.verdict.size() == 2);
+    CHECK(exact.verdict[0] == "on: 75 % less electrical energy than off (2 J vs 8 J).");
+    CHECK(exact.verdict[1].starts_with("Hand accuracy: no verdict."));
+    CHECK(exact.verdict[1].find("integration error") != std::string::npos);
+    CHECK(exact.verdict[1].find("on: 75 % smaller RMS hand error than off (1e-08 m vs 4e-08 m).") !=
+          std::string::npos);
+    // A controller that believes another plant: the difference, with its caveat.
+    a.summary["controller_model"] = {"robot.planar.links[0].mass=1.1"};
+    b.summary["control_loop"] = {{"sample_rate", 1000.0}};
     const auto c = r::compare_runs({a, b});
-    REQUIRE(c.verdict.size() == 2);
-    CHECK(c.verdict[0] == "on: 75 % less electrical energy than off (2 J vs 8 J).");
+    REQUIRE(c.verdict.size() == 3);
     CHECK(c.verdict[1] == "on: 75 % smaller RMS hand error than off (1e-08 m vs 4e-08 m).");
+    CHECK(c.verdict[2].find("no confidence interval") != std::string::npos);
   }
   SUBCASE("within 0.5 % is the same") {
     const auto c = r::compare_runs({run_with("a", 10.0), run_with("b", 10.01)});
