@@ -137,3 +137,30 @@ TEST_CASE("cli: montecarlo refuses a scenario without uncertainty, and bad numbe
   CHECK(bad.exit_code == 2);
   CHECK(bad.output.find("--samples needs a whole number") != std::string::npos);
 }
+
+TEST_CASE("cli: run --check-step: the run again at half the step, every metric's change in summary.json") {
+  const fs::path dir = elbowsim::testing::scratch("cli", "check_step");
+  const fs::path file = dir / "holding.yaml";
+  std::ofstream(file) << kHolding;
+  const auto out = elbowsim::testing::run_elbowsim("run " + file.string() + " --no-report --check-step --out " +
+                                                   (dir / "run").string());
+  INFO(out.output);
+  REQUIRE(out.exit_code == 0);
+  CHECK(out.output.find("step check (0.0005 s against 0.001 s)") != std::string::npos);
+  const auto summary = nlohmann::json::parse(elbowsim::testing::slurp(dir / "run" / "summary.json"));
+  const auto& check = summary["step_check"];
+  CHECK(check["step"] == 1e-3);
+  CHECK(check["half_step"] == 5e-4);
+  CHECK(check["valid_at_half_step"] == true);
+  const auto& energy = check["metrics"]["energy_in"];
+  CHECK(energy["value"] == summary["metrics"]["energy_in"]);  // this run's own value
+  CHECK(energy["at_half_step"].get<double>() != energy["value"].get<double>());
+  CHECK(energy["relative_change"].get<double>() < 1e-3);  // converged energy
+  CHECK(check["metrics"].contains("hand_error_rms"));
+  // Without the flag: no second run, no step_check.
+  const auto plain = elbowsim::testing::run_elbowsim("run " + file.string() + " --no-report --out " +
+                                                     (dir / "plain").string());
+  REQUIRE(plain.exit_code == 0);
+  CHECK_FALSE(nlohmann::json::parse(elbowsim::testing::slurp(dir / "plain" / "summary.json"))
+                  .contains("step_check"));
+}

@@ -37,6 +37,7 @@ struct RunArguments {
   bool render = true;               // false: --no-render (skip output.video / output.frames)
   bool report = true;               // false: --no-report (skip report.html, plots/)
   std::vector<std::string> expect;  // --expect expressions over summary.json
+  bool check_step = false;          // --check-step: rerun at half the step (summary step_check)
 };
 
 // elbowsim render RUN_DIR [--camera preset] [--size WxH] [--fps N]

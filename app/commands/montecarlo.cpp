@@ -134,10 +134,16 @@ Json accuracy_floors(const MonteCarloArguments& args, const std::vector<Variant>
         args, v.name,
         {"simulation.step=" + study::exact(v.nominal.model.options.step / 2),
          "output.every=" + std::to_string(2 * v.nominal.output.every)}));
+  // The halved run's controller believes the halved scenario: its plan is
+  // sampled on the half step (the nominal's is sampled on the step).
+  std::vector<std::shared_ptr<const Model>> halved_believed;
+  for (const Scenario& h : halved)
+    halved_believed.push_back(std::make_shared<const Model>(h.experiment.believed(h.model)));
   std::vector<Sample> runs(2 * variants.size());
   parallel_for(runs.size(), jobs, [&](std::size_t k) {
     const Variant& v = variants[k / 2];
-    runs[k] = run_one(k % 2 == 0 ? v.nominal : halved[k / 2], v.believed);
+    runs[k] = k % 2 == 0 ? run_one(v.nominal, v.believed)
+                         : run_one(halved[k / 2], halved_believed[k / 2]);
   });
   const auto rms = [](const Sample& s) {
     const auto it = s.metrics.find("hand_error_rms");

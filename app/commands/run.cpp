@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands/commands.hpp"
+#include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
 #include "app/output/run_folder.hpp"
 #include "report/compare_report.hpp"
@@ -73,11 +74,36 @@ RunResult simulate_or_fail(const Scenario& scenario) {
   }
 }
 
+// --check-step: the summary's step_check, and one line per metric that moved
+// by more than 1 % on stdout.
+void add_step_check(const Scenario& scenario, const RunResult& result,
+                    nlohmann::ordered_json& summary) {
+  try {
+    summary["step_check"] = check_step(scenario, result);
+  } catch (const std::exception& e) {
+    summary["step_check"] = {{"error", e.what()}};
+    std::cerr << "warning: --check-step: " << e.what() << '\n';
+    return;
+  }
+  const auto& c = summary["step_check"];
+  std::cout << "step check (" << c["half_step"].get<double>() << " s against "
+            << c["step"].get<double>() << " s)"
+            << (c["valid_at_half_step"].get<bool>() ? "" : ": INVALID at half the step") << '\n';
+  for (const auto& [name, m] : c["metrics"].items()) {
+    const double change = m["relative_change"].get<double>();
+    std::printf("  %-24s %12.6g -> %12.6g %s  (%.2g relative%s)\n", name.c_str(),
+                m["value"].get<double>(), m["at_half_step"].get<double>(),
+                m["unit"].get<std::string>().c_str(), change, change > 0.01 ? ", more than 1 %" : "");
+  }
+  std::fflush(stdout);
+}
+
 RunOutcome run_one(const Scenario& scenario, const std::filesystem::path& folder,
                    const RunArguments& args) {
   const RunResult result = simulate_or_fail(scenario);
   const bool recorded = result.trajectory.rows() > 0;
   RunOutcome outcome{exit_ok, run_summary(scenario, result)};
+  if (args.check_step && result.valid) add_step_check(scenario, result, outcome.summary);
   try {
     std::filesystem::create_directories(folder);
     write_outputs(scenario, result, outcome.summary, folder);

@@ -1,0 +1,49 @@
+#include "app/commands/step_check.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "engine/run/simulator.hpp"
+
+namespace elbowsim {
+
+namespace {
+
+std::string exact(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+}  // namespace
+
+nlohmann::ordered_json check_step(const Scenario& scenario, const RunResult& result) {
+  const double h = scenario.model.options.step;
+  // The resolved YAML holds every override already; twice the steps between
+  // records keeps the recorded instants (and so the RMS metrics) comparable.
+  const Scenario halved = load_scenario_text(
+      scenario.resolved_yaml, scenario.file,
+      {"simulation.step=" + exact(h / 2), "output.every=" + std::to_string(2 * scenario.output.every)});
+  const RunResult half = simulate(halved.model, halved.experiment, RunOptions{halved.output.every, {}});
+  nlohmann::ordered_json j;
+  j["step"] = h;
+  j["half_step"] = h / 2;
+  j["valid_at_half_step"] = half.valid;
+  if (!half.valid) j["failure_at_half_step"] = half.failure;
+  nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
+  for (const Metric& m : result.metrics.list) {
+    if (m.shape != Metric::Shape::one) continue;
+    const Metric* other = half.metrics.find(m.name);
+    if (!other) continue;
+    const double a = m.values.front(), b = other->values.front();
+    const double scale = std::max(std::abs(a), std::abs(b));
+    metrics[m.name] = {{"unit", m.unit},
+                       {"value", a},
+                       {"at_half_step", b},
+                       {"relative_change", scale > 0 ? std::abs(a - b) / scale : 0.0}};
+  }
+  j["metrics"] = metrics;
+  return j;
+}
+
+}  // namespace elbowsim
