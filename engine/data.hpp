@@ -32,6 +32,10 @@ struct EnergyTerms {
   double impact_loss = 0;      // [J] kinetic energy lost in impacts
   double projection = 0;       // [J] stored-energy change made by drift projection
   double external = 0;         // [J] work of the constant hand force
+  // With motors, E_in split by the sign of each motor's power v_j i_j: what
+  // the supply delivered and what the motors fed back (drawn - regenerated = E_in).
+  double drawn = 0;            // [J] integral of sum_j max(v_j i_j, 0)
+  double regenerated = 0;      // [J] integral of sum_j max(-v_j i_j, 0)
   double mechanical() const { return kinetic_links + kinetic_rotors + potential; }
   double stored() const { return mechanical() + magnetic; }
 };

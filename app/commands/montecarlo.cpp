@@ -29,8 +29,8 @@ using Json = nlohmann::ordered_json;
 
 // The metrics a study compares, with their units.
 const std::vector<std::pair<std::string, std::string>> kMetrics = {
-    {"energy_in", "J"}, {"joule", "J"}, {"hand_error_rms", "m"}, {"hand_error_max", "m"},
-    {"hand_error_final", "m"}};
+    {"energy_in", "J"}, {"energy_drawn", "J"}, {"energy_regenerated", "J"}, {"joule", "J"},
+    {"hand_error_rms", "m"}, {"hand_error_max", "m"}, {"hand_error_final", "m"}};
 
 constexpr double kLevel = 0.95;
 constexpr int kResamples = 4000;

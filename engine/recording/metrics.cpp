@@ -16,7 +16,8 @@ struct Vocabulary {
 constexpr Vocabulary kVocabulary[] = {
     {"samples", ""},          {"hand_error_rms", "m"},      {"hand_error_max", "m"},
     {"hand_error_final", "m"}, {"hand_path_length", "m"},    {"energy_in", "J"},
-    {"joule", "J"},            {"power_peak", "W"},          {"energy_in_per_joint", "J"},
+    {"joule", "J"},            {"energy_drawn", "J"},        {"energy_regenerated", "J"},
+    {"power_peak", "W"},          {"energy_in_per_joint", "J"},
     {"current_peak", "A"},     {"current_rms", "A"},         {"elbow_force_mean", "N"},
     {"elbow_force_min", "N"},  {"elbow_force_max", "N"},     {"time_in_contact", "s"},
     {"rest_fraction", ""},    {"elbow_force_peak", "N"},    {"elbow_drift_max", "m"}};
@@ -84,6 +85,9 @@ void energy_metrics(const Series& s, Metrics& m) {
   const std::size_t last = s.rows() - 1;
   add(m, "energy_in", s.at(last, L.energy(Energy::in)));
   add(m, "joule", s.at(last, L.energy(Energy::joule)));
+  if (L.energy(Energy::drawn) < 0) return;
+  add(m, "energy_drawn", s.at(last, L.energy(Energy::drawn)));
+  add(m, "energy_regenerated", s.at(last, L.energy(Energy::regenerated)));
 }
 
 void motor_metrics(const Series& s, Metrics& m) {

@@ -15,6 +15,8 @@
 //   hand_path_length     m     one     length of the hand's recorded path
 //   energy_in            J     one     electrical energy in (E_in at the end)
 //   joule                J     one     Joule loss (E_joule at the end)
+//   energy_drawn         J     one     drawn from the supply (E_drawn at the end; motors)
+//   energy_regenerated   J     one     fed back by braking motors (E_regenerated; motors)
 //   power_peak           W     one     largest sum_j v_j i_j (motors)
 //   energy_in_per_joint  J     joint   integral of v_j i_j (motors)
 //   current_peak         A     joint   largest |i_j| (motors)

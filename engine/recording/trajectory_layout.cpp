@@ -13,7 +13,8 @@ void add_joint_columns(std::vector<Column>& cols, const char* prefix, const char
 
 constexpr const char* kEnergyNames[] = {"E_in",  "E_joule",   "E_viscous", "KE_links",
                                         "KE_rotors", "PE",    "E_magnetic", "E_friction",
-                                        "E_normal", "E_impact", "E_projection"};
+                                        "E_normal", "E_impact", "E_projection", "E_drawn",
+                                        "E_regenerated"};
 
 bool starts_with(const std::string& s, const std::string& prefix) {
   return s.size() > prefix.size() && s.compare(0, prefix.size(), prefix) == 0;
@@ -58,11 +59,17 @@ TrajectoryLayout::TrajectoryLayout(Groups groups) : groups_(std::move(groups)) {
   energy_ = size();
   const int energies = groups_.contact ? 11 : 7;
   for (int k = 0; k < energies; ++k) cols.push_back({kEnergyNames[k], "J"});
+  if (groups_.motors)
+    for (Energy e : {Energy::drawn, Energy::regenerated})
+      cols.push_back({kEnergyNames[static_cast<int>(e)], "J"});
   cols.push_back({"balance_residual", "J"});
 }
 
 int TrajectoryLayout::energy(Energy e) const {
   const int k = static_cast<int>(e);
+  const int contact_terms = groups_.contact ? 11 : 7;
+  if (k >= static_cast<int>(Energy::drawn))
+    return groups_.motors ? energy_ + contact_terms + k - static_cast<int>(Energy::drawn) : -1;
   if (k >= static_cast<int>(Energy::friction) && !groups_.contact) return -1;
   return energy_ + k;
 }

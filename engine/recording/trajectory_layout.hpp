@@ -28,10 +28,11 @@ struct Column {
   std::string unit;  // e.g. "rad"
 };
 
-// The energy columns, in order (Energy::friction and later: contact only).
+// The energy columns, in order (friction to projection: contact only;
+// drawn, regenerated: motors only, after them).
 enum class Energy {
   in, joule, viscous, kinetic_links, kinetic_rotors, potential, magnetic,
-  friction, normal, impact, projection
+  friction, normal, impact, projection, drawn, regenerated
 };
 
 class TrajectoryLayout {

@@ -1,5 +1,7 @@
 #include "engine/run/derivative.hpp"
 
+#include <cmath>
+
 #include "engine/contact/constrained_dynamics.hpp"
 #include "engine/contact/constraint_rows.hpp"
 #include "engine/dynamics/crba.hpp"
@@ -30,6 +32,15 @@ void energy_rates(const Model& model, Data& data, ConstVec qd, double hand_power
   if (model.has_motor()) {
     out[0] = data.voltage.dot(data.current);
     out[1] = data.current.dot(model.resistance.cwiseProduct(data.current));
+    // E_in split by the sign of each motor's power (after the contact terms).
+    double drawn = 0, regenerated = 0;
+    for (int j = 0; j < model.dof; ++j) {
+      const double p = data.voltage[j] * data.current[j];
+      (p > 0 ? drawn : regenerated) += std::abs(p);
+    }
+    const int k = model.effects.contact ? 5 : 3;
+    out[k] = drawn;
+    out[k + 1] = regenerated;
   } else {
     out[0] = data.actuation.dot(qd) - hand_power;
     out[1] = 0.0;

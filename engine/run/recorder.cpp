@@ -88,7 +88,8 @@ void write_energies(const TrajectoryLayout& L, const Data& data, double* row) {
       {Energy::kinetic_rotors, e.kinetic_rotors}, {Energy::potential, e.potential},
       {Energy::magnetic, e.magnetic},      {Energy::friction, e.friction},
       {Energy::normal, e.normal_work},     {Energy::impact, e.impact_loss},
-      {Energy::projection, e.projection}};
+      {Energy::projection, e.projection},  {Energy::drawn, e.drawn},
+      {Energy::regenerated, e.regenerated}};
   for (const auto& [column, value] : terms)
     if (L.energy(column) >= 0) row[L.energy(column)] = value;
   row[L.balance_residual()] = balance_residual(e, data.energy_initial);

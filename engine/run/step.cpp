@@ -77,6 +77,10 @@ void evaluate_outputs(const Model& model, Data& data) {
   data.energy.joule = data.x[s.energy + 1];
   data.energy.viscous = data.x[s.energy + 2];
   if (s.external >= 0) data.energy.external = data.x[s.external];
+  if (s.drawn >= 0) {
+    data.energy.drawn = data.x[s.drawn];
+    data.energy.regenerated = data.x[s.drawn + 1];
+  }
   if (!model.effects.contact) return;
   data.energy.friction = data.x[s.energy + 3];
   data.energy.normal_work = data.x[s.energy + 4];

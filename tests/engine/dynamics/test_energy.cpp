@@ -141,3 +141,29 @@ TEST_CASE("balance_residual: supplied - lost - change of stored energy, each ter
         (1024.0 + 512 + 256 + 128) - (64.0 + 32 + 16 + 2048) - ((4096.0 - 1) + (8192.0 - 4)));
   CHECK(balance_residual(initial, initial) == 0.0);
 }
+
+TEST_CASE("energy drawn and regenerated: drawn - regenerated = E_in at every sample; braking motors regenerate") {
+  // The arm is swung by voltage profiles and falls back: the motors drive it
+  // up, then brake it on the way down (v i < 0).
+  const RunResult r = simulate(driven_arm(IntegratorKind::rk4, 1e-3, 2.0, 0.5e-3), {});
+  REQUIRE(r.valid);
+  const Recording& t = r.trajectory;
+  const int in = t.column("E_in"), drawn = t.column("E_drawn"), regen = t.column("E_regenerated");
+  REQUIRE(drawn >= 0);
+  REQUIRE(regen >= 0);
+  double worst = 0;
+  for (std::size_t row = 0; row < t.rows(); ++row) {
+    // The three integrands add up exactly at every stage (max(p,0) - max(-p,0) = p),
+    // so the integrals agree to rounding.
+    const double gap = t.at(row, drawn) - t.at(row, regen) - t.at(row, in);
+    worst = std::max(worst, std::abs(gap) / std::max(t.at(row, drawn), 1e-300));
+    CHECK(t.at(row, regen) >= 0);
+  }
+  MESSAGE("drawn ", r.energy_final.drawn, " J, regenerated ", r.energy_final.regenerated,
+          " J, E_in ", r.energy_final.electrical_in, " J; worst |drawn - regen - E_in| / drawn = ", worst);
+  CHECK(worst < 1e-12);
+  CHECK(r.energy_final.regenerated > 0);
+  CHECK(r.energy_final.drawn > r.energy_final.electrical_in);
+  CHECK(r.metrics["energy_drawn"] == r.energy_final.drawn);
+  CHECK(r.metrics["energy_regenerated"] == r.energy_final.regenerated);
+}

@@ -114,7 +114,7 @@ TEST_CASE("metrics: hand path length, energy in and Joule loss of a recording") 
 TEST_CASE("metrics: every metric's unit is the vocabulary's; only samples and rest_fraction have none") {
   Recording rec = timed({2, true, true, true, {"elbow"}}, 4, 0.1);
   const Metrics m = compute_metrics(rec);
-  CHECK(m.list.size() == 18);  // the whole vocabulary, for a run with everything
+  CHECK(m.list.size() == 20);  // the whole vocabulary, for a run with everything
   for (const Metric& metric : m.list) {
     CAPTURE(metric.name);
     CHECK(metric.unit == metric_unit(metric.name));

@@ -47,7 +47,8 @@ TEST_CASE("trajectory layout: the exact columns (golden) of 2 joints, motors, a 
       {"d_link0", "m"},     {"fn_link1", "N"},     {"d_link1", "m"},      {"E_in", "J"},
       {"E_joule", "J"},     {"E_viscous", "J"},    {"KE_links", "J"},     {"KE_rotors", "J"},
       {"PE", "J"},          {"E_magnetic", "J"},   {"E_friction", "J"},   {"E_normal", "J"},
-      {"E_impact", "J"},    {"E_projection", "J"}, {"balance_residual", "J"}};
+      {"E_impact", "J"},    {"E_projection", "J"}, {"E_drawn", "J"},      {"E_regenerated", "J"},
+      {"balance_residual", "J"}};
   const TrajectoryLayout L(full_groups());
   REQUIRE(L.columns().size() == golden.size());
   for (std::size_t k = 0; k < golden.size(); ++k) {
@@ -76,6 +77,8 @@ TEST_CASE("trajectory layout: the index accessors point at their columns, -1 whe
   CHECK(name(L.energy(Energy::in)) == "E_in");
   CHECK(name(L.energy(Energy::magnetic)) == "E_magnetic");
   CHECK(name(L.energy(Energy::projection)) == "E_projection");
+  CHECK(name(L.energy(Energy::drawn)) == "E_drawn");
+  CHECK(name(L.energy(Energy::regenerated)) == "E_regenerated");
   CHECK(name(L.balance_residual()) == "balance_residual");
   CHECK(L.elbow("elbow") == 0);
   CHECK(L.elbow("knee") == -1);
@@ -88,6 +91,13 @@ TEST_CASE("trajectory layout: the index accessors point at their columns, -1 whe
   CHECK(bare.elbow_force(0) == -1);
   CHECK(bare.energy(Energy::friction) == -1);
   CHECK(bare.energy(Energy::projection) == -1);
+  CHECK(bare.energy(Energy::drawn) == -1);  // no motors
+  CHECK(bare.energy(Energy::regenerated) == -1);
+  // Motors without contact: the split follows the seven always-there terms.
+  const TrajectoryLayout motors(Groups{1, true, false, false, {}});
+  CHECK(motors.columns()[std::size_t(motors.energy(Energy::drawn))].name == "E_drawn");
+  CHECK(motors.energy(Energy::drawn) == motors.energy(Energy::magnetic) + 1);
+  CHECK(motors.energy(Energy::friction) == -1);
   CHECK(bare.columns()[std::size_t(bare.energy(Energy::magnetic))].name == "E_magnetic");
 }
 
@@ -155,11 +165,11 @@ TEST_CASE("from_columns refuses a missing or an extra column, naming the positio
   const TrajectoryLayout L(full_groups());
   std::vector<Column> missing = L.columns();
   missing.pop_back();
-  CHECK(refusal(missing) == "trajectory column 39 is missing: expected 'balance_residual [J]'");
+  CHECK(refusal(missing) == "trajectory column 41 is missing: expected 'balance_residual [J]'");
   std::vector<Column> middle = L.columns();
   middle.erase(middle.begin() + 28);  // E_joule
   CHECK(refusal(middle).find("trajectory column 29 is 'E_viscous [J]', expected 'E_joule [J]'") == 0);
   std::vector<Column> extra = L.columns();
   extra.push_back({"temperature", "K"});
-  CHECK(refusal(extra) == "trajectory column 40 'temperature [K]' is not a trajectory column");
+  CHECK(refusal(extra) == "trajectory column 42 'temperature [K]' is not a trajectory column");
 }

@@ -37,7 +37,7 @@ TEST_CASE("effects that are off leave no state and no terms") {
   CHECK(r.energy_final.kinetic_links == 0.0);
   CHECK(m.active_effects().empty());
   const Model driven = driven_arm(IntegratorKind::rk4, 1e-3, 0.1, 1e-3);
-  CHECK(Data(driven).x.size() == 3 * 2 + 3);
+  CHECK(Data(driven).x.size() == 3 * 2 + 3 + 2);  // + E_drawn, E_regenerated with motors
   CHECK(driven.active_effects() ==
         std::vector<std::string>{"gravity", "damping", "motor:full", "rotor_inertia"});
 }
