@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/study/draws.hpp"
+#include "app/study/paired_verdict.hpp"
 #include "support/process.hpp"
 #include "support/scratch.hpp"
 #include "test_scenario_helpers.hpp"
@@ -163,4 +164,42 @@ TEST_CASE("cli: run --check-step: the run again at half the step, every metric's
   REQUIRE(plain.exit_code == 0);
   CHECK_FALSE(nlohmann::json::parse(elbowsim::testing::slurp(dir / "plain" / "summary.json"))
                   .contains("step_check"));
+}
+
+TEST_CASE("paired verdict: stated when the interval excludes 1, refused below the floor or with invalid draws") {
+  using elbowsim::study::PairedSamples;
+  PairedSamples s;
+  s.a = "on";
+  s.b = "off";
+  s.draws = 20;
+  for (int i = 0; i < 20; ++i) {
+    const double x = 1.0 + 0.1 * i;
+    s.b_values["energy_in"].push_back(x);
+    s.a_values["energy_in"].push_back(0.5 * x);
+    s.b_values["hand_error_rms"].push_back(1e-3 * x);
+    s.a_values["hand_error_rms"].push_back(1e-3 * x * (i % 2 ? 1.2 : 0.8));  // as often above as below
+  }
+  s.floor_a = s.floor_b = 1e-7;
+  auto verdict = [](const PairedSamples& p) {
+    return elbowsim::study::paired_verdict(p, 1)["verdict"].get<std::vector<std::string>>();
+  };
+  auto v = verdict(s);
+  REQUIRE(v.size() == 2);
+  CHECK(v[0].starts_with("electrical energy: on 50.0 % lower than off"));
+  CHECK(v[1].starts_with("RMS hand error: no significant difference between on and off"));
+
+  PairedSamples floor = s;  // errors of 1-3 mm against a 0.2 mm floor: below 10 x
+  floor.floor_a = 2e-4;
+  CHECK(verdict(floor)[1].find("not above 10 x the accuracy floor") != std::string::npos);
+
+  PairedSamples invalid = s;  // 3 of 20 draws with an invalid run: 15 % > 10 %
+  invalid.dropped = 3;
+  v = verdict(invalid);
+  CHECK(v[0] == "electrical energy: no verdict (3 of 20 draws have an invalid run)");
+  PairedSamples one = s;  // 1 of 20: the verdict stands, the draw is named as left out
+  one.dropped = 1;
+  v = verdict(one);
+  REQUIRE(v.size() == 3);
+  CHECK(v[0].starts_with("electrical energy: on 50.0 % lower"));
+  CHECK(v[2] == "1 of 20 draws left out: a run of the pair was invalid (listed below)");
 }

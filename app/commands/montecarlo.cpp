@@ -16,6 +16,7 @@
 #include "app/output/atomic_file.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/draws.hpp"
+#include "app/study/paired_verdict.hpp"
 #include "engine/control/inverse_kinematics.hpp"
 #include "engine/run/simulator.hpp"
 #include "report/montecarlo_report.hpp"
@@ -31,15 +32,6 @@ using Json = nlohmann::ordered_json;
 const std::vector<std::pair<std::string, std::string>> kMetrics = {
     {"energy_in", "J"}, {"energy_drawn", "J"}, {"energy_regenerated", "J"}, {"joule", "J"},
     {"hand_error_rms", "m"}, {"hand_error_max", "m"}, {"hand_error_final", "m"}};
-
-constexpr double kLevel = 0.95;
-constexpr int kResamples = 4000;
-// Hand errors below this many times the integration floor measure the
-// integrator, not the controller: no accuracy verdict (10x: at most ~10 %
-// of the error is integration error).
-constexpr double kFloorFactor = 10;
-// More invalid draws than this share: no verdict at all.
-constexpr double kMaxInvalidShare = 0.10;
 
 struct Sample {
   bool valid = false;
@@ -163,89 +155,29 @@ Json accuracy_floors(const MonteCarloArguments& args, const std::vector<Variant>
   return floors;
 }
 
-std::string percent(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f", 100 * x);
-  return b;
-}
-
-std::string num(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", x);
-  return b;
-}
-
-// One metric's verdict line for the pair A/B.
-std::string metric_verdict(const std::string& a, const std::string& b, const std::string& what,
-                           const report::PairedRatio& r) {
-  const std::string ci = "paired 95 % CI of " + a + "/" + b + ": " + num(r.ci.low) + "–" +
-                         num(r.ci.high) + ", " + std::to_string(r.pairs) + " draws";
-  if (r.ci.contains(1.0))
-    return what + ": no significant difference between " + a + " and " + b + " (" + ci +
-           ", contains 1)";
-  const bool less = r.ratio < 1;
-  return what + ": " + a + " " + (less ? percent(1 - r.ratio) + " % lower" : percent(r.ratio - 1) + " % higher") +
-         " than " + b + " (" + ci + "; " + a + " lower in " + percent(r.win_rate) + " % of draws)";
-}
-
+// The samples of variants ia and ib as a pair: the draws where both are valid.
 Json pair_json(const std::vector<Variant>& variants, std::size_t ia, std::size_t ib,
                const std::vector<std::vector<Sample>>& samples, const Json& floors,
                std::uint64_t seed) {
-  const std::string a = variants[ia].name, b = variants[ib].name;
-  Json p;
-  p["a"] = a;
-  p["b"] = b;
-  std::vector<std::string> verdict;
-  long dropped = 0;
-  std::map<std::string, std::vector<double>> va, vb;
+  study::PairedSamples pair;
+  pair.a = variants[ia].name;
+  pair.b = variants[ib].name;
+  pair.draws = static_cast<long>(samples.size());
+  pair.floor_a = floors[pair.a.empty() ? "run" : pair.a].value("floor", NAN);
+  pair.floor_b = floors[pair.b.empty() ? "run" : pair.b].value("floor", NAN);
   for (const auto& draw : samples) {
     const Sample &sa = draw[ia], &sb = draw[ib];
     if (!sa.valid || !sb.valid) {
-      ++dropped;
+      ++pair.dropped;
       continue;
     }
     for (const char* m : {"energy_in", "hand_error_rms"})
       if (sa.metrics.count(m) && sb.metrics.count(m)) {
-        va[m].push_back(sa.metrics.at(m));
-        vb[m].push_back(sb.metrics.at(m));
+        pair.a_values[m].push_back(sa.metrics.at(m));
+        pair.b_values[m].push_back(sb.metrics.at(m));
       }
   }
-  p["pairs_with_an_invalid_run"] = dropped;
-  const double n = static_cast<double>(samples.size());
-  const bool too_many_invalid = static_cast<double>(dropped) > kMaxInvalidShare * n;
-  for (const char* m : {"energy_in", "hand_error_rms"}) {
-    const std::string what = std::string(m) == "energy_in" ? "electrical energy" : "RMS hand error";
-    if (va[m].size() < 2) {
-      verdict.push_back(what + ": no verdict (fewer than 2 draws where both runs are valid)");
-      continue;
-    }
-    const report::PairedRatio r = report::paired_ratio(va[m], vb[m], kLevel, kResamples, seed);
-    p[m] = {{"pairs", r.pairs}, {"ratio", r.ratio}, {"ci95", {r.ci.low, r.ci.high}},
-            {"win_rate", r.win_rate}};
-    if (too_many_invalid) {
-      verdict.push_back(what + ": no verdict (" + std::to_string(dropped) + " of " +
-                        std::to_string(samples.size()) + " draws have an invalid run)");
-      continue;
-    }
-    if (std::string(m) == "hand_error_rms") {
-      const double fa = floors[a.empty() ? "run" : a].value("floor", NAN);
-      const double fb = floors[b.empty() ? "run" : b].value("floor", NAN);
-      const double ma = report::median(va[m]), mb = report::median(vb[m]);
-      if (!(ma > kFloorFactor * fa && mb > kFloorFactor * fb)) {
-        verdict.push_back(what + ": no verdict: the medians (" + num(ma) + " m, " + num(mb) +
-                          " m) are not above 10 x the integration floor (" + num(fa) + " m, " +
-                          num(fb) + " m; step halving of the nominal runs): they measure the "
-                          "integrator, not the arm");
-        continue;
-      }
-    }
-    verdict.push_back(metric_verdict(a, b, what, r));
-  }
-  if (dropped > 0 && !too_many_invalid)
-    verdict.push_back(std::to_string(dropped) + " of " + std::to_string(samples.size()) +
-                      " draws left out: a run of the pair was invalid (listed below)");
-  p["verdict"] = verdict;
-  return p;
+  return study::paired_verdict(pair, seed);
 }
 
 void write_samples_csv(const std::filesystem::path& path, const std::vector<Variant>& variants,
@@ -329,8 +261,8 @@ int montecarlo_command(const MonteCarloArguments& args) {
   doc["file"] = args.scenario;
   doc["seed"] = seed;
   doc["samples"] = args.samples;
-  doc["confidence_level"] = kLevel;
-  doc["bootstrap_resamples"] = kResamples;
+  doc["confidence_level"] = study::kConfidenceLevel;
+  doc["bootstrap_resamples"] = study::kBootstrapResamples;
   Json names = Json::array();
   for (const Variant& v : variants) names.push_back(v.name.empty() ? "run" : v.name);
   doc["variants"] = names;
@@ -366,7 +298,7 @@ int montecarlo_command(const MonteCarloArguments& args) {
       if (x.empty()) continue;
       Json m{{"unit", unit}, {"valid", x.size()}, {"mean", report::mean(x)}, {"median", report::median(x)}};
       if (x.size() >= 2) {
-        const report::Interval ci = report::bootstrap_mean(x, kLevel, kResamples, seed);
+        const report::Interval ci = report::bootstrap_mean(x, study::kConfidenceLevel, study::kBootstrapResamples, seed);
         m["ci95"] = {ci.low, ci.high};
       }
       doc["metrics"][vname][name] = m;

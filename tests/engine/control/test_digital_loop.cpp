@@ -189,3 +189,21 @@ TEST_CASE("a sampled step allocates nothing: encoder, noise, filter, delay line 
   CHECK(samples == 166);
   CHECK(data.t == doctest::Approx(0.1668));
 }
+
+TEST_CASE("PWM resolution: every applied voltage is a whole number of voltage_limit / 2^(bits-1)") {
+  ExperimentScene scene = sampled_arm(1e-3, 1e-3, 0);
+  scene.experiment.controller.loop.pwm_bits = 6;  // 32 steps per polarity
+  scene.model.options.duration = 0.3;
+  const RunResult r = simulate(scene.model, scene.experiment, RunOptions{1, {}});
+  REQUIRE(r.completed);
+  const double lsb = scene.model.motors[0].voltage_limit / 32;
+  const Recording& rec = r.trajectory;
+  int nonzero = 0;
+  for (std::size_t row = 0; row < rec.rows(); ++row)
+    for (int j = 0; j < 4; ++j) {
+      const double v = rec.at(row, rec.layout.voltage(j));
+      CHECK(std::abs(v / lsb - std::round(v / lsb)) < 1e-9);
+      nonzero += v != 0;
+    }
+  CHECK(nonzero > 0);
+}
