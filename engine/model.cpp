@@ -125,6 +125,7 @@ void check_motor(const Motor& m, int i, MotorModel model) {
           at("motors", i) + ".inductance must be > 0 for the full motor model");
   require(m.gear_ratio > 0, at("motors", i) + ".gear_ratio must be > 0");
   require(m.voltage_limit > 0, at("motors", i) + ".voltage_limit must be > 0");
+  require(m.current_limit > 0, at("motors", i) + ".current_limit must be > 0");
   require(m.rotor_inertia >= 0 && m.gear_friction >= 0,
           at("motors", i) + ": rotor_inertia and gear_friction must be >= 0");
 }
@@ -196,7 +197,7 @@ void finalize(Model& model) {
 
   // Reflected motor constants (docs/model.md, Motors): Km = K k, Jm = Im k^2, Dm = dm k^2.
   model.km = model.armature = model.resistance = model.inductance = model.voltage_limit =
-      Eigen::VectorXd::Zero(n);
+      model.current_limit = Eigen::VectorXd::Zero(n);
   model.viscous = model.effects.damping ? model.damping : Eigen::VectorXd::Zero(n);
   if (!model.has_motor()) return;
   for (int i = 0; i < n; ++i) {
@@ -207,6 +208,7 @@ void finalize(Model& model) {
     model.resistance[i] = m.resistance;
     model.inductance[i] = m.inductance;
     model.voltage_limit[i] = m.voltage_limit;
+    model.current_limit[i] = m.current_limit;
   }
 }
 

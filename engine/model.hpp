@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <Eigen/Geometry>
 #include <string>
 #include <vector>
@@ -155,6 +156,9 @@ struct Motor {
   double rotor_inertia = 0.0;      // Im [kg m^2] >= 0, motor side
   double gear_friction = 0.0;      // dm [N m s / rad] >= 0, motor side
   double voltage_limit = 24.0;     // [V] > 0, |v| is clamped to it
+  // [A] > 0: the amplifier keeps |i| within it by narrowing the voltage to
+  // back-EMF +- R current_limit (motor.cpp); infinity: no limit.
+  double current_limit = std::numeric_limits<double>::infinity();
 
   double km() const { return torque_constant * gear_ratio; }
   double jm() const { return rotor_inertia * gear_ratio * gear_ratio; }
@@ -218,6 +222,7 @@ struct Model {
   Eigen::VectorXd resistance;     // R [ohm]
   Eigen::VectorXd inductance;     // L [H]
   Eigen::VectorXd voltage_limit;  // [V]
+  Eigen::VectorXd current_limit;  // [A] (infinity: none)
   // The common world direction of every joint axis when they are all parallel
   // (a planar arm: every point moves in a plane normal to it, so a contact
   // whose normal lies in that plane has one tangent direction); zero otherwise.

@@ -1,12 +1,22 @@
 #include "engine/dynamics/motor.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace elbowsim {
 
 void motor_stage(const Model& model, Data& data, ConstVec qd, ConstVec current) {
   if (!model.has_motor()) return;
   for (int j = 0; j < model.dof; ++j) {
-    const double v = saturate(data.voltage[j], model.voltage_limit[j]);
+    double v = saturate(data.voltage[j], model.voltage_limit[j]);
     const double back_emf = model.km[j] * qd[j];
+    // Current limit: the voltage window in which R i = v - back-EMF stays
+    // within +-R i_max. Quasi-static: |i| <= i_max exactly. Full model: then
+    // L di/dt <= R (i_max - i), so a current inside the limit stays inside.
+    if (model.current_limit[j] < std::numeric_limits<double>::infinity()) {
+      const double window = model.resistance[j] * model.current_limit[j];
+      v = std::clamp(v, back_emf - window, back_emf + window);
+    }
     data.voltage[j] = v;
     if (model.has_current_state()) {
       data.current[j] = current[j];

@@ -161,3 +161,35 @@ TEST_CASE("motor_stage saturates each joint at its own limit, both signs, before
     CHECK(data.current == applied / 2.0);  // stalled: i = v / R with the saturated v
   }
 }
+
+TEST_CASE("amplifier current limit: |i| stays within it (quasi-static exactly, full model from inside)") {
+  // 6 V on a stalled rotor: i = V / R = 3 A without a limit.
+  for (MotorModel kind : {MotorModel::quasi_static, MotorModel::full}) {
+    CAPTURE(static_cast<int>(kind));
+    Model m = spinner(kind, 6.0);
+    m.motors[0].current_limit = 1.25;
+    m.links[0].mass = 1e9;  // effectively stalled
+    m.links[0].inertia *= 1e9;
+    m.options = {0.02, 1e-5, IntegratorKind::rk4, DynamicsMethod::crba};
+    finalize(m);
+    const RunResult r = simulate(m, {});
+    REQUIRE(r.valid);
+    const int i0 = r.trajectory.column("i0");
+    double largest = 0;
+    for (std::size_t row = 0; row < r.trajectory.rows(); ++row)
+      largest = std::max(largest, std::abs(r.trajectory.at(row, i0)));
+    CHECK(largest <= 1.25 * (1 + 1e-12));
+    CHECK(approx(last(r, "i0"), 1.25, 1e-6));  // held at the limit (40 L/R in the full model)
+    CHECK(approx(last(r, "v0"), 2.0 * 1.25, 1e-6));  // the amplifier gives R i_max, not 6 V
+  }
+  // Spinning: the window moves with the back-EMF (Km qd + R i_max).
+  Model m = spinner(MotorModel::quasi_static, 20.0);
+  m.motors[0].current_limit = 0.5;
+  finalize(m);
+  Data data(m);
+  const Eigen::VectorXd qd = Eigen::VectorXd::Constant(1, 0.1);
+  data.voltage[0] = 20.0;
+  motor_stage(m, data, qd, qd);
+  CHECK(data.current[0] == doctest::Approx(0.5));
+  CHECK(data.voltage[0] == doctest::Approx(m.km[0] * 0.1 + 2.0 * 0.5));
+}
