@@ -108,6 +108,31 @@ std::string pairs_section(const Json& doc) {
   return out + "</tbody></table>\n";
 }
 
+// What was drawn, and how; the controller keeps the nominal values.
+std::string parameters_section(const Json& doc) {
+  std::string out = "<h2>Uncertain plant parameters</h2>\n<p>Each draw changes these in the "
+                    "plant only; the controller plans with the nominal values.</p>\n"
+                    "<table id=\"mc-parameters\"><thead><tr><th>key</th><th>law</th>"
+                    "<th>nominal</th></tr></thead><tbody>\n";
+  for (const Json& p : doc.value("parameters", Json::array())) {
+    const std::string law = p.value("law", "");
+    std::string spread;
+    if (law == "range" && p.contains("range"))
+      spread = "uniform in [" + fmt(p["range"][0].get<double>()) + ", " +
+               fmt(p["range"][1].get<double>()) + "]";
+    else
+      spread = law + " ±" + fmt(100 * p.value("spread", 0.0)) + " %" +
+               (law == "normal" ? " (σ, truncated at 3σ)" : "");
+    std::string nominal;
+    const Json nominals = p.value("nominal", Json::object());  // kept: items() does not own it
+    for (const auto& [variant, value] : nominals.items())
+      nominal += (nominal.empty() ? "" : ", ") + variant + ": " + html::display_value(value);
+    out += "<tr><td>" + html::escape(p.value("key", "")) + "</td><td>" + html::escape(spread) +
+           "</td><td>" + html::escape(nominal) + "</td></tr>\n";
+  }
+  return out + "</tbody></table>\n";
+}
+
 }  // namespace
 
 void write_montecarlo_report(const std::filesystem::path& folder) {
@@ -156,7 +181,7 @@ void write_montecarlo_report(const std::filesystem::path& folder) {
                         fmt(f.value("step", NAN)) + " s, " + fmt(f.value("hand_error_rms_half_step", NAN)) +
                         " m at half of it: floor " + fmt(f.value("floor", NAN)) + " m"});
   page += html::info_table(rows);
-  page += metrics_section(doc) + pairs_section(doc);
+  page += metrics_section(doc) + pairs_section(doc) + parameters_section(doc);
   page += "<h2>Distributions</h2>\n";
   for (const Figure& f : figures) page += html::figure(f);
   page += html::page_end();

@@ -99,14 +99,21 @@ TEST_CASE("cli: montecarlo: same seed -> same bytes (jobs 1 or 2); identical var
   const fs::path file = dir / "holding.yaml";
   std::ofstream(file) << kHolding << "variants: {a: {}, b: {}}\n";
   auto run = [&](const std::string& out, const std::string& options) {
-    return elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples 6 --no-report --out " +
+    return elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples 6 --out " +
                                            (dir / out).string() + " " + options);
   };
-  const auto first = run("one", "--jobs 1");
+  const auto first = run("one", "--jobs 1 --no-report");
   INFO(first.output);
   REQUIRE(first.exit_code == 0);
-  REQUIRE(run("two", "--jobs 2").exit_code == 0);
-  REQUIRE(run("seed", "--jobs 2 --seed 8").exit_code == 0);
+  REQUIRE(run("two", "--jobs 2 --no-report").exit_code == 0);
+  REQUIRE(run("seed", "--jobs 2 --seed 8").exit_code == 0);  // with its report
+  const std::string html = elbowsim::testing::slurp(dir / "seed" / "report.html");
+  CHECK(html.find("<h1>Monte Carlo study: two_link</h1>") != std::string::npos);
+  CHECK(html.find("id=\"verdict\"") != std::string::npos);
+  CHECK(html.find("robot.planar.links[1].com") != std::string::npos);  // the parameters table
+  for (const char* png : {"ecdf_hand_error.png", "ecdf_energy.png", "energy_vs_hand_error.png"})
+    CHECK(fs::file_size(dir / "seed" / "plots" / png) > 1000);
+  CHECK_FALSE(fs::exists(dir / "one" / "report.html"));
   for (const char* f : {"samples.csv", "montecarlo.json"})
     CHECK(elbowsim::testing::slurp(dir / "one" / f) == elbowsim::testing::slurp(dir / "two" / f));
   CHECK(elbowsim::testing::slurp(dir / "one" / "samples.csv") !=
