@@ -126,6 +126,7 @@ void check_motor(const Motor& m, int i, MotorModel model) {
   require(m.gear_ratio > 0, at("motors", i) + ".gear_ratio must be > 0");
   require(m.voltage_limit > 0, at("motors", i) + ".voltage_limit must be > 0");
   require(m.current_limit > 0, at("motors", i) + ".current_limit must be > 0");
+  require(m.rated_current > 0, at("motors", i) + ".rated_current must be > 0");
   require(m.rotor_inertia >= 0 && m.gear_friction >= 0,
           at("motors", i) + ": rotor_inertia and gear_friction must be >= 0");
 }

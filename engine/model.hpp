@@ -159,6 +159,9 @@ struct Motor {
   // [A] > 0: the amplifier keeps |i| within it by narrowing the voltage to
   // back-EMF +- R current_limit (motor.cpp); infinity: no limit.
   double current_limit = std::numeric_limits<double>::infinity();
+  // [A] > 0: continuous (thermal) rating. Not a limit: a run whose RMS
+  // current exceeds it warns (the motor would overheat); infinity: unrated.
+  double rated_current = std::numeric_limits<double>::infinity();
 
   double km() const { return torque_constant * gear_ratio; }
   double jm() const { return rotor_inertia * gear_ratio * gear_ratio; }

@@ -12,7 +12,7 @@ namespace {
 // inductance, if any, for the full-model check below.
 Value overlay_motor(const Value& v, Motor& motor) {
   v.allow_keys({"resistance", "inductance", "torque_constant", "gear_ratio", "rotor_inertia",
-                "gear_friction", "voltage_limit", "current_limit"});
+                "gear_friction", "voltage_limit", "current_limit", "rated_current"});
   motor.resistance = value_or(v.get("resistance"), motor.resistance, positive);
   motor.inductance = value_or(v.get("inductance"), motor.inductance, non_negative);
   motor.torque_constant = value_or(v.get("torque_constant"), motor.torque_constant, positive);
@@ -21,6 +21,7 @@ Value overlay_motor(const Value& v, Motor& motor) {
   motor.gear_friction = value_or(v.get("gear_friction"), motor.gear_friction, non_negative);
   motor.voltage_limit = value_or(v.get("voltage_limit"), motor.voltage_limit, positive);
   motor.current_limit = value_or(v.get("current_limit"), motor.current_limit, positive);
+  motor.rated_current = value_or(v.get("rated_current"), motor.rated_current, positive);
   return v.get("inductance");
 }
 

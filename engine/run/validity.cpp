@@ -1,6 +1,7 @@
 #include "engine/run/validity.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 
 #include "engine/contact/detection.hpp"
@@ -225,6 +226,24 @@ double stable_step_estimate(const Model& model, Data& data) {
   // Stability limits along the negative real axis: RK4 2.785, Euler and semi-implicit Euler 2.
   const double reach = model.options.integrator == IntegratorKind::rk4 ? 2.785 : 2.0;
   return reach / rate;
+}
+
+std::vector<std::string> motor_rating_warnings(const Model& model, const Metrics& metrics) {
+  std::vector<std::string> out;
+  const Metric* rms = metrics.find("current_rms");
+  if (!model.has_motor() || !rms) return out;
+  for (int j = 0; j < model.dof; ++j) {
+    const double rated = model.motors[static_cast<std::size_t>(j)].rated_current;
+    const double i = rms->values[static_cast<std::size_t>(j)];
+    if (!(i > rated)) continue;
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "motor %d carries %.3g A RMS, %.2g times its rated continuous current %.3g A "
+                  "(motors: rated_current): a real motor of this rating would overheat",
+                  j, i, i / rated, rated);
+    out.emplace_back(text);
+  }
+  return out;
 }
 
 }  // namespace elbowsim

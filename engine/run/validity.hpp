@@ -14,6 +14,7 @@
 #pragma once
 
 #include "engine/data.hpp"
+#include "engine/recording/metrics.hpp"
 #include "engine/recording/recording.hpp"
 
 namespace elbowsim {
@@ -49,5 +50,10 @@ void check_planned_rest(const Model& model, const std::vector<int>& planned_rest
 // (the arm's fastest damped and oscillatory rates, with the motors' back-EMF
 // damping and a tracking controller's gains); 0 when it cannot be estimated.
 double stable_step_estimate(const Model& model, Data& data);
+
+// One sentence per motor whose RMS current over the run (the metrics'
+// current_rms) exceeds its rated continuous current: the run is valid, the
+// design is not (a real motor of that rating would overheat).
+std::vector<std::string> motor_rating_warnings(const Model& model, const Metrics& metrics);
 
 }  // namespace elbowsim

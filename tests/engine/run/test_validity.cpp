@@ -8,7 +8,9 @@
 #include "engine/contact/collision.hpp"
 #include "engine/run/state_layout.hpp"
 #include "engine/run/step.hpp"
+#include "engine/run/simulator.hpp"
 #include "engine/run/validity.hpp"
+#include "support/experiment_scenes.hpp"
 #include "support/recordings.hpp"
 #include "support/scenes.hpp"
 
@@ -172,4 +174,27 @@ TEST_CASE("stable_step_estimate: 2.785 / ((D + Km^2 / R) / J) for one joint with
   CHECK(stable_step_estimate(m, data) == doctest::Approx(2.785 * J / D).epsilon(1e-9));
   m.options.integrator = IntegratorKind::euler;
   CHECK(stable_step_estimate(m, data) == doctest::Approx(2.0 * J / D).epsilon(1e-9));
+}
+
+TEST_CASE("motor ratings: a motor above its rated continuous current warns with the ratio; a valid run all the same") {
+  WritingArm arm;
+  arm.elbow_on = false;  // the shoulder holds the arm out: the largest current
+  ExperimentScene scene = arm.scene();
+  const RunResult unrated = simulate(scene.model, scene.experiment, RunOptions{10, {}});
+  REQUIRE(unrated.valid);
+  const double shoulder = unrated.metrics.find("current_rms")->values[0];
+  for (const std::string& w : unrated.warnings) CHECK(w.find("rated continuous") == std::string::npos);
+  scene.model.motors[0].rated_current = 0.5 * shoulder;
+  scene.model.motors[1].rated_current = 1e3;  // far above: no warning
+  finalize(scene.model);
+  const RunResult r = simulate(scene.model, scene.experiment, RunOptions{10, {}});
+  CHECK(r.valid);
+  int found = 0;
+  for (const std::string& w : r.warnings)
+    if (w.find("rated continuous") != std::string::npos) {
+      ++found;
+      CHECK(w.find("motor 0 carries") == 0);
+      CHECK(w.find("2 times its rated continuous current") != std::string::npos);
+    }
+  CHECK(found == 1);
 }
