@@ -5,6 +5,7 @@
 #include "engine/contact/detection.hpp"
 #include "engine/contact/stick_slip.hpp"
 #include "engine/run/derivative.hpp"
+#include "engine/run/event_location.hpp"
 #include "engine/run/integrator.hpp"
 
 namespace elbowsim {
@@ -83,51 +84,10 @@ void find_events(const Model& model, Data& data) {
   }
 }
 
-// Redoes the step from its start over tau <= h; the redone step replaces the
-// one already counted.
-void redo_step(const Model& model, Data& data, double t0, double tau) {
-  data.x = data.x_start;
-  data.t = t0;
-  integrate_step(model, data, tau);
-  --data.step_count;
-}
-
-// Illinois (modified regula falsi) on the event function over the step, each
-// evaluation integrating from the step start; returns a time just past the
-// event, within model.contact.locate_tolerance.
+// The event's time, to model.contact.locate_tolerance (run/event_location.hpp).
 double locate(const Model& model, Data& data, double t0, double h, int slot, Event event) {
-  auto value_at = [&](double tau) {
-    redo_step(model, data, t0, tau);
-    return event_value(model, data, slot, event);
-  };
-  double lo = 0, hi = h, g_hi = event_value(model, data, slot, event);
-  const double t_end = data.t;
-  data.x.swap(data.x_start);
-  data.t = t0;
-  double g_lo = event_value(model, data, slot, event);
-  data.x.swap(data.x_start);
-  data.t = t_end;
-  int side = 0;
-  const double tolerance = model.contact.locate_tolerance;
-  while (hi - lo > tolerance) {
-    double tau = hi - g_hi * (hi - lo) / (g_hi - g_lo);
-    if (!(tau > lo && tau < hi)) tau = 0.5 * (lo + hi);
-    // Half a tolerance inside the bracket: a converged estimate then closes
-    // it from one side in one more evaluation (instead of bisecting there).
-    tau = std::clamp(tau, lo + 0.5 * tolerance, hi - 0.5 * tolerance);
-    const double g = value_at(tau);
-    if (g < 0) {
-      hi = tau, g_hi = g;
-      if (side == -1) g_lo *= 0.5;
-      side = -1;
-    } else {
-      lo = tau, g_lo = g;
-      if (side == 1) g_hi *= 0.5;
-      side = 1;
-    }
-  }
-  value_at(hi);
-  return hi;
+  return locate_crossing(model, data, t0, h, model.contact.locate_tolerance,
+                         [slot, event](const Model& m, Data& d) { return event_value(m, d, slot, event); });
 }
 
 // What an event changes at its time (a landing is the impact stage's; a
