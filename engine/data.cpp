@@ -37,6 +37,9 @@ Data::Data(const Model& model) : llt(model.dof), contact(make_contact_data(model
   const int n = model.dof;
   const auto un = static_cast<std::size_t>(n);
   q = qd = current = qdd = voltage = current_rate = actuation = Eigen::VectorXd::Zero(n);
+  joint_mode.assign(static_cast<std::size_t>(n), 0);
+  joint_friction_torque = tau_applied = Eigen::VectorXd::Zero(n);
+  joint_mass = Eigen::MatrixXd::Zero(n, n);
   rotation.assign(un, Eigen::Matrix3d::Identity());
   origin.assign(un, Eigen::Vector3d::Zero());
   axis = com = omega = omega_dot = origin_acc = force = moment = origin;

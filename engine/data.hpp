@@ -36,6 +36,7 @@ struct EnergyTerms {
   // the supply delivered and what the motors fed back (drawn - regenerated = E_in).
   double drawn = 0;            // [J] integral of sum_j max(v_j i_j, 0)
   double regenerated = 0;      // [J] integral of sum_j max(-v_j i_j, 0)
+  double joint_friction = 0;   // [J] integral of the sliding joints' friction loss (joint_friction)
   double mechanical() const { return kinetic_links + kinetic_rotors + potential; }
   double stored() const { return mechanical() + magnetic; }
 };
@@ -107,6 +108,12 @@ struct Data {
   std::shared_ptr<const Controller> controller;  // tracking controller and its plan; null: open loop
   Eigen::VectorXd q_desired, qd_desired, v_feedforward;  // [n] the plan at the stage time
   DigitalLoopState loop;  // sampled control: measurements, estimate, held voltage (digital_loop.hpp)
+
+  // --- joint friction (effects.joint_friction; dynamics/joint_friction.hpp) ---
+  std::vector<signed char> joint_mode;  // [n] +1 / -1 sliding that way, 0 stuck (for the step)
+  Eigen::VectorXd joint_friction_torque;  // [n] friction torque on each joint [N m] (stuck: what it holds)
+  Eigen::VectorXd tau_applied;            // [n] actuation + friction [N m]
+  Eigen::MatrixXd joint_mass;             // [n x n] M with the stuck joints locked (scratch)
 
   EnergyTerms energy;           // at time t
   EnergyTerms energy_initial;   // at t = 0

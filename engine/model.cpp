@@ -67,6 +67,7 @@ std::vector<std::string> Model::active_effects() const {
   if (effects.damping) names.emplace_back("damping");
   if (has_motor()) names.emplace_back(std::string("motor:") + to_string(effects.motor));
   if (has_armature()) names.emplace_back("rotor_inertia");
+  if (effects.joint_friction) names.emplace_back("joint_friction");
   if (effects.contact) {
     names.emplace_back("contact");
     if (effects.friction) names.emplace_back("friction");
@@ -193,6 +194,16 @@ void finalize(Model& model) {
     model.hand_mass_added = model.hand_load.mass;
   }
   require(!model.effects.friction || model.effects.contact, "friction needs contact");
+  if (model.effects.joint_friction) {
+    require(static_cast<int>(model.joint_friction.size()) == n,
+            "joint_friction needs one entry per joint");
+    require(!model.effects.contact,
+            "joint friction with contact is not supported yet (the joint rows are not part of "
+            "the contact solve): switch one of them off");
+    for (const JointFriction& f : model.joint_friction)
+      require(f.coulomb >= 0 && f.breakaway >= f.coulomb && f.stribeck_velocity > 0,
+              "joint friction needs 0 <= coulomb <= breakaway and stribeck_velocity > 0");
+  }
   if (model.damping.size() == 0) model.damping = Eigen::VectorXd::Zero(n);
   model.planar_axis = planar_axis(model);
 

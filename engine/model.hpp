@@ -37,6 +37,7 @@ struct Effects {
   bool contact = false;       // elbows on the table: Bullet detection, rows of M*
   bool friction = false;      // friction at resting contacts (contact.friction: law and mu)
   bool impacts = true;        // touchdown applies an impulse (restitution e)
+  bool joint_friction = false;  // Coulomb and Stribeck friction at the joints, with sticking
   Stabilization stabilization = Stabilization::baumgarte;  // drift control of C(q) = 0
 };
 
@@ -168,6 +169,15 @@ struct Motor {
   double dm() const { return gear_friction * gear_ratio * gear_ratio; }
 };
 
+// Dry friction at a joint, on its output side (docs/model.md, Joint friction):
+// sliding at speed w it resists with tau(w) = coulomb + (breakaway - coulomb)
+// exp(-(w / stribeck_velocity)^2); stuck, it holds up to breakaway.
+struct JointFriction {
+  double coulomb = 0.0;            // [N m] >= 0, the sliding friction torque at speed
+  double breakaway = 0.0;          // [N m] >= coulomb, the most a stuck joint holds
+  double stribeck_velocity = 0.01; // [rad/s] > 0, how fast the breakaway excess fades
+};
+
 // Constant load at the hand: a point mass carried at the hand point and/or a
 // constant world force on it (e.g. pressing a pen).
 struct HandLoad {
@@ -216,6 +226,7 @@ struct Model {
   // A payload at the hand (part of the plant; the experiment's task and
   // controller live beside the model, control/experiment.hpp).
   HandLoad hand_load;
+  std::vector<JointFriction> joint_friction;  // [n] with effects.joint_friction
   double hand_mass_added = 0;  // [kg] of hand_load.mass already merged into the hand link by finalize()
 
   // Derived by finalize(): reflected motor constants, per joint [dof].

@@ -290,3 +290,32 @@ TEST_CASE("shipped scenarios load") {
   CHECK(arm.output.every == 10);
   CHECK(arm.model.km[0] == doctest::Approx(3.0));
 }
+
+TEST_CASE("joint_friction: one number for every joint or one per joint; breakaway defaults to Coulomb") {
+  const Scenario s = load(two_link_with(R"(
+effects: {joint_friction: true}
+joint_friction: {coulomb: 0.1, breakaway: [0.2, 0.15]}
+)"));
+  REQUIRE(s.model.joint_friction.size() == 2);
+  CHECK(s.model.joint_friction[0].coulomb == 0.1);
+  CHECK(s.model.joint_friction[1].breakaway == 0.15);
+  CHECK(s.model.joint_friction[1].stribeck_velocity == 0.01);
+  const Scenario plain = load(two_link_with("effects: {joint_friction: true}\njoint_friction: {coulomb: 0.3}\n"));
+  CHECK(plain.model.joint_friction[0].breakaway == 0.3);
+  CHECK(load(kTwoLink).model.joint_friction.empty());
+}
+
+TEST_CASE("joint_friction errors") {
+  CHECK_ERROR(two_link_with("joint_friction: {coulomb: 0.1}\n"), "x.yaml:9:", "joint_friction",
+              "needs effects.joint_friction: true");
+  CHECK_ERROR(two_link_with("effects: {joint_friction: true}\n"), "x.yaml:9:", "effects.joint_friction",
+              "needs a joint_friction section");
+  CHECK_ERROR(two_link_with("effects: {joint_friction: true}\njoint_friction: {coulomb: 0.2, breakaway: 0.1}\n"),
+              "x.yaml:10:", "joint_friction.breakaway", "must be >= coulomb");
+  CHECK_ERROR(two_link_with("effects: {joint_friction: true}\njoint_friction: {coulomb: [0.1]}\n"),
+              "x.yaml:10:", "joint_friction.coulomb", "one per joint");
+  CHECK_ERROR(two_link_with("effects: {joint_friction: true}\njoint_friction: {stribeck_velocity: 0}\n"),
+              "x.yaml:10:", "joint_friction.stribeck_velocity", "must be > 0");
+  CHECK_ERROR(two_link_with("effects: {joint_friction: true, contact: true}\n"), "x.yaml:9:",
+              "effects.joint_friction", "not supported yet");
+}

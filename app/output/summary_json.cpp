@@ -13,7 +13,8 @@ nlohmann::ordered_json energy_json(const EnergyTerms& e) {
           {"kinetic_rotors", e.kinetic_rotors}, {"potential", e.potential},
           {"magnetic", e.magnetic}, {"friction", e.friction},
           {"normal_work", e.normal_work}, {"impact_loss", e.impact_loss},
-          {"projection", e.projection}, {"drawn", e.drawn}, {"regenerated", e.regenerated}};
+          {"projection", e.projection}, {"drawn", e.drawn}, {"regenerated", e.regenerated},
+          {"joint_friction", e.joint_friction}};
 }
 
 nlohmann::ordered_json model_json(const Model& m) {

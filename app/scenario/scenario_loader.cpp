@@ -84,7 +84,8 @@ Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>&
               std::vector<VariantSpec::Entry>& beliefs) {
   root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "elbows",
                    "table", "contact", "initial", "simulation", "inputs", "output", "render",
-                   "task", "controller", "hand_load", "variants", "validity", "uncertainty"});
+                   "task", "controller", "hand_load", "variants", "validity", "uncertainty",
+                   "joint_friction"});
   Scenario s;
   s.file = source.file();
   Model& model = s.model;
@@ -99,6 +100,10 @@ Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>&
   model.table = read_table(root.get("table"));
   model.contact = read_contact(root.get("contact"));
   model.validity = read_validity(root.get("validity"));
+  model.joint_friction = read_joint_friction(
+      root.get("joint_friction"),
+      root.get("effects").present() ? root.get("effects").get("joint_friction") : root.get("effects"),
+      model.dof);
   check_contact_scene(root, model);
   model.options = read_simulation(root.require("simulation"), root.get("task"));
   model.initial = read_initial(root.get("initial"), model.dof);

@@ -40,6 +40,8 @@ std::vector<Elbow> read_elbows(const Value& elbows, const Model& model, bool pla
 std::vector<TableBox> read_table(const Value& table);  // optional; boxes: one or more
 ContactOptions read_contact(const Value& contact);     // optional; defaults: ContactOptions
 ValidityOptions read_validity(const Value& validity);  // optional; defaults: ValidityOptions
+// joint_friction (with effects.joint_friction): one JointFriction per joint.
+std::vector<JointFriction> read_joint_friction(const Value& section, const Value& effect, int dof);
 // effects.contact: true needs a non-empty elbows list and a table. Call after
 // model.effects and model.elbows are read.
 void check_contact_scene(const Value& root, const Model& model);

@@ -27,7 +27,7 @@ Effects read_effects(const Value& effects) {
   Effects out;
   if (!effects.present()) return out;
   effects.allow_keys({"gravity", "damping", "motor", "rotor_inertia", "contact", "friction",
-                      "impacts", "stabilization"});
+                      "impacts", "stabilization", "joint_friction"});
   out.gravity = value_or(effects.get("gravity"), out.gravity, boolean);
   out.damping = value_or(effects.get("damping"), out.damping, boolean);
   out.rotor_inertia = value_or(effects.get("rotor_inertia"), out.rotor_inertia, boolean);
@@ -40,6 +40,11 @@ Effects read_effects(const Value& effects) {
   if (out.friction && !out.contact)
     friction.fail("needs effects.contact: true (friction acts at elbows resting on the table)");
   out.impacts = value_or(effects.get("impacts"), out.impacts, boolean);
+  Value joint_friction = effects.get("joint_friction");
+  out.joint_friction = value_or(joint_friction, out.joint_friction, boolean);
+  if (out.joint_friction && out.contact)
+    joint_friction.fail("joint friction with effects.contact is not supported yet (the joint "
+                        "rows are not part of the contact solve): switch one of them off");
   Value stabilization = effects.get("stabilization");
   if (stabilization.present())
     out.stabilization = choose(
@@ -126,6 +131,42 @@ OutputSettings read_output(const Value& output, const std::string& name) {
   out.every = static_cast<int>(n);
   out.video = value_or(output.get("video"), out.video, boolean);
   out.frames = value_or(output.get("frames"), out.frames, boolean);
+  return out;
+}
+
+// joint_friction: {coulomb, breakaway, stribeck_velocity}, each one number for
+// every joint or a list with one per joint. Needs effects.joint_friction.
+std::vector<JointFriction> read_joint_friction(const Value& section, const Value& effect, int dof) {
+  std::vector<JointFriction> out;
+  const bool on = effect.present() && effect.boolean();
+  if (!section.present()) {
+    if (on) effect.fail("needs a joint_friction section ({coulomb: N m, breakaway: N m, ...})");
+    return out;
+  }
+  if (!on) section.fail("needs effects.joint_friction: true (else it would be ignored)");
+  section.allow_keys({"coulomb", "breakaway", "stribeck_velocity"});
+  auto per_joint_values = [&](const char* key, double fallback, bool strictly_positive) {
+    const Value v = section.get(key);
+    Eigen::VectorXd x = Eigen::VectorXd::Constant(dof, fallback);
+    if (!v.present()) return x;
+    x = v.is_sequence() ? per_joint(v, dof) : Eigen::VectorXd::Constant(dof, v.number());
+    for (int j = 0; j < dof; ++j)
+      if (strictly_positive ? !(x[j] > 0) : !(x[j] >= 0))
+        v.fail(std::string("must be ") + (strictly_positive ? "> 0" : ">= 0") + " (got " +
+               format_number(x[j]) + ")");
+    return x;
+  };
+  const Eigen::VectorXd coulomb = per_joint_values("coulomb", 0.0, false);
+  Eigen::VectorXd breakaway = per_joint_values("breakaway", -1.0, false);
+  if (!section.get("breakaway").present()) breakaway = coulomb;  // no Stribeck peak
+  const Eigen::VectorXd speed = per_joint_values("stribeck_velocity", 0.01, true);
+  for (int j = 0; j < dof; ++j) {
+    if (breakaway[j] < coulomb[j])
+      section.get("breakaway").fail("must be >= coulomb at every joint (joint " + std::to_string(j) +
+                                    ": " + format_number(breakaway[j]) + " < " +
+                                    format_number(coulomb[j]) + ")");
+    out.push_back({coulomb[j], breakaway[j], speed[j]});
+  }
   return out;
 }
 

@@ -32,7 +32,7 @@ struct Column {
 // drawn, regenerated: motors only, after them).
 enum class Energy {
   in, joule, viscous, kinetic_links, kinetic_rotors, potential, magnetic,
-  friction, normal, impact, projection, drawn, regenerated
+  friction, normal, impact, projection, drawn, regenerated, joint_friction
 };
 
 class TrajectoryLayout {
@@ -44,6 +44,7 @@ class TrajectoryLayout {
     bool desired_hand = false;        // hand_d_*, hand_error
     bool contact = false;             // elbow columns and contact energies
     std::vector<std::string> elbows;  // names, in model order (contact)
+    bool joint_friction = false;      // E_joint_friction
   };
 
   TrajectoryLayout() = default;

@@ -4,6 +4,7 @@
 
 #include "engine/contact/constrained_dynamics.hpp"
 #include "engine/contact/constraint_rows.hpp"
+#include "engine/dynamics/joint_friction.hpp"
 #include "engine/dynamics/crba.hpp"
 #include "engine/dynamics/forward_dynamics.hpp"
 #include "engine/dynamics/kinematics.hpp"
@@ -73,6 +74,10 @@ double add_hand_force(const Model& model, Data& data, ConstVec qd) {
 // (M + Jm) qdd = tau - B_J + Jf^T fn with Jc qdd = gamma for the resting
 // elbows (eq. 30-33); plain forward dynamics when none rests.
 void arm_accelerations(const Model& model, Data& data, ConstVec qd) {
+  if (model.effects.joint_friction) {  // never with contact (finalize)
+    joint_friction_dynamics(model, data, qd);
+    return;
+  }
   if (!model.effects.contact || data.contact.active.empty()) {
     forward_dynamics(model, data, qd, data.actuation, data.qdd);
     return;
@@ -110,6 +115,8 @@ void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
         (data.voltage - model.km.cwiseProduct(qd)).cwiseQuotient(model.inductance);
   energy_rates(model, data, qd, hand_power, N.segment(s.energy, s.energy_terms));
   if (s.external >= 0) N[s.external] = hand_power;
+  // Friction loss of the sliding joints (a stuck joint does not move: qd_j = 0).
+  if (s.joint_friction >= 0) N[s.joint_friction] = -data.joint_friction_torque.dot(qd);
 }
 
 }  // namespace elbowsim

@@ -16,6 +16,7 @@ TrajectoryLayout trajectory_layout(const Model& model, bool desired_hand) {
   g.motors = model.has_motor();
   g.desired_hand = desired_hand;
   g.contact = model.effects.contact;
+  g.joint_friction = model.effects.joint_friction;
   if (g.contact)
     for (const Elbow& e : model.elbows) g.elbows.push_back(e.name);
   return TrajectoryLayout(std::move(g));
@@ -89,7 +90,7 @@ void write_energies(const TrajectoryLayout& L, const Data& data, double* row) {
       {Energy::magnetic, e.magnetic},      {Energy::friction, e.friction},
       {Energy::normal, e.normal_work},     {Energy::impact, e.impact_loss},
       {Energy::projection, e.projection},  {Energy::drawn, e.drawn},
-      {Energy::regenerated, e.regenerated}};
+      {Energy::regenerated, e.regenerated}, {Energy::joint_friction, e.joint_friction}};
   for (const auto& [column, value] : terms)
     if (L.energy(column) >= 0) row[L.energy(column)] = value;
   row[L.balance_residual()] = balance_residual(e, data.energy_initial);

@@ -14,6 +14,7 @@
 #include "engine/dynamics/energy.hpp"
 #include "engine/run/derivative.hpp"
 #include "engine/run/integrator.hpp"
+#include "engine/run/joint_stick_slip.hpp"
 #include "engine/run/state_layout.hpp"
 #include "engine/run/validity.hpp"
 
@@ -77,6 +78,7 @@ void evaluate_outputs(const Model& model, Data& data) {
   data.energy.joule = data.x[s.energy + 1];
   data.energy.viscous = data.x[s.energy + 2];
   if (s.external >= 0) data.energy.external = data.x[s.external];
+  if (s.joint_friction >= 0) data.energy.joint_friction = data.x[s.joint_friction];
   if (s.drawn >= 0) {
     data.energy.drawn = data.x[s.drawn];
     data.energy.regenerated = data.x[s.drawn + 1];
@@ -93,6 +95,7 @@ void reset(const Model& model, Data& data) {
   prepare_integrator(model, data);
   reset_state(model, data);
   start_digital_loop(model, data);  // the first sample, before anything reads the voltage
+  decide_joint_modes(model, data);
   data.failure = Failure{};
   data.validity = ValidityTrack{};
   data.log.clear();
@@ -113,9 +116,11 @@ void step(const Model& model, Data& data) {
   check_data(model, data);
   data.log.clear();
   if (model.effects.contact && !select_active_set(model, data)) return;
+  decide_joint_modes(model, data);
   const double t0 = data.t;
   data.x_start = data.x;
   integrate_step(model, data, step_length(model, data));
+  locate_joint_event(model, data, t0);
   if (model.effects.contact) contact_after_step(model, data, t0);
   check_step(model, data);  // run/validity.hpp: divergence, bounds, penetration
   if (!data.failure) sample_if_due(model, data);

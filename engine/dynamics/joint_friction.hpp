@@ -1,0 +1,23 @@
+// Dry friction at the joints (effects.joint_friction): a sliding joint is
+// resisted by the Stribeck curve tau(w) = tau_c + (tau_s - tau_c)
+// exp(-(w/w_s)^2) against its direction; a stuck joint does not move
+// (qdd_j = 0) and its friction is whatever holds it, while that stays within
+// tau_s. Which joints slide or stick is decided per step
+// (run/joint_stick_slip.hpp); here the dynamics for given modes.
+#pragma once
+
+#include "engine/data.hpp"
+
+namespace elbowsim {
+
+// [N m] >= 0: the friction torque of a joint sliding at |speed| (the Stribeck curve).
+double sliding_friction(const JointFriction& f, double speed);
+
+// The arm's accelerations with joint friction in the modes data.joint_mode
+// (no contact): data.tau_applied = actuation + friction of the sliding joints;
+// stuck joints locked (qdd_j = 0, by M with their rows and columns replaced
+// by the identity), data.joint_friction_torque[j] the torque that holds them.
+// Fills data.qdd. Needs forward_kinematics(q) and data.actuation.
+void joint_friction_dynamics(const Model& model, Data& data, ConstVec qd);
+
+}  // namespace elbowsim

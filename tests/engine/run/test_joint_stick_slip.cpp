@@ -1,0 +1,128 @@
+// engine/run/joint_stick_slip.cpp: a joint with dry friction, against
+// analytic cases. One link turning about a vertical axis (no gravity) under
+// a torque input: below its breakaway torque it does not move at all; above
+// it, it slides with the friction torque opposing; when the torque goes, it
+// stops at the time Coulomb's law gives and stays stuck. The energy balance
+// closes with the friction loss as its own term.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "engine/run/joint_stick_slip.hpp"
+#include "engine/run/simulator.hpp"
+#include "engine/run/step.hpp"
+#include "support/models.hpp"
+#include "support/runs.hpp"
+
+using namespace elbowsim;
+using elbowsim::testing::last;
+
+namespace {
+
+constexpr double kInertia = 0.01 + 1.0 * 0.15 * 0.15;  // about the joint [kg m^2]
+
+// A turntable link: torque `push` until `until`, then none; Coulomb tau_c,
+// breakaway tau_s.
+Model turntable(double push, double until, double coulomb, double breakaway) {
+  Model m = testing::planar_arm({{0.3, 1.0, 0.15, 0.01}});
+  m.joints[0].axis = Eigen::Vector3d::UnitZ();
+  m.effects.motor = MotorModel::none;
+  m.effects.damping = false;
+  m.effects.joint_friction = true;
+  m.joint_friction = {{coulomb, breakaway, 0.01}};
+  m.inputs.quantity = OpenLoopInputs::Quantity::torque;
+  InputProfile p;
+  p.kind = InputProfile::Kind::steps;
+  p.times = {0.0, until};
+  p.values = {push, 0.0};
+  m.inputs.joints = {p};
+  m.options = {1.0, 1e-3, IntegratorKind::rk4, DynamicsMethod::crba};
+  finalize(m);
+  return m;
+}
+
+double largest_speed(const RunResult& r) {
+  const int qd = r.trajectory.column("qd0");
+  double v = 0;
+  for (std::size_t row = 0; row < r.trajectory.rows(); ++row)
+    v = std::max(v, std::abs(r.trajectory.at(row, qd)));
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("joint friction: loaded below its breakaway torque the joint stays stuck (speed exactly 0)") {
+  const RunResult r = simulate(turntable(0.9 * 0.5, 10.0, 0.3, 0.5), RunOptions{1, {}});
+  REQUIRE(r.valid);
+  CHECK(largest_speed(r) == 0.0);
+  CHECK(last(r, "q0") == r.trajectory.at(0, r.trajectory.column("q0")));
+  CHECK(r.energy_final.joint_friction == 0.0);
+}
+
+TEST_CASE("joint friction: above breakaway it slides, the friction torque opposing (Coulomb at speed)") {
+  // Breakaway = Coulomb (no Stribeck peak): qdd = (push - tau_c) / I exactly.
+  const double push = 0.8, tau_c = 0.3;
+  const RunResult r = simulate(turntable(push, 10.0, tau_c, tau_c), RunOptions{1, {}});
+  REQUIRE(r.valid);
+  const double a = (push - tau_c) / kInertia;
+  CHECK(last(r, "qd0") == doctest::Approx(a * 1.0).epsilon(1e-9));
+  CHECK(last(r, "q0") == doctest::Approx(0.5 * a).epsilon(1e-9));
+  // The friction loss is tau_c times the angle turned; the balance closes.
+  CHECK(r.energy_final.joint_friction == doctest::Approx(tau_c * 0.5 * a).epsilon(1e-9));
+  CHECK(std::abs(r.balance_residual) < 1e-9 * r.energy_final.electrical_in);
+}
+
+TEST_CASE("joint friction: pushed, then let go, the joint stops when Coulomb's law says and stays stuck") {
+  const double push = 0.8, tau_c = 0.3, until = 0.2;
+  double previous_residual = 1e300;
+  for (double step : {1e-3, 2.5e-4}) {
+    CAPTURE(step);
+    Model m = turntable(push, until, tau_c, 0.5);
+    m.options.step = step;
+    finalize(m);
+    const RunResult r = simulate(m, RunOptions{1, {}});
+    REQUIRE(r.valid);
+    // The stop: the located step end where the speed is (to rounding) zero.
+    const int qd = r.trajectory.column("qd0"), t = r.trajectory.column("time");
+    double speed_at_release = 0, stop = -1;
+    for (std::size_t row = 1; row < r.trajectory.rows(); ++row) {
+      if (r.trajectory.at(row, t) <= until + 1e-12) speed_at_release = r.trajectory.at(row, qd);
+      if (stop < 0 && r.trajectory.at(row, t) > until && std::abs(r.trajectory.at(row, qd)) <= kJointStickSpeed)
+        stop = r.trajectory.at(row, t);
+    }
+    // Without the push w' = -tau(w) / I, so the stop comes int_0^w1 dw / tau(w)
+    // x I after the release (midpoint rule on 1e6 cells; Stribeck raises tau near 0).
+    const JointFriction f{tau_c, 0.5, 0.01};
+    double integral = 0;
+    const int cells = 1000000;
+    for (int k = 0; k < cells; ++k) {
+      const double w = (k + 0.5) * speed_at_release / cells;
+      const double wr = w / f.stribeck_velocity;
+      integral += (speed_at_release / cells) / (f.coulomb + (f.breakaway - f.coulomb) * std::exp(-wr * wr));
+    }
+    const double expected = until + kInertia * integral;
+    const double residual = std::abs(r.balance_residual) / r.energy_final.electrical_in;
+    MESSAGE("step ", step, ": released at ", speed_at_release, " rad/s; stop located at ", stop,
+            " s, expected ", expected, " s; |balance residual| / E_in = ", residual);
+    REQUIRE(stop > 0);
+    // RK4 crosses the Stribeck zone (0.01 rad/s wide: under a millisecond at
+    // this deceleration) within a step or two: the stop time is that accurate.
+    CHECK(std::abs(stop - expected) < 1e-5);
+    CHECK(last(r, "qd0") == 0.0);  // stuck to the end
+    CHECK(residual < 1e-5);
+    CHECK(residual < previous_residual);  // integration error: it falls with the step
+    previous_residual = residual;
+  }
+}
+
+TEST_CASE("decide_joint_modes: a joint at rest whose load exceeds breakaway is set sliding against its holding torque") {
+  Model m = turntable(-0.9, 10.0, 0.3, 0.5);
+  Data data(m);
+  reset(m, data);  // decides the modes at t = 0
+  CHECK(data.joint_mode[0] == -1);  // pushed negative beyond breakaway
+  Model held = turntable(-0.4, 10.0, 0.3, 0.5);
+  Data d2(held);
+  reset(held, d2);
+  CHECK(d2.joint_mode[0] == 0);
+  CHECK(d2.joint_friction_torque[0] == doctest::Approx(0.4));  // holds the push
+}
