@@ -37,6 +37,7 @@ struct EnergyTerms {
   double drawn = 0;            // [J] integral of sum_j max(v_j i_j, 0)
   double regenerated = 0;      // [J] integral of sum_j max(-v_j i_j, 0)
   double joint_friction = 0;   // [J] integral of the sliding joints' friction loss (joint_friction)
+  double gear_loss = 0;        // [J] integral of the gears' loss (gear efficiency below 1)
   double mechanical() const { return kinetic_links + kinetic_rotors + potential; }
   double stored() const { return mechanical() + magnetic; }
 };
@@ -67,7 +68,8 @@ struct Data {
   Eigen::VectorXd qdd;           // [n] joint accelerations [rad/s^2]
   Eigen::VectorXd voltage;       // [n] applied (saturated) motor voltage [V]
   Eigen::VectorXd current_rate;  // [n] di/dt [A/s] (motor: full)
-  Eigen::VectorXd actuation;     // [n] Km i, or the input torque without motors [N m]
+  Eigen::VectorXd actuation;     // [n] Km i through the gear (efficiency), or the input torque without motors [N m]
+  double gear_loss_power = 0;    // [W] (Km i - actuation) . qd: what the gears keep (gear efficiency)
 
   // --- kinematics (forward_kinematics) ------------------------------------
   std::vector<Eigen::Matrix3d> rotation;  // [n] link frame -> world

@@ -128,6 +128,9 @@ void check_motor(const Motor& m, int i, MotorModel model) {
   require(m.voltage_limit > 0, at("motors", i) + ".voltage_limit must be > 0");
   require(m.current_limit > 0, at("motors", i) + ".current_limit must be > 0");
   require(m.rated_current > 0, at("motors", i) + ".rated_current must be > 0");
+  require(m.efficiency > 0 && m.efficiency <= 1 && m.backdrive_efficiency > 0 &&
+              m.backdrive_efficiency <= 1,
+          at("motors", i) + ": gear efficiencies must be in (0, 1]");
   require(m.rotor_inertia >= 0 && m.gear_friction >= 0,
           at("motors", i) + ": rotor_inertia and gear_friction must be >= 0");
 }
@@ -210,6 +213,8 @@ void finalize(Model& model) {
   // Reflected motor constants (docs/model.md, Motors): Km = K k, Jm = Im k^2, Dm = dm k^2.
   model.km = model.armature = model.resistance = model.inductance = model.voltage_limit =
       model.current_limit = Eigen::VectorXd::Zero(n);
+  model.gear_efficiency = model.backdrive_efficiency = Eigen::VectorXd::Ones(n);
+  model.gear_losses = false;
   model.viscous = model.effects.damping ? model.damping : Eigen::VectorXd::Zero(n);
   if (!model.has_motor()) return;
   for (int i = 0; i < n; ++i) {
@@ -221,6 +226,9 @@ void finalize(Model& model) {
     model.inductance[i] = m.inductance;
     model.voltage_limit[i] = m.voltage_limit;
     model.current_limit[i] = m.current_limit;
+    model.gear_efficiency[i] = m.efficiency;
+    model.backdrive_efficiency[i] = m.backdrive_efficiency;
+    model.gear_losses = model.gear_losses || m.efficiency < 1 || m.backdrive_efficiency < 1;
   }
 }
 

@@ -163,6 +163,11 @@ struct Motor {
   // [A] > 0: continuous (thermal) rating. Not a limit: a run whose RMS
   // current exceeds it warns (the motor would overheat); infinity: unrated.
   double rated_current = std::numeric_limits<double>::infinity();
+  // (0, 1]: the gear's efficiency when the motor drives the load (joint
+  // torque = efficiency x Km i) and when the load drives the motor (joint
+  // torque = Km i / backdrive_efficiency). 1, 1: a lossless gear.
+  double efficiency = 1.0;
+  double backdrive_efficiency = 1.0;
 
   double km() const { return torque_constant * gear_ratio; }
   double jm() const { return rotor_inertia * gear_ratio * gear_ratio; }
@@ -237,6 +242,8 @@ struct Model {
   Eigen::VectorXd inductance;     // L [H]
   Eigen::VectorXd voltage_limit;  // [V]
   Eigen::VectorXd current_limit;  // [A] (infinity: none)
+  Eigen::VectorXd gear_efficiency, backdrive_efficiency;  // [-] per joint
+  bool gear_losses = false;       // a gear efficiency below 1 (E_gear in the balance)
   // The common world direction of every joint axis when they are all parallel
   // (a planar arm: every point moves in a plane normal to it, so a contact
   // whose normal lies in that plane has one tangent direction); zero otherwise.

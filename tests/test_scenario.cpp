@@ -319,3 +319,16 @@ TEST_CASE("joint_friction errors") {
   CHECK_ERROR(two_link_with("effects: {joint_friction: true, contact: true}\n"), "x.yaml:9:",
               "effects.joint_friction", "not supported yet");
 }
+
+TEST_CASE("motors: gear efficiencies in (0, 1]; below 1 the model keeps a gear loss") {
+  const Scenario s = load(two_link_with("motors: {default: {efficiency: 0.85, backdrive_efficiency: 0.6}}\n"));
+  CHECK(s.model.motors[1].efficiency == 0.85);
+  CHECK(s.model.gear_efficiency[0] == 0.85);
+  CHECK(s.model.backdrive_efficiency[1] == 0.6);
+  CHECK(s.model.gear_losses);
+  CHECK_FALSE(load(kTwoLink).model.gear_losses);
+  CHECK_ERROR(two_link_with("motors: {default: {efficiency: 1.2}}\n"), "x.yaml:9:",
+              "motors.default.efficiency", "must be in (0, 1]");
+  CHECK_ERROR(two_link_with("motors: {default: {backdrive_efficiency: 0}}\n"), "x.yaml:9:",
+              "motors.default.backdrive_efficiency", "must be in (0, 1]");
+}

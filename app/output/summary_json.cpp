@@ -14,7 +14,7 @@ nlohmann::ordered_json energy_json(const EnergyTerms& e) {
           {"magnetic", e.magnetic}, {"friction", e.friction},
           {"normal_work", e.normal_work}, {"impact_loss", e.impact_loss},
           {"projection", e.projection}, {"drawn", e.drawn}, {"regenerated", e.regenerated},
-          {"joint_friction", e.joint_friction}};
+          {"joint_friction", e.joint_friction}, {"gear_loss", e.gear_loss}};
 }
 
 nlohmann::ordered_json model_json(const Model& m) {

@@ -12,7 +12,8 @@ namespace {
 // inductance, if any, for the full-model check below.
 Value overlay_motor(const Value& v, Motor& motor) {
   v.allow_keys({"resistance", "inductance", "torque_constant", "gear_ratio", "rotor_inertia",
-                "gear_friction", "voltage_limit", "current_limit", "rated_current"});
+                "gear_friction", "voltage_limit", "current_limit", "rated_current", "efficiency",
+                "backdrive_efficiency"});
   motor.resistance = value_or(v.get("resistance"), motor.resistance, positive);
   motor.inductance = value_or(v.get("inductance"), motor.inductance, non_negative);
   motor.torque_constant = value_or(v.get("torque_constant"), motor.torque_constant, positive);
@@ -22,6 +23,13 @@ Value overlay_motor(const Value& v, Motor& motor) {
   motor.voltage_limit = value_or(v.get("voltage_limit"), motor.voltage_limit, positive);
   motor.current_limit = value_or(v.get("current_limit"), motor.current_limit, positive);
   motor.rated_current = value_or(v.get("rated_current"), motor.rated_current, positive);
+  for (auto [key, target] : {std::pair{"efficiency", &motor.efficiency},
+                             std::pair{"backdrive_efficiency", &motor.backdrive_efficiency}}) {
+    const Value e = v.get(key);
+    if (!e.present()) continue;
+    *target = e.number();
+    if (!(*target > 0 && *target <= 1)) e.fail("must be in (0, 1] (got " + format_number(*target) + ")");
+  }
   return v.get("inductance");
 }
 

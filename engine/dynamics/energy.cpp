@@ -34,7 +34,8 @@ void stored_energy(const Model& model, const Data& data, ConstVec qd, ConstVec c
 
 double balance_residual(const EnergyTerms& now, const EnergyTerms& initial) {
   const double supplied = now.electrical_in + now.normal_work + now.projection + now.external;
-  const double lost = now.joule + now.viscous + now.friction + now.impact_loss + now.joint_friction;
+  const double lost = now.joule + now.viscous + now.friction + now.impact_loss + now.joint_friction +
+                      now.gear_loss;
   return supplied - lost - (now.stored() - initial.stored());
 }
 

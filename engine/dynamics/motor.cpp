@@ -7,6 +7,7 @@ namespace elbowsim {
 
 void motor_stage(const Model& model, Data& data, ConstVec qd, ConstVec current) {
   if (!model.has_motor()) return;
+  data.gear_loss_power = 0.0;
   for (int j = 0; j < model.dof; ++j) {
     double v = saturate(data.voltage[j], model.voltage_limit[j]);
     const double back_emf = model.km[j] * qd[j];
@@ -24,7 +25,15 @@ void motor_stage(const Model& model, Data& data, ConstVec qd, ConstVec current) 
     } else {
       data.current[j] = (v - back_emf) / model.resistance[j];
     }
-    data.actuation[j] = model.km[j] * data.current[j];
+    const double motor_torque = model.km[j] * data.current[j];
+    data.actuation[j] = motor_torque;
+    if (!model.gear_losses) continue;
+    // The gear passes efficiency x the torque when the motor drives the load
+    // (power toward the joint), torque / backdrive_efficiency when the load
+    // drives the motor; what it keeps is its loss. At rest it counts as driving.
+    data.actuation[j] = motor_torque * qd[j] >= 0 ? model.gear_efficiency[j] * motor_torque
+                                                  : motor_torque / model.backdrive_efficiency[j];
+    data.gear_loss_power += (motor_torque - data.actuation[j]) * qd[j];
   }
 }
 

@@ -14,7 +14,7 @@ void add_joint_columns(std::vector<Column>& cols, const char* prefix, const char
 constexpr const char* kEnergyNames[] = {"E_in",  "E_joule",   "E_viscous", "KE_links",
                                         "KE_rotors", "PE",    "E_magnetic", "E_friction",
                                         "E_normal", "E_impact", "E_projection", "E_drawn",
-                                        "E_regenerated", "E_joint_friction"};
+                                        "E_regenerated", "E_joint_friction", "E_gear"};
 
 bool starts_with(const std::string& s, const std::string& prefix) {
   return s.size() > prefix.size() && s.compare(0, prefix.size(), prefix) == 0;
@@ -64,12 +64,17 @@ TrajectoryLayout::TrajectoryLayout(Groups groups) : groups_(std::move(groups)) {
       cols.push_back({kEnergyNames[static_cast<int>(e)], "J"});
   if (groups_.joint_friction)
     cols.push_back({kEnergyNames[static_cast<int>(Energy::joint_friction)], "J"});
+  if (groups_.gear) cols.push_back({kEnergyNames[static_cast<int>(Energy::gear)], "J"});
   cols.push_back({"balance_residual", "J"});
 }
 
 int TrajectoryLayout::energy(Energy e) const {
   const int k = static_cast<int>(e);
   const int contact_terms = groups_.contact ? 11 : 7;
+  if (e == Energy::gear)
+    return groups_.gear ? energy_ + contact_terms + (groups_.motors ? 2 : 0) +
+                              (groups_.joint_friction ? 1 : 0)
+                        : -1;
   if (e == Energy::joint_friction)
     return groups_.joint_friction ? energy_ + contact_terms + (groups_.motors ? 2 : 0) : -1;
   if (k >= static_cast<int>(Energy::drawn))
@@ -116,6 +121,7 @@ TrajectoryLayout TrajectoryLayout::from_columns(const std::vector<Column>& colum
     }
   g.contact = has("E_friction") || has("fn_link0") || !g.elbows.empty();
   g.joint_friction = has("E_joint_friction");
+  g.gear = has("E_gear");
   TrajectoryLayout layout(std::move(g));
   const std::vector<Column>& expected = layout.columns();
   auto text = [](const Column& c) { return "'" + c.name + " [" + c.unit + "]'"; };

@@ -32,7 +32,7 @@ struct Column {
 // drawn, regenerated: motors only, after them).
 enum class Energy {
   in, joule, viscous, kinetic_links, kinetic_rotors, potential, magnetic,
-  friction, normal, impact, projection, drawn, regenerated, joint_friction
+  friction, normal, impact, projection, drawn, regenerated, joint_friction, gear
 };
 
 class TrajectoryLayout {
@@ -45,6 +45,7 @@ class TrajectoryLayout {
     bool contact = false;             // elbow columns and contact energies
     std::vector<std::string> elbows;  // names, in model order (contact)
     bool joint_friction = false;      // E_joint_friction
+    bool gear = false;                // E_gear (gear efficiency below 1)
   };
 
   TrajectoryLayout() = default;

@@ -117,6 +117,7 @@ void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
   if (s.external >= 0) N[s.external] = hand_power;
   // Friction loss of the sliding joints (a stuck joint does not move: qd_j = 0).
   if (s.joint_friction >= 0) N[s.joint_friction] = -data.joint_friction_torque.dot(qd);
+  if (s.gear >= 0) N[s.gear] = data.gear_loss_power;
 }
 
 }  // namespace elbowsim

@@ -17,6 +17,7 @@ TrajectoryLayout trajectory_layout(const Model& model, bool desired_hand) {
   g.desired_hand = desired_hand;
   g.contact = model.effects.contact;
   g.joint_friction = model.effects.joint_friction;
+  g.gear = model.gear_losses;
   if (g.contact)
     for (const Elbow& e : model.elbows) g.elbows.push_back(e.name);
   return TrajectoryLayout(std::move(g));
@@ -90,7 +91,8 @@ void write_energies(const TrajectoryLayout& L, const Data& data, double* row) {
       {Energy::magnetic, e.magnetic},      {Energy::friction, e.friction},
       {Energy::normal, e.normal_work},     {Energy::impact, e.impact_loss},
       {Energy::projection, e.projection},  {Energy::drawn, e.drawn},
-      {Energy::regenerated, e.regenerated}, {Energy::joint_friction, e.joint_friction}};
+      {Energy::regenerated, e.regenerated}, {Energy::joint_friction, e.joint_friction},
+      {Energy::gear, e.gear_loss}};
   for (const auto& [column, value] : terms)
     if (L.energy(column) >= 0) row[L.energy(column)] = value;
   row[L.balance_residual()] = balance_residual(e, data.energy_initial);

@@ -1,6 +1,7 @@
 // Layout of the integrated state
 //   x = [q; qd; i (motor: full); E_in; E_joule; E_viscous; E_friction, E_normal (contact);
-//        E_drawn, E_regenerated (motors); E_joint_friction (joint friction); E_external (hand force)].
+//        E_drawn, E_regenerated (motors); E_joint_friction (joint friction); E_gear (gear losses);
+//        E_external (hand force)].
 // The energy integrals ride along in x so they are integrated to the same
 // order as the motion they account for.
 #pragma once
@@ -14,13 +15,16 @@ struct StateLayout {
       : n(model.dof), current(model.has_current_state() ? 2 * n : -1),
         energy(model.has_current_state() ? 3 * n : 2 * n),
         energy_terms((model.effects.contact ? 5 : 3) + (model.has_motor() ? 2 : 0) +
-                     (model.effects.joint_friction ? 1 : 0) +
+                     (model.effects.joint_friction ? 1 : 0) + (model.gear_losses ? 1 : 0) +
                      (model.hand_load.force.isZero() ? 0 : 1)),
         size(energy + energy_terms),
         drawn(model.has_motor() ? energy + (model.effects.contact ? 5 : 3) : -1),
         joint_friction(model.effects.joint_friction
                            ? energy + (model.effects.contact ? 5 : 3) + (model.has_motor() ? 2 : 0)
                            : -1),
+        gear(model.gear_losses ? energy + (model.effects.contact ? 5 : 3) + (model.has_motor() ? 2 : 0) +
+                                     (model.effects.joint_friction ? 1 : 0)
+                               : -1),
         external(model.hand_load.force.isZero() ? -1 : size - 1) {}
   int n;
   int q() const { return 0; }
@@ -31,6 +35,7 @@ struct StateLayout {
   int size;
   int drawn;     // index of E_drawn (E_regenerated follows), -1 without motors
   int joint_friction;  // index of E_joint_friction, -1 without joint friction
+  int gear;            // index of E_gear, -1 with lossless gears
   int external;  // index of the hand-force work integral, -1 without a hand force
 };
 

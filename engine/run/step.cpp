@@ -79,6 +79,7 @@ void evaluate_outputs(const Model& model, Data& data) {
   data.energy.viscous = data.x[s.energy + 2];
   if (s.external >= 0) data.energy.external = data.x[s.external];
   if (s.joint_friction >= 0) data.energy.joint_friction = data.x[s.joint_friction];
+  if (s.gear >= 0) data.energy.gear_loss = data.x[s.gear];
   if (s.drawn >= 0) {
     data.energy.drawn = data.x[s.drawn];
     data.energy.regenerated = data.x[s.drawn + 1];
