@@ -39,7 +39,10 @@ void decide_joint_modes(const Model& model, Data& data) {
     }
   }
   // Release the stuck joint that most exceeds its breakaway, until all hold
-  // (each pass frees one joint: at most n passes).
+  // (each pass frees one joint: at most n passes). All sliding: nothing to check.
+  bool any_stuck = false;
+  for (signed char mode : data.joint_mode) any_stuck = any_stuck || mode == 0;
+  if (!any_stuck) return;
   for (int pass = 0; pass < model.dof; ++pass) {
     nonstiff_rates(model, data, data.t, data.x, data.k1);
     int worst = -1;
