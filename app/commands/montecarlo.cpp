@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "app/commands/commands.hpp"
+#include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/draws.hpp"
@@ -118,14 +119,8 @@ std::vector<std::vector<Sample>> run_all(const MonteCarloArguments& args,
 // at half of it.
 // Each variant's nominal run at its step and at half of it, on `jobs` threads.
 Json accuracy_floors(const MonteCarloArguments& args, const std::vector<Variant>& variants, int jobs) {
-  std::vector<Scenario> halved;
-  for (const Variant& v : variants)  // loaded here: a ScenarioError leaves before any run
-    // Twice the steps between records: the same sample times, so the two RMS
-    // errors average the same instants.
-    halved.push_back(load_variant(
-        args, v.name,
-        {"simulation.step=" + study::exact(v.nominal.model.options.step / 2),
-         "output.every=" + std::to_string(2 * v.nominal.output.every)}));
+  std::vector<Scenario> halved;  // loaded here: a ScenarioError leaves before any run
+  for (const Variant& v : variants) halved.push_back(at_half_step(v.nominal));
   // The halved run's controller believes the halved scenario: its plan is
   // sampled on the half step (the nominal's is sampled on the step).
   std::vector<std::shared_ptr<const Model>> halved_believed;

@@ -1,29 +1,21 @@
 #include "app/commands/step_check.hpp"
 
 #include <cmath>
-#include <cstdio>
 
+#include "app/study/draws.hpp"
 #include "engine/run/simulator.hpp"
 
 namespace elbowsim {
 
-namespace {
-
-std::string exact(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.17g", x);
-  return b;
+Scenario at_half_step(const Scenario& scenario) {
+  return load_scenario_text(scenario.resolved_yaml, scenario.file,
+                            {"simulation.step=" + study::exact(scenario.model.options.step / 2),
+                             "output.every=" + std::to_string(2 * scenario.output.every)});
 }
-
-}  // namespace
 
 nlohmann::ordered_json check_step(const Scenario& scenario, const RunResult& result) {
   const double h = scenario.model.options.step;
-  // The resolved YAML holds every override already; twice the steps between
-  // records keeps the recorded instants (and so the RMS metrics) comparable.
-  const Scenario halved = load_scenario_text(
-      scenario.resolved_yaml, scenario.file,
-      {"simulation.step=" + exact(h / 2), "output.every=" + std::to_string(2 * scenario.output.every)});
+  const Scenario halved = at_half_step(scenario);
   const RunResult half = simulate(halved.model, halved.experiment, RunOptions{halved.output.every, {}});
   nlohmann::ordered_json j;
   j["step"] = h;

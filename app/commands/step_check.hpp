@@ -10,6 +10,11 @@
 
 namespace elbowsim {
 
+// The scenario as run (its resolved YAML) at half its step, recording at the
+// same instants (output.every doubled), so RMS metrics average the same
+// samples. Throws ScenarioError.
+Scenario at_half_step(const Scenario& scenario);
+
 // Reruns `scenario` (from its resolved YAML) at half the step, recording at
 // the same instants, and returns {step, half_step, valid_at_half_step,
 // metrics: {name: {unit, value, at_half_step, relative_change}}} for every

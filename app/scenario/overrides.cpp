@@ -10,16 +10,10 @@ namespace elbowsim::loader {
 
 namespace {
 
-// One step of a key path: a map key, or a list index ("links[2]" is two steps).
-struct Step {
-  std::string key;
-  long index = -1;  // >= 0 for a list index
-};
-
 struct Override {
   Source::Origin origin;  // where it was given: "command line --set <text>" or a file line
   std::string note;       // appended to messages (Source::note)
-  std::vector<Step> steps;
+  std::vector<KeyStep> steps;
   std::string path;   // normalized "a.b[0].c"
   std::string value;  // YAML text
 };
@@ -28,30 +22,7 @@ struct Override {
   throw ScenarioError(o.origin.file, o.origin.line, o.origin.column, key, message + o.note);
 }
 
-bool is_key_char(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
-}
-
-// "links[2][0]" -> key "links", indices 2, 0.
-void parse_segment(const std::string& segment, Override& o) {
-  std::vector<Step>& out = o.steps;
-  std::size_t i = 0;
-  while (i < segment.size() && is_key_char(segment[i])) ++i;
-  if (i == 0) fail(o, "", "expected key.path=value (bad key \"" + segment + "\")");
-  out.push_back({segment.substr(0, i)});
-  while (i < segment.size()) {
-    std::size_t close = segment.find(']', i);
-    long index = -1;
-    auto [end, ec] = std::from_chars(segment.data() + i + 1, segment.data() + close, index);
-    if (segment[i] != '[' || close == std::string::npos || ec != std::errc{} ||
-        end != segment.data() + close || index < 0)
-      fail(o, "", "expected key.path=value (bad index in \"" + segment + "\")");
-    out.push_back({"", index});
-    i = close + 1;
-  }
-}
-
-std::string join_path(const std::vector<Step>& steps, std::size_t count) {
+std::string join_path(const std::vector<KeyStep>& steps, std::size_t count) {
   std::string path;
   for (std::size_t i = 0; i < count; ++i) {
     // Appended piece by piece: `"[" + std::to_string(...)` trips GCC 12's -Wrestrict.
@@ -68,12 +39,8 @@ Override parse(const std::string& text, Source::Origin origin, std::string note)
   Override o{std::move(origin), std::move(note), {}, "", ""};
   std::size_t eq = text.find('=');
   if (eq == std::string::npos || eq == 0) fail(o, "", "expected key.path=value");
-  std::string path = text.substr(0, eq);
-  for (std::size_t start = 0; start <= path.size();) {
-    std::size_t dot = std::min(path.find('.', start), path.size());
-    parse_segment(path.substr(start, dot - start), o);
-    start = dot + 1;
-  }
+  const std::string problem = parse_key_path(text.substr(0, eq), false, o.steps);
+  if (!problem.empty()) fail(o, "", "expected key.path=value (" + problem + ")");
   o.path = join_path(o.steps, o.steps.size());
   o.value = text.substr(eq + 1);
   return o;
@@ -82,7 +49,7 @@ Override parse(const std::string& text, Source::Origin origin, std::string note)
 // The child named by step k of `o`: a list item that must exist, or a map
 // entry (undefined until assigned when the key is new).
 YAML::Node descend(YAML::Node node, const Override& o, std::size_t k) {
-  const Step& s = o.steps[k];
+  const KeyStep& s = o.steps[k];
   std::string here = join_path(o.steps, k);
   std::string there = join_path(o.steps, k + 1);
   if (s.index >= 0) {
@@ -105,6 +72,36 @@ YAML::Node parse_value(const Override& o) {
 }
 
 }  // namespace
+
+std::string parse_key_path(const std::string& path, bool every_item, std::vector<KeyStep>& out) {
+  auto is_key_char = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+  };
+  for (std::size_t start = 0; start <= path.size();) {
+    const std::size_t dot = std::min(path.find('.', start), path.size());
+    const std::string segment = path.substr(start, dot - start);
+    start = dot + 1;
+    // "links[2][0]" -> key "links", indices 2, 0.
+    std::size_t i = 0;
+    while (i < segment.size() && is_key_char(segment[i])) ++i;
+    if (i == 0) return "bad key \"" + segment + "\"";
+    out.push_back({segment.substr(0, i)});
+    while (i < segment.size()) {
+      const std::size_t close = segment.find(']', i);
+      if (segment[i] != '[' || close == std::string::npos) return "bad index in \"" + segment + "\"";
+      const std::string inside = segment.substr(i + 1, close - i - 1);
+      long index = -1;
+      const auto [end, ec] = std::from_chars(inside.data(), inside.data() + inside.size(), index);
+      if (every_item && inside == "*")
+        index = kEveryItem;
+      else if (ec != std::errc{} || end != inside.data() + inside.size() || index < 0)
+        return "bad index in \"" + segment + "\"";
+      out.push_back({"", index});
+      i = close + 1;
+    }
+  }
+  return "";
+}
 
 void apply_override(YAML::Node& root, const std::string& text, Source& source) {
   apply_override(root, text, source, {"command line --set " + text, 0, 0});

@@ -157,8 +157,9 @@ std::vector<JointFriction> read_joint_friction(const Value& section, const Value
     return x;
   };
   const Eigen::VectorXd coulomb = per_joint_values("coulomb", 0.0, false);
-  Eigen::VectorXd breakaway = per_joint_values("breakaway", -1.0, false);
-  if (!section.get("breakaway").present()) breakaway = coulomb;  // no Stribeck peak
+  // Without breakaway: no Stribeck peak (breakaway = coulomb).
+  const Eigen::VectorXd breakaway =
+      section.get("breakaway").present() ? per_joint_values("breakaway", 0.0, false) : coulomb;
   const Eigen::VectorXd speed = per_joint_values("stribeck_velocity", 0.01, true);
   for (int j = 0; j < dof; ++j) {
     if (breakaway[j] < coulomb[j])

@@ -9,51 +9,16 @@
 //
 // Keys are checked against the scenario as loaded (after variants and --set):
 // a relative law needs the number to be there; "[*]" expands over a list.
-#include <charconv>
 #include <cmath>
 #include <set>
 
 #include "app/scenario/checks.hpp"
+#include "app/scenario/overrides.hpp"
 #include "app/scenario/sections.hpp"
 
 namespace elbowsim::loader {
 
 namespace {
-
-// "a.b[2][*].c" -> steps; an index of -1 is [*].
-struct KeyStep {
-  std::string key;
-  long index = -2;  // -2: a map key; -1: every item; >= 0: one item
-};
-
-bool parse_key(const std::string& path, std::vector<KeyStep>& out) {
-  std::size_t i = 0;
-  while (i < path.size()) {
-    std::size_t end = path.find_first_of(".[", i);
-    if (end == std::string::npos) end = path.size();
-    if (end == i) return false;
-    out.push_back({path.substr(i, end - i)});
-    i = end;
-    while (i < path.size() && path[i] == '[') {
-      const std::size_t close = path.find(']', i);
-      if (close == std::string::npos) return false;
-      const std::string inside = path.substr(i + 1, close - i - 1);
-      long index = -1;
-      if (inside != "*") {
-        auto [p, ec] = std::from_chars(inside.data(), inside.data() + inside.size(), index);
-        if (ec != std::errc{} || p != inside.data() + inside.size() || index < 0) return false;
-      }
-      out.push_back({"", index});
-      i = close + 1;
-    }
-    if (i < path.size()) {
-      if (path[i] != '.') return false;
-      ++i;
-      if (i == path.size()) return false;
-    }
-  }
-  return !out.empty();
-}
 
 // Every concrete key path the steps name in `node`, with its node (undefined
 // when the last map key is missing). Fails at `where` when a list is missing
@@ -66,7 +31,7 @@ void expand(const YAML::Node& node, const std::vector<KeyStep>& steps, std::size
     return;
   }
   const KeyStep& s = steps[k];
-  if (s.index == -2) {
+  if (s.index == kMapKey) {
     const std::string path = prefix.empty() ? s.key : prefix + "." + s.key;
     if (node.IsDefined() && node.IsMap() && node[s.key]) {
       expand(node[s.key], steps, k + 1, path, where, absent_ok, out);
@@ -75,7 +40,7 @@ void expand(const YAML::Node& node, const std::vector<KeyStep>& steps, std::size
     } else if (absent_ok) {  // an absolute law: the draw creates the missing maps
       std::string rest = path;
       for (std::size_t i = k + 1; i < steps.size(); ++i) {
-        if (steps[i].index != -2) where.fail("the scenario has no " + path + " (a list to index)");
+        if (steps[i].index != kMapKey) where.fail("the scenario has no " + path + " (a list to index)");
         rest += "." + steps[i].key;
       }
       out.emplace_back(rest, YAML::Node(YAML::NodeType::Undefined));
@@ -86,8 +51,8 @@ void expand(const YAML::Node& node, const std::vector<KeyStep>& steps, std::size
   }
   if (!node.IsDefined() || !node.IsSequence())
     where.fail(prefix + " is not a list in the scenario");
-  const long first = s.index < 0 ? 0 : s.index;
-  const long last = s.index < 0 ? static_cast<long>(node.size()) - 1 : s.index;
+  const long first = s.index == kEveryItem ? 0 : s.index;
+  const long last = s.index == kEveryItem ? static_cast<long>(node.size()) - 1 : s.index;
   if (last >= static_cast<long>(node.size()))
     where.fail(prefix + "[" + std::to_string(last) + "] is out of range (the list has " +
                std::to_string(node.size()) + " items)");
@@ -139,7 +104,7 @@ Uncertainty read_uncertainty(const Value& uncertainty, const YAML::Node& root) {
   for (const auto& [key, law] : parameters.entries()) {
     const UncertainParameter p = read_law(key, law);
     std::vector<KeyStep> steps;
-    if (!parse_key(p.given, steps)) key.fail("expected a key path (e.g. robot.planar.links[*].mass)");
+    if (!parse_key_path(p.given, true, steps).empty()) key.fail("expected a key path (e.g. robot.planar.links[*].mass)");
     if (steps.front().key == "uncertainty" || steps.front().key == "variants" ||
         steps.front().key == "simulation" || steps.front().key == "output" ||
         steps.front().key == "render" || steps.front().key == "controller" ||

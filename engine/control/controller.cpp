@@ -48,9 +48,7 @@ void control_law(const Model& model, Data& data, double t, ConstVec q, ConstVec 
 }
 
 void command(const Model& model, Data& data, double t, ConstVec q, ConstVec qd) {
-  const Controller* controller = data.controller.get();
-  if (model.has_motor() && controller && controller->plan &&
-      controller->spec.kind != ControllerSpec::Kind::open_loop && controller->spec.loop.sampled()) {
+  if (model.has_motor() && sampled_loop(data)) {
     // Zero-order hold: the plan at t is still what the last sample left.
     data.voltage = data.loop.held;
     return;

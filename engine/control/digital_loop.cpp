@@ -13,13 +13,6 @@ namespace elbowsim {
 
 namespace {
 
-const DigitalLoopSpec* loop_of(const Data& data) {
-  const Controller* c = data.controller.get();
-  return c && c->plan && c->spec.kind != ControllerSpec::Kind::open_loop && c->spec.loop.sampled()
-             ? &c->spec.loop
-             : nullptr;
-}
-
 // [rad] the joint-side resolution of joint j's encoder.
 double resolution(const Model& model, const SensorSpec& s, int j) {
   const double shaft = 2 * std::numbers::pi / static_cast<double>(s.counts_per_rev);
@@ -68,6 +61,13 @@ void sample(const Model& model, Data& data, const DigitalLoopSpec& spec, bool fi
 
 }  // namespace
 
+const DigitalLoopSpec* sampled_loop(const Data& data) {
+  const Controller* c = data.controller.get();
+  return c && c->plan && c->spec.kind != ControllerSpec::Kind::open_loop && c->spec.loop.sampled()
+             ? &c->spec.loop
+             : nullptr;
+}
+
 void measure_angles(const Model& model, const DigitalLoopSpec& spec, DigitalLoopState& state,
                     ConstVec q, Eigen::Ref<Eigen::VectorXd> out) {
   const SensorSpec& s = spec.sensors;
@@ -84,7 +84,7 @@ void measure_angles(const Model& model, const DigitalLoopSpec& spec, DigitalLoop
 }
 
 void start_digital_loop(const Model& model, Data& data) {
-  const DigitalLoopSpec* spec = loop_of(data);
+  const DigitalLoopSpec* spec = sampled_loop(data);
   data.loop.next_sample = 0;
   data.loop.pending.clear();
   if (!spec) return;
@@ -98,7 +98,7 @@ void start_digital_loop(const Model& model, Data& data) {
 }
 
 void sample_if_due(const Model& model, Data& data) {
-  const DigitalLoopSpec* spec = loop_of(data);
+  const DigitalLoopSpec* spec = sampled_loop(data);
   if (!spec) return;
   // Instants are k T, not sums of steps: no drift. A step that ends within a
   // billionth of a step of the instant has reached it.
@@ -107,7 +107,7 @@ void sample_if_due(const Model& model, Data& data) {
 }
 
 double time_to_sample(const Data& data) {
-  const DigitalLoopSpec* spec = loop_of(data);
+  const DigitalLoopSpec* spec = sampled_loop(data);
   if (!spec) return std::numeric_limits<double>::infinity();
   return static_cast<double>(data.loop.next_sample) * spec->sample_period - data.t;
 }

@@ -48,6 +48,10 @@ struct DigitalLoopState {
   std::mt19937_64 noise;
 };
 
+// The loop a run samples: its controller's, when it tracks a plan and has a
+// sample rate; null for continuous control (and open loop).
+const DigitalLoopSpec* sampled_loop(const Data& data);
+
 // The joint angles the sensors report for the true angles q: rounded to the
 // encoder's resolution, plus noise drawn from the loop's generator.
 void measure_angles(const Model& model, const DigitalLoopSpec& spec, DigitalLoopState& state,

@@ -56,32 +56,26 @@ TrajectoryLayout::TrajectoryLayout(Groups groups) : groups_(std::move(groups)) {
       cols.push_back({"d_link" + std::to_string(j), "m"});
     }
   }
-  energy_ = size();
-  const int energies = groups_.contact ? 11 : 7;
-  for (int k = 0; k < energies; ++k) cols.push_back({kEnergyNames[k], "J"});
+  // Each energy column's index, recorded as it is laid out (-1: not recorded).
+  energy_index_.fill(-1);
+  auto add_energy = [&](Energy e) {
+    energy_index_[static_cast<std::size_t>(e)] = size();
+    cols.push_back({kEnergyNames[static_cast<int>(e)], "J"});
+  };
+  for (Energy e : {Energy::in, Energy::joule, Energy::viscous, Energy::kinetic_links,
+                   Energy::kinetic_rotors, Energy::potential, Energy::magnetic})
+    add_energy(e);
+  if (groups_.contact)
+    for (Energy e : {Energy::friction, Energy::normal, Energy::impact, Energy::projection})
+      add_energy(e);
   if (groups_.motors)
-    for (Energy e : {Energy::drawn, Energy::regenerated})
-      cols.push_back({kEnergyNames[static_cast<int>(e)], "J"});
-  if (groups_.joint_friction)
-    cols.push_back({kEnergyNames[static_cast<int>(Energy::joint_friction)], "J"});
-  if (groups_.gear) cols.push_back({kEnergyNames[static_cast<int>(Energy::gear)], "J"});
+    for (Energy e : {Energy::drawn, Energy::regenerated}) add_energy(e);
+  if (groups_.joint_friction) add_energy(Energy::joint_friction);
+  if (groups_.gear) add_energy(Energy::gear);
   cols.push_back({"balance_residual", "J"});
 }
 
-int TrajectoryLayout::energy(Energy e) const {
-  const int k = static_cast<int>(e);
-  const int contact_terms = groups_.contact ? 11 : 7;
-  if (e == Energy::gear)
-    return groups_.gear ? energy_ + contact_terms + (groups_.motors ? 2 : 0) +
-                              (groups_.joint_friction ? 1 : 0)
-                        : -1;
-  if (e == Energy::joint_friction)
-    return groups_.joint_friction ? energy_ + contact_terms + (groups_.motors ? 2 : 0) : -1;
-  if (k >= static_cast<int>(Energy::drawn))
-    return groups_.motors ? energy_ + contact_terms + k - static_cast<int>(Energy::drawn) : -1;
-  if (k >= static_cast<int>(Energy::friction) && !groups_.contact) return -1;
-  return energy_ + k;
-}
+int TrajectoryLayout::energy(Energy e) const { return energy_index_[static_cast<std::size_t>(e)]; }
 
 int TrajectoryLayout::elbow(const std::string& name) const {
   for (std::size_t k = 0; k < groups_.elbows.size(); ++k)

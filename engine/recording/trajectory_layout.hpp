@@ -18,6 +18,7 @@
 //   balance_residual [J].
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -89,8 +90,8 @@ class TrajectoryLayout {
  private:
   Groups groups_;
   std::vector<Column> columns_;
-  int q_ = 1, current_ = -1, torque_ = -1, hand_ = -1, desired_ = -1, elbow_ = -1, link_ = -1,
-      energy_ = -1;
+  int q_ = 1, current_ = -1, torque_ = -1, hand_ = -1, desired_ = -1, elbow_ = -1, link_ = -1;
+  std::array<int, static_cast<std::size_t>(Energy::gear) + 1> energy_index_{};  // energy(): -1 if absent
 };
 
 }  // namespace elbowsim

@@ -64,17 +64,17 @@ void locate_joint_event(const Model& model, Data& data, double t0) {
   const double h = data.t - t0;
   int first = -1;
   double first_time = h;
-  bool at_end = true;  // data holds the whole step
+  bool cut = false;  // data ends a shortened step (a previous joint's search)
   for (int j = 0; j < model.dof; ++j) {
-    if (!at_end) redo_step(model, data, t0, h);
-    at_end = true;
+    if (cut) redo_step(model, data, t0, h);  // back to the whole step
+    cut = false;
     if (event_value(model, data, j) >= 0) continue;
     const double tau = locate_crossing(model, data, t0, h, model.contact.locate_tolerance,
                                        [j](const Model& m, Data& d) { return event_value(m, d, j); });
-    at_end = false;
+    cut = true;
     if (first < 0 || tau < first_time) first = j, first_time = tau;
   }
-  if (first >= 0 && first_time != data.t - t0) redo_step(model, data, t0, first_time);
+  if (first >= 0) redo_step(model, data, t0, first_time);
 }
 
 }  // namespace elbowsim
