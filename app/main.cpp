@@ -25,7 +25,7 @@ constexpr const char* kUsage = R"(usage:
   elbowsim compare RUN_DIR RUN_DIR ... [--out DIR] [--expect EXPR ...]
                                                             compare saved runs in one report
   elbowsim montecarlo SCENARIO [--samples N] [--seed S] [--jobs J] [--out DIR] [--set ...]
-                       [--no-report]                        draw the uncertain plant N times
+                       [--case AXIS=LEVEL,...] [--no-report] draw the uncertain plant N times
   elbowsim --help | --version
 
 Outputs of run (in output.folder, or DIR): scenario.yaml (as run), trajectory.csv,
@@ -42,7 +42,9 @@ comparison.json. sweep writes DIR/KEY=V/ per value and DIR/sweep.csv (DIR defaul
 output.folder/sweep). montecarlo draws the scenario's uncertainty: parameters N times
 (default 30), runs every variant on each draw under the nominal controller, and writes
 DIR/samples.csv, montecarlo.json and report.html (DIR default: output.folder/montecarlo);
---jobs defaults to the machine's cores.
+--jobs defaults to the machine's cores. With a study: section, the same for every case
+(one level of each axis) in DIR/<case>/, plus DIR/study.csv, study.json and report.html;
+--case task=loops,speed=fast runs only the cases with those levels.
 Exit codes: 0 ok, 1 I/O error, 2 bad input, 3 run stopped early (outputs kept),
 4 an --expect expression does not hold.
 Scenario keys: scenarios/README.md)";
@@ -66,7 +68,8 @@ cxxopts::Options make_options() {
       "values", "sweep: its values, comma-separated", cxxopts::value<std::string>())(
       "samples", "montecarlo: number of draws", cxxopts::value<std::string>())(
       "seed", "montecarlo: seed of the draws", cxxopts::value<std::string>())(
-      "jobs", "montecarlo: threads", cxxopts::value<std::string>());
+      "jobs", "montecarlo: threads", cxxopts::value<std::string>())(
+      "case", "montecarlo: the study cases to run (axis=level,...)", cxxopts::value<std::string>());
   options.parse_positional({"positional"});
   return options;
 }
@@ -131,6 +134,7 @@ int dispatch(const cxxopts::ParseResult& parsed) {
     if (!parsed.count("jobs"))
       args.jobs = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     args.report = !parsed.count("no-report");
+    if (parsed.count("case")) args.cases = parsed["case"].as<std::string>();
     return montecarlo_command(args);
   }
   if (command == "report" && words.size() == 2)

@@ -74,8 +74,15 @@ plot::LinePlot scatter(const Json& doc) {
 
 std::string fmt(double x) { return html::display_value(Json(x)); }
 
+// object[key] as a number; NaN when missing or null (a NaN written to JSON
+// reads back as null: a floor whose nominal run was invalid).
+double number(const Json& object, const char* key) {
+  const auto it = object.find(key);
+  return it != object.end() && it->is_number() ? it->get<double>() : std::nan("");
+}
+
 std::string interval(const Json& ci) {
-  if (!ci.is_array() || ci.size() != 2) return "—";
+  if (!ci.is_array() || ci.size() != 2 || !ci[0].is_number() || !ci[1].is_number()) return "—";
   return fmt(ci[0].get<double>()) + " – " + fmt(ci[1].get<double>());
 }
 
@@ -87,8 +94,8 @@ std::string metrics_section(const Json& doc) {
     for (const auto& [name, m] : metrics.items())
       out += "<tr><td>" + html::escape(variant) + "</td><td>" + html::escape(name) + "</td><td>" +
              html::escape(m.value("unit", "")) + "</td><td>" + std::to_string(m.value("valid", 0)) +
-             "</td><td>" + fmt(m.value("mean", NAN)) + "</td><td>" + interval(m["ci95"]) +
-             "</td><td>" + fmt(m.value("median", NAN)) + "</td></tr>\n";
+             "</td><td>" + fmt(number(m, "mean")) + "</td><td>" + interval(m["ci95"]) +
+             "</td><td>" + fmt(number(m, "median")) + "</td></tr>\n";
   return out + "</tbody></table>\n";
 }
 
@@ -102,8 +109,8 @@ std::string pairs_section(const Json& doc) {
       const Json& r = p[metric];
       out += "<tr><td>" + html::escape(p.value("a", "") + " / " + p.value("b", "")) + "</td><td>" +
              metric + "</td><td>" + std::to_string(r.value("pairs", 0)) + "</td><td>" +
-             fmt(r.value("ratio", NAN)) + "</td><td>" + interval(r["ci95"]) + "</td><td>" +
-             fmt(100 * r.value("win_rate", NAN)) + " % of draws</td></tr>\n";
+             fmt(number(r, "ratio")) + "</td><td>" + interval(r["ci95"]) + "</td><td>" +
+             fmt(100 * number(r, "win_rate")) + " % of draws</td></tr>\n";
     }
   return out + "</tbody></table>\n";
 }
@@ -177,9 +184,9 @@ void write_montecarlo_report(const std::filesystem::path& folder) {
       {"uncertain parameters", std::to_string(doc["parameters"].size())}};
   for (const auto& [variant, f] : doc["accuracy_floor"].items())
     rows.push_back({"accuracy floor, " + variant,
-                    "RMS hand error " + fmt(f.value("hand_error_rms_step", NAN)) + " m at step " +
-                        fmt(f.value("step", NAN)) + " s, " + fmt(f.value("hand_error_rms_half_step", NAN)) +
-                        " m at half of it: floor " + fmt(f.value("floor", NAN)) + " m"});
+                    "RMS hand error " + fmt(number(f, "hand_error_rms_step")) + " m at step " +
+                        fmt(number(f, "step")) + " s, " + fmt(number(f, "hand_error_rms_half_step")) +
+                        " m at half of it: floor " + fmt(number(f, "floor")) + " m"});
   page += html::info_table(rows);
   page += metrics_section(doc) + pairs_section(doc) + parameters_section(doc);
   page += "<h2>Distributions</h2>\n";

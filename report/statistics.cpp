@@ -36,13 +36,15 @@ Interval bootstrap_mean(const std::vector<double>& x, double level, int resample
   if (x.size() < 2) throw std::invalid_argument("bootstrap_mean: needs at least 2 values");
   const std::size_t n = x.size();
   const double m = mean(x);
+  // Sums of deviations from m: no cancellation when the spread is small
+  // against the values (hand errors of 1e-5 m that differ by 1e-8).
   auto standard_error = [n](double sum, double sum2) {
     const double mu = sum / static_cast<double>(n);
     const double var = std::max(0.0, sum2 / static_cast<double>(n) - mu * mu);
     return std::sqrt(var / static_cast<double>(n - 1));  // sample sd / sqrt(n)
   };
   double sum = 0, sum2 = 0;
-  for (double v : x) sum += v, sum2 += v * v;
+  for (double v : x) sum += v - m, sum2 += (v - m) * (v - m);
   const double se = standard_error(sum, sum2);
   if (!(se > 0)) return {m, m};  // all values equal
   std::mt19937_64 gen(seed);
@@ -52,11 +54,14 @@ Interval bootstrap_mean(const std::vector<double>& x, double level, int resample
     double s = 0, s2 = 0;
     // Modulo bias is 2^-64 relative: nothing next to the bootstrap's own error.
     for (std::size_t i = 0; i < n; ++i) {
-      const double v = x[gen() % n];
-      s += v, s2 += v * v;
+      const double d = x[gen() % n] - m;
+      s += d, s2 += d * d;
     }
+    // A resample of one value repeated has no spread (its rounding residue
+    // would make t huge): it is left out, as are all with a spread below
+    // 1e-9 of the sample's.
     const double se_r = standard_error(s, s2);
-    if (se_r > 0) t.push_back((s / static_cast<double>(n) - m) / se_r);
+    if (se_r > 1e-9 * se) t.push_back((s / static_cast<double>(n)) / se_r);
   }
   std::sort(t.begin(), t.end());
   return {m - quantile(t, (1 + level) / 2) * se, m - quantile(t, (1 - level) / 2) * se};

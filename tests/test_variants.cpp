@@ -310,8 +310,9 @@ TEST_CASE("the shipped experiment runs at a short duration; its comparison has b
   for (const char* variant : {"elbow_on", "elbow_off"}) {
     const auto summary = nlohmann::json::parse(slurp(dir / variant / "summary.json"));
     CHECK(summary["completed"] == true);
-    // 1.5 s for the eight loops: no saturation yet (sweep: max 4 um at 1.5 s, 3.5 mm at 0.4 s).
-    CHECK(summary["metrics"]["hand_error_max"].get<double>() < 1e-4);
+    // 1.5 s for the eight loops: the 1 kHz loop's lag and noise give 0.13 mm
+    // (on) and 0.19 mm (off) at most; a saturated arm misses by millimetres.
+    CHECK(summary["metrics"]["hand_error_max"].get<double>() < 5e-4);
   }
   CHECK(fs::exists(dir / "compare" / "report.html"));
 }

@@ -87,6 +87,7 @@ struct MonteCarloArguments {
   std::optional<std::uint64_t> seed;  // default: uncertainty.seed
   int jobs = 1;
   bool report = true;  // false: --no-report
+  std::string cases;   // --case "axis=level,...": the study cases to run; "": all
 };
 int montecarlo_command(const MonteCarloArguments& args);
 

@@ -1,8 +1,10 @@
 // elbowsim montecarlo: the scenario's uncertain plant parameters drawn N
 // times (its uncertainty: section), each draw applied to every variant (a
 // paired comparison) while the controller keeps the nominal model; then
-// samples.csv, montecarlo.json and a report with the verdict. The same seed
-// gives the same bytes, whatever --jobs.
+// samples.csv, montecarlo.json and a report with the verdict. With a study:
+// section, the same for every case (one level of each axis) in its own
+// folder, and study.csv, study.json and a report over the cases. The same
+// seed gives the same bytes, whatever --jobs.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -16,11 +18,14 @@
 #include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
 #include "app/scenario/scenario.hpp"
+#include "app/study/cases.hpp"
 #include "app/study/draws.hpp"
+#include "app/study/study_table.hpp"
 #include "app/study/paired_verdict.hpp"
 #include "engine/control/inverse_kinematics.hpp"
 #include "engine/run/simulator.hpp"
 #include "report/montecarlo_report.hpp"
+#include "report/study_report.hpp"
 #include "report/statistics.hpp"
 
 namespace elbowsim {
@@ -48,12 +53,19 @@ struct Variant {
   std::shared_ptr<const Model> believed;
 };
 
-Scenario load_variant(const MonteCarloArguments& args, const std::string& name,
-                      const std::vector<std::string>& extra) {
+// One case of the study (the whole scenario without a study): its variants,
+// loaded before anything runs, and the folder it writes.
+struct CasePlan {
+  study::StudyCase study_case;
+  std::vector<Variant> variants;
+  std::filesystem::path folder;
+};
+
+Scenario load_variant(const MonteCarloArguments& args, const study::StudyCase& c,
+                      const std::string& name, const std::vector<std::string>& extra) {
   std::vector<std::string> sets = args.sets;
   sets.insert(sets.end(), extra.begin(), extra.end());
-  return name.empty() ? load_scenario(args.scenario, sets)
-                      : load_scenario_variant(args.scenario, name, sets);
+  return load_scenario_case(args.scenario, c.levels, name, sets);
 }
 
 Sample run_one(const Scenario& scenario, const std::shared_ptr<const Model>& believed) {
@@ -72,16 +84,19 @@ Sample run_one(const Scenario& scenario, const std::shared_ptr<const Model>& bel
   return s;
 }
 
-// Draw `d` of variant `v`: its drawn plant under the nominal controller.
-Sample run_draw(const MonteCarloArguments& args, const Variant& v, const study::Draw& d) {
+// Draw `d` of variant `v`: its drawn plant under the nominal controller. The
+// sensors' noise differs from draw to draw too (seed sensors.seed + d).
+Sample run_draw(const MonteCarloArguments& args, const study::StudyCase& c, const Variant& v,
+                const study::Draw& d) {
   Scenario drawn;
   try {
-    drawn = load_variant(args, v.name, study::draw_overrides(v.nominal.uncertainty, d));
+    drawn = load_variant(args, c, v.name, study::draw_overrides(v.nominal.uncertainty, d));
   } catch (const ScenarioError& e) {
     Sample s;
     s.failure = std::string("the drawn values are not a valid scenario: ") + e.what();
     return s;
   }
+  drawn.experiment.controller.loop.sensors.seed += static_cast<std::uint64_t>(d.index);
   return run_one(drawn, v.believed);
 }
 
@@ -100,25 +115,25 @@ void parallel_for(std::size_t count, int jobs, const Task& task) {
 
 // Runs every (draw, variant) on `jobs` threads; results by index, so the
 // order of completion does not matter.
-std::vector<std::vector<Sample>> run_all(const MonteCarloArguments& args,
-                                         const std::vector<Variant>& variants,
+std::vector<std::vector<Sample>> run_all(const MonteCarloArguments& args, const CasePlan& plan,
                                          const std::vector<study::Draw>& draws, int jobs) {
+  const std::vector<Variant>& variants = plan.variants;
   const std::size_t nv = variants.size(), total = draws.size() * nv;
   std::vector<std::vector<Sample>> out(draws.size(), std::vector<Sample>(nv));
   std::atomic<std::size_t> done{0};
+  const std::string label = plan.study_case.name.empty() ? "" : " " + plan.study_case.name;
   parallel_for(total, jobs, [&](std::size_t k) {
-    out[k / nv][k % nv] = run_draw(args, variants[k % nv], draws[k / nv]);
+    out[k / nv][k % nv] = run_draw(args, plan.study_case, variants[k % nv], draws[k / nv]);
     const std::size_t finished = ++done;
     if (finished % std::max<std::size_t>(1, total / 10) == 0)
-      std::cerr << "montecarlo: " << finished << " of " << total << " runs\n";
+      std::cerr << "montecarlo" + label + ": " << finished << " of " << total << " runs\n";
   });
   return out;
 }
 
-// The integration floor of the hand error: the nominal run at the step and
-// at half of it.
-// Each variant's nominal run at its step and at half of it, on `jobs` threads.
-Json accuracy_floors(const MonteCarloArguments& args, const std::vector<Variant>& variants, int jobs) {
+// The integration floor of the hand error: each variant's nominal run at its
+// step and at half of it, on `jobs` threads.
+Json accuracy_floors(const std::vector<Variant>& variants, int jobs) {
   std::vector<Scenario> halved;  // loaded here: a ScenarioError leaves before any run
   for (const Variant& v : variants) halved.push_back(at_half_step(v.nominal));
   // The halved run's controller believes the halved scenario: its plan is
@@ -179,7 +194,7 @@ void write_samples_csv(const std::filesystem::path& path, const std::vector<Vari
                        const std::vector<study::Draw>& draws,
                        const std::vector<std::vector<Sample>>& samples) {
   write_atomically(path, [&](std::ostream& out) {
-    out << "draw,variant,valid";
+    out << "draw,variant,valid,sensor_seed";
     for (const UncertainParameter& p : variants.front().nominal.uncertainty.parameters)
       out << "," << p.key;
     for (const auto& [name, unit] : kMetrics) out << "," << name << " [" << unit << "]";
@@ -187,7 +202,10 @@ void write_samples_csv(const std::filesystem::path& path, const std::vector<Vari
     for (std::size_t d = 0; d < draws.size(); ++d)
       for (std::size_t v = 0; v < variants.size(); ++v) {
         const Sample& s = samples[d][v];
-        out << draws[d].index << "," << variants[v].name << "," << (s.valid ? "true" : "false");
+        const std::uint64_t sensor_seed = variants[v].nominal.experiment.controller.loop.sensors.seed +
+                                          static_cast<std::uint64_t>(draws[d].index);
+        out << draws[d].index << "," << variants[v].name << "," << (s.valid ? "true" : "false")
+            << "," << sensor_seed;
         const auto& params = variants[v].nominal.uncertainty.parameters;
         for (std::size_t j = 0; j < params.size(); ++j)
           out << "," << study::exact(study::drawn_value(params[j], draws[d].u[j]));
@@ -207,53 +225,50 @@ int usage_error(const std::string& message) {
   return exit_bad_input;
 }
 
-}  // namespace
-
-int montecarlo_command(const MonteCarloArguments& args) {
-  if (args.samples < 2) return usage_error("--samples must be at least 2");
-  if (args.jobs < 1) return usage_error("--jobs must be at least 1");
-  Scenario base;
-  std::vector<Variant> variants;
-  try {
-    base = load_scenario(args.scenario, args.sets);
-    if (base.uncertainty.parameters.empty())
-      return usage_error(args.scenario + " has no uncertainty: parameters to draw (scenarios/README.md, uncertainty)");
-    std::vector<std::string> names;
-    for (const auto& [name, overrides] : base.variants) names.push_back(name);
-    if (names.empty()) names.push_back("");
+// Loads every case's variants (nothing runs before all of them load).
+std::vector<CasePlan> plan_cases(const MonteCarloArguments& args, const Scenario& base,
+                                 const std::vector<study::StudyCase>& cases,
+                                 const std::filesystem::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& [name, overrides] : base.variants) names.push_back(name);
+  if (names.empty()) names.push_back("");
+  std::vector<std::string> base_keys;
+  for (const auto& p : base.uncertainty.parameters) base_keys.push_back(p.key);
+  std::vector<CasePlan> plans;
+  for (const study::StudyCase& c : cases) {
+    CasePlan plan{c, {}, c.name.empty() ? folder : folder / c.name};
     for (const std::string& name : names) {
-      Scenario nominal = load_variant(args, name, {});
-      std::vector<std::string> keys, base_keys;
+      Scenario nominal = load_variant(args, c, name, {});
+      std::vector<std::string> keys;
       for (const auto& p : nominal.uncertainty.parameters) keys.push_back(p.key);
-      for (const auto& p : base.uncertainty.parameters) base_keys.push_back(p.key);
       if (keys != base_keys)
-        return usage_error("variant " + name + " changes which keys are uncertain; a paired study "
-                           "needs the same parameters in every variant");
+        throw std::invalid_argument((c.name.empty() ? "" : "case " + c.name + ", ") + "variant " + name +
+                                    " changes which keys are uncertain; a paired study needs the "
+                                    "same parameters in every variant and case");
       auto believed = std::make_shared<const Model>(nominal.experiment.believed(nominal.model));
-      variants.push_back({name, std::move(nominal), std::move(believed)});
+      plan.variants.push_back({name, std::move(nominal), std::move(believed)});
     }
-  } catch (const ScenarioError& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return exit_bad_input;
+    plans.push_back(std::move(plan));
   }
-  const std::uint64_t seed = args.seed.value_or(base.uncertainty.seed);
-  const std::filesystem::path folder = args.out.value_or(base.output.folder + "/montecarlo");
+  return plans;
+}
 
-  std::vector<study::Draw> draws;
-  for (long i = 0; i < args.samples; ++i)
-    draws.push_back(study::draw_parameters(base.uncertainty, seed, i));
-  Json floors;
-  try {
-    floors = accuracy_floors(args, variants, args.jobs);
-  } catch (const ScenarioError& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return exit_bad_input;
-  }
-  const auto samples = run_all(args, variants, draws, args.jobs);
+// One case's study: its runs, then montecarlo.json (returned), samples.csv and
+// the report in its folder.
+Json run_case(const MonteCarloArguments& args, const Scenario& base, const CasePlan& plan,
+              const std::vector<study::Draw>& draws, std::uint64_t seed) {
+  const std::vector<Variant>& variants = plan.variants;
+  const Json floors = accuracy_floors(variants, args.jobs);
+  const auto samples = run_all(args, plan, draws, args.jobs);
 
   Json doc;
   doc["scenario"] = base.model.name;
   doc["file"] = args.scenario;
+  if (!plan.study_case.name.empty()) {
+    doc["case"] = plan.study_case.name;
+    for (std::size_t a = 0; a < base.study.size(); ++a)
+      doc["levels"][base.study[a].name] = plan.study_case.levels[a];
+  }
   doc["seed"] = seed;
   doc["samples"] = args.samples;
   doc["confidence_level"] = study::kConfidenceLevel;
@@ -278,7 +293,7 @@ int montecarlo_command(const MonteCarloArguments& args) {
   doc["accuracy_floor"] = floors;
   Json invalid = Json::array();
   for (std::size_t v = 0; v < variants.size(); ++v) {
-    const std::string vname = v < names.size() ? names[v].get<std::string>() : "run";
+    const std::string vname = names[v].get<std::string>();
     for (const auto& [name, unit] : kMetrics) {
       std::vector<double> x;
       Json all = Json::array();
@@ -313,19 +328,68 @@ int montecarlo_command(const MonteCarloArguments& args) {
   doc["invalid"] = invalid;
   doc["verdict"] = verdict;
 
+  std::filesystem::create_directories(plan.folder);
+  write_samples_csv(plan.folder / "samples.csv", variants, draws, samples);
+  write_atomically(plan.folder / "montecarlo.json", [&](std::ostream& out) { out << doc.dump(2) << '\n'; });
+  if (args.report) report::write_montecarlo_report(plan.folder);
+  return doc;
+}
+
+}  // namespace
+
+int montecarlo_command(const MonteCarloArguments& args) {
+  if (args.samples < 2) return usage_error("--samples must be at least 2");
+  if (args.jobs < 1) return usage_error("--jobs must be at least 1");
+  Scenario base;
+  std::vector<CasePlan> plans;
+  std::filesystem::path folder;
   try {
-    std::filesystem::create_directories(folder);
-    write_samples_csv(folder / "samples.csv", variants, draws, samples);
-    write_atomically(folder / "montecarlo.json", [&](std::ostream& out) { out << doc.dump(2) << '\n'; });
-    if (args.report) report::write_montecarlo_report(folder);
+    base = load_scenario(args.scenario, args.sets);
+    if (base.uncertainty.parameters.empty())
+      return usage_error(args.scenario + " has no uncertainty: parameters to draw (scenarios/README.md, uncertainty)");
+    folder = args.out.value_or(base.output.folder + "/montecarlo");
+    const std::vector<study::StudyCase> cases = study::select_cases(base, args.cases);
+    plans = plan_cases(args, base, cases, folder);
+  } catch (const ScenarioError& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_bad_input;
+  } catch (const std::invalid_argument& e) {
+    return usage_error(e.what());
+  }
+  const std::uint64_t seed = args.seed.value_or(base.uncertainty.seed);
+  std::vector<study::Draw> draws;
+  for (long i = 0; i < args.samples; ++i)
+    draws.push_back(study::draw_parameters(base.uncertainty, seed, i));
+
+  std::vector<Json> docs;
+  try {
+    for (std::size_t k = 0; k < plans.size(); ++k) {
+      docs.push_back(run_case(args, base, plans[k], draws, seed));
+      const std::string& name = plans[k].study_case.name;
+      std::cout << base.model.name << (name.empty() ? "" : " " + name) << ": " << args.samples
+                << " draws x " << plans[k].variants.size() << " variants (seed " << seed << ", "
+                << docs.back()["invalid"].size() << " invalid runs) in " << plans[k].folder.string();
+      if (plans.size() > 1) std::cout << " [case " << k + 1 << " of " << plans.size() << "]";
+      std::cout << "\n";
+      for (const Json& line : docs.back()["verdict"]) std::cout << "  " << line.get<std::string>() << "\n";
+    }
+    if (!base.study.empty()) {
+      std::vector<study::StudyCase> cases;
+      for (const CasePlan& p : plans) cases.push_back(p.study_case);
+      const Json table = study::study_document(base, args.scenario, cases, docs);
+      write_atomically(folder / "study.json", [&](std::ostream& out) { out << table.dump(2) << '\n'; });
+      study::write_study_csv(folder / "study.csv", table);
+      if (args.report) report::write_study_report(folder);
+      std::cout << base.model.name << ": study of " << plans.size() << " cases in " << folder.string()
+                << " (study.csv, study.json" << (args.report ? ", report.html" : "") << ")\n";
+    }
+  } catch (const ScenarioError& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_bad_input;
   } catch (const std::exception& e) {
     std::cerr << "error: montecarlo: " << e.what() << '\n';
     return exit_io;
   }
-  std::cout << base.model.name << ": " << args.samples << " draws x " << variants.size()
-            << " variants (seed " << seed << ", " << invalid.size() << " invalid runs) in "
-            << folder.string() << "\n";
-  for (const Json& line : verdict) std::cout << "  " << line.get<std::string>() << "\n";
   return exit_ok;
 }
 

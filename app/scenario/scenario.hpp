@@ -65,6 +65,15 @@ struct Scenario {
   // the file, before the command line's). Each is validated by the loader.
   std::vector<std::pair<std::string, std::vector<std::string>>> variants;
   std::string variant;  // the variant this is (load_scenario_variant); "" otherwise
+  // study.axes: the dimensions of a study (elbowsim montecarlo runs every
+  // case: one level of each axis, applied before the variant). A case's
+  // scenario has no study.
+  struct StudyAxis {
+    std::string name;
+    std::vector<std::pair<std::string, std::vector<std::string>>> levels;  // name, overrides
+  };
+  std::vector<StudyAxis> study;
+  std::vector<std::string> study_case;  // the level of each axis this is (load_scenario_case)
 };
 
 // An error in a scenario. what() reads "file:line:column: key.path: message";
@@ -95,6 +104,18 @@ Scenario load_scenario_text(const std::string& text, const std::string& file_nam
 // when the scenario has no variant `name`.
 Scenario load_scenario_variant(const std::string& path, const std::string& name,
                                const std::vector<std::string>& overrides = {});
+
+// One case of the scenario's study: the file, then the overrides of level
+// `levels[a]` of each axis a, then variant `variant` ("": none), then
+// `overrides`. `levels` is empty or names one level per axis. The result has
+// no study and, with a variant, no variants. Throws ScenarioError, also for
+// an unknown level or variant.
+Scenario load_scenario_case(const std::string& path, const std::vector<std::string>& levels,
+                            const std::string& variant,
+                            const std::vector<std::string>& overrides = {});
+Scenario load_scenario_case_text(const std::string& text, const std::string& file_name,
+                                 const std::vector<std::string>& levels, const std::string& variant,
+                                 const std::vector<std::string>& overrides = {});
 Scenario load_scenario_variant_text(const std::string& text, const std::string& file_name,
                                     const std::string& name,
                                     const std::vector<std::string>& overrides = {});

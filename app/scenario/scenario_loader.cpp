@@ -78,14 +78,14 @@ void finalize_model(Model& model, const Source& source) {
 }
 
 // The sections, in dependency order: effects and robot (dof) before motors,
-// elbows, initial state, inputs and the task. Fills `variants` with the
-// variants: section (with where each entry is written).
-Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>& variants,
+// elbows, initial state, inputs and the task. Fills `sets` with the variants:
+// and study: sections (with where each entry is written).
+Scenario read(const Value& root, const Source& source, OverrideSets& sets,
               std::vector<VariantSpec::Entry>& beliefs) {
   root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "elbows",
                    "table", "contact", "initial", "simulation", "inputs", "output", "render",
                    "task", "controller", "hand_load", "variants", "validity", "uncertainty",
-                   "joint_friction"});
+                   "joint_friction", "study"});
   Scenario s;
   s.file = source.file();
   Model& model = s.model;
@@ -117,10 +117,17 @@ Scenario read(const Value& root, const Source& source, std::vector<VariantSpec>&
   s.render = read_render(root.get("render"));
   finalize_model(model, source);
   check_initial_penetration(root, model);
-  variants = read_variants(root.get("variants"));
-  for (const VariantSpec& v : variants) {
-    s.variants.emplace_back(v.name, std::vector<std::string>());
-    for (const VariantSpec::Entry& e : v.overrides) s.variants.back().second.push_back(e.text);
+  const auto texts = [](const VariantSpec& v) {
+    std::vector<std::string> out;
+    for (const VariantSpec::Entry& e : v.overrides) out.push_back(e.text);
+    return out;
+  };
+  sets.variants = read_variants(root.get("variants"));
+  for (const VariantSpec& v : sets.variants) s.variants.emplace_back(v.name, texts(v));
+  sets.axes = read_study(root.get("study"));
+  for (const StudyAxisSpec& axis : sets.axes) {
+    s.study.push_back({axis.name, {}});
+    for (const VariantSpec& level : axis.levels) s.study.back().levels.emplace_back(level.name, texts(level));
   }
   return s;
 }
@@ -134,9 +141,10 @@ Model read_believed(const YAML::Node& root, Source source,
   YAML::Node controller = copy["controller"];
   controller.remove("model");
   copy.remove("variants");
+  copy.remove("study");
   source.set_note(source.note() + " (in the controller's model, controller.model)");
   for (const VariantSpec::Entry& e : beliefs) apply_override(copy, e.text, source, e.origin);
-  std::vector<VariantSpec> none;
+  OverrideSets none;
   std::vector<VariantSpec::Entry> no_beliefs;
   Model believed = read(Value(source, copy), source, none, no_beliefs).model;
   auto differs = [&](const char* what, std::size_t a, std::size_t b) {
@@ -155,22 +163,45 @@ Model read_believed(const YAML::Node& root, Source source,
   return believed;
 }
 
-// One load: the file, then `variant`'s overrides (if any; errors they cause
-// name the variant), then `overrides`. A variant's scenario has no variants.
-Scenario load_once(const std::string& text, const std::string& file, const VariantSpec* variant,
-                   const std::vector<std::string>& overrides, std::vector<VariantSpec>& variants) {
+// What one load applies before the command line's overrides: a study case's
+// levels (one per axis, or none), then a variant (or none).
+struct Applied {
+  std::vector<const VariantSpec*> levels;
+  const VariantSpec* variant = nullptr;
+};
+
+// " (in study case loops-fast, variant elbow_on)": where an error came from.
+std::string applied_note(const Applied& applied) {
+  std::string note;
+  if (!applied.levels.empty()) {
+    note = "study case ";
+    for (std::size_t i = 0; i < applied.levels.size(); ++i)
+      note.append(i ? "-" : "").append(applied.levels[i]->name);
+  }
+  if (applied.variant) note.append(note.empty() ? "" : ", ").append("variant ").append(applied.variant->name);
+  return note.empty() ? note : " (in " + note + ")";
+}
+
+// One load: the file, then what `applied` names (errors they cause name the
+// level or variant), then `overrides`. A case has no study, a variant's
+// scenario no variants.
+Scenario load_once(const std::string& text, const std::string& file, const Applied& applied,
+                   const std::vector<std::string>& overrides, OverrideSets& sets) {
   Source source(file);
   YAML::Node root = parse(text, file);
-  if (variant) {
-    source.set_note(" (in variant " + variant->name + ")");
-    for (const VariantSpec::Entry& e : variant->overrides)
+  source.set_note(applied_note(applied));
+  for (const VariantSpec* level : applied.levels)
+    for (const VariantSpec::Entry& e : level->overrides) apply_override(root, e.text, source, e.origin);
+  if (applied.variant)
+    for (const VariantSpec::Entry& e : applied.variant->overrides)
       apply_override(root, e.text, source, e.origin);
-  }
   for (const std::string& o : overrides) apply_override(root, o, source);
-  if (variant) root.remove("variants");
+  if (!applied.levels.empty()) root.remove("study");
+  if (applied.variant) root.remove("variants");
   std::vector<VariantSpec::Entry> beliefs;
-  Scenario scenario = read(Value(source, root), source, variants, beliefs);
-  scenario.variant = variant ? variant->name : "";
+  Scenario scenario = read(Value(source, root), source, sets, beliefs);
+  scenario.variant = applied.variant ? applied.variant->name : "";
+  for (const VariantSpec* level : applied.levels) scenario.study_case.push_back(level->name);
   scenario.uncertainty = read_uncertainty(Value(source, root).get("uncertainty"), root);
   if (!beliefs.empty()) {
     scenario.experiment.controller_model =
@@ -183,16 +214,32 @@ Scenario load_once(const std::string& text, const std::string& file, const Varia
   return scenario;
 }
 
-const VariantSpec& find_variant(const std::vector<VariantSpec>& variants, const std::string& name,
-                                const std::string& file) {
+const VariantSpec& find_set(const std::vector<VariantSpec>& sets, const std::string& name,
+                            const std::string& file, const std::string& key, const std::string& what) {
   std::vector<std::string_view> names;
-  for (const VariantSpec& v : variants) {
+  for (const VariantSpec& v : sets) {
     if (v.name == name) return v;
     names.push_back(v.name);
   }
-  throw ScenarioError(file, 0, 0, "variants",
-                      "no variant named \"" + name + "\"" +
+  throw ScenarioError(file, 0, 0, key,
+                      "no " + what + " named \"" + name + "\"" +
                           (names.empty() ? " (the scenario has none)" : "; it has " + join(names)));
+}
+
+// The levels `names` of the study's axes, in axis order.
+std::vector<const VariantSpec*> find_levels(const std::vector<StudyAxisSpec>& axes,
+                                            const std::vector<std::string>& names,
+                                            const std::string& file) {
+  if (names.empty()) return {};
+  if (names.size() != axes.size())
+    throw ScenarioError(file, 0, 0, "study",
+                        "a study case names one level per axis: the study has " +
+                            std::to_string(axes.size()) + " axes, the case " +
+                            std::to_string(names.size()) + " levels");
+  std::vector<const VariantSpec*> out;
+  for (std::size_t a = 0; a < axes.size(); ++a)
+    out.push_back(&find_set(axes[a].levels, names[a], file, "study.axes." + axes[a].name, "level"));
+  return out;
 }
 
 std::string read_file(const std::string& path) {
@@ -207,23 +254,44 @@ std::string read_file(const std::string& path) {
 
 }  // namespace loader
 
-// The scenario itself, then each variant loaded once to check it.
+// The scenario itself, then each variant and each study level loaded once
+// (on its own) to check it.
 Scenario load_scenario_text(const std::string& text, const std::string& file_name,
                             const std::vector<std::string>& overrides) {
-  std::vector<loader::VariantSpec> variants, none;
-  Scenario scenario = loader::load_once(text, file_name, nullptr, overrides, variants);
-  for (const loader::VariantSpec& v : variants)
-    loader::load_once(text, file_name, &v, overrides, none);
+  loader::OverrideSets sets, none;
+  Scenario scenario = loader::load_once(text, file_name, {}, overrides, sets);
+  for (const loader::VariantSpec& v : sets.variants)
+    loader::load_once(text, file_name, {{}, &v}, overrides, none);
+  for (std::size_t a = 0; a < sets.axes.size(); ++a)
+    for (const loader::VariantSpec& level : sets.axes[a].levels) {
+      loader::Applied one;  // this level, every other axis at its first level
+      for (std::size_t b = 0; b < sets.axes.size(); ++b)
+        one.levels.push_back(b == a ? &level : &sets.axes[b].levels.front());
+      loader::load_once(text, file_name, one, overrides, none);
+    }
   return scenario;
+}
+
+Scenario load_scenario_case_text(const std::string& text, const std::string& file_name,
+                                 const std::vector<std::string>& levels, const std::string& variant,
+                                 const std::vector<std::string>& overrides) {
+  loader::OverrideSets sets, none;
+  loader::load_once(text, file_name, {}, overrides, sets);
+  loader::Applied applied{loader::find_levels(sets.axes, levels, file_name), nullptr};
+  if (!variant.empty())
+    applied.variant = &loader::find_set(sets.variants, variant, file_name, "variants", "variant");
+  return loader::load_once(text, file_name, applied, overrides, none);
+}
+
+Scenario load_scenario_case(const std::string& path, const std::vector<std::string>& levels,
+                            const std::string& variant, const std::vector<std::string>& overrides) {
+  return load_scenario_case_text(loader::read_file(path), path, levels, variant, overrides);
 }
 
 Scenario load_scenario_variant_text(const std::string& text, const std::string& file_name,
                                     const std::string& name,
                                     const std::vector<std::string>& overrides) {
-  std::vector<loader::VariantSpec> variants, none;
-  loader::load_once(text, file_name, nullptr, overrides, variants);
-  const loader::VariantSpec& v = loader::find_variant(variants, name, file_name);
-  return loader::load_once(text, file_name, &v, overrides, none);
+  return load_scenario_case_text(text, file_name, {}, name, overrides);
 }
 
 Scenario load_scenario_variant(const std::string& path, const std::string& name,

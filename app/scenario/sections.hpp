@@ -70,6 +70,20 @@ struct VariantSpec {
 };
 std::vector<VariantSpec> read_variants(const Value& variants);
 
+// study (optional): axes of named levels, each level a set of overrides like a
+// variant's; a study case takes one level of every axis (elbowsim montecarlo).
+struct StudyAxisSpec {
+  std::string name;
+  std::vector<VariantSpec> levels;
+};
+std::vector<StudyAxisSpec> read_study(const Value& study);
+
+// The named override sets of a scenario: its variants and its study's levels.
+struct OverrideSets {
+  std::vector<VariantSpec> variants;
+  std::vector<StudyAxisSpec> axes;
+};
+
 // uncertainty (optional): the plant parameters a Monte Carlo study draws,
 // expanded ("[*]") and with their nominal values looked up in `root` (the
 // scenario as loaded: after variants and --set).

@@ -69,7 +69,7 @@ void check_path_keys(const Value& task, Path path) {
       task.get(key).fail(std::string("is only for path: circle (this path is ") + path_name(path) +
                          ")");
   }
-  if (circle && task.get("points").exists())
+  if (circle && task.get("points").present())
     task.get("points").fail("is not used by path: circle (give center, radius, normal)");
 }
 
@@ -142,8 +142,8 @@ HandTask read_task(const Value& task, const Model& model) {
   HandTask out;
   if (!task.present()) return out;
   task.allow_keys({"path", "timing", "start_delay", "duration", "points", "center", "radius",
-                   "normal", "start_angle", "elbows", "elbow_clearance", "posture",
-                   "posture_weight", "joint_limits"});
+                   "normal", "start_angle", "origin", "elbows", "elbow_clearance",
+                   "posture", "posture_weight", "joint_limits"});
   out.path = choose(task.require("path"),
                     std::vector<std::pair<Path, std::string_view>>{{Path::hold, "hold"},
                                                                    {Path::line, "line"},
@@ -156,6 +156,10 @@ HandTask read_task(const Value& task, const Model& model) {
                                     {HandTask::Timing::minimum_jerk, "minimum_jerk"}});
   out.start_delay = value_or(task.get("start_delay"), out.start_delay, non_negative);
   out.duration = value_or(task.get("duration"), out.duration, positive);
+  const Value origin = task.get("origin");
+  if (origin.present())
+    out.from_start =
+        choose(origin, std::vector<std::pair<bool, std::string_view>>{{false, "world"}, {true, "start"}});
   check_path_keys(task, out.path);
   out.points = read_points(task, out.path);
   if (out.path == Path::circle) read_circle(task, out);

@@ -49,12 +49,13 @@ nlohmann::ordered_json paired_verdict(const PairedSamples& s, std::uint64_t seed
     const auto ia = s.a_values.find(m), ib = s.b_values.find(m);
     if (ia == s.a_values.end() || ib == s.b_values.end() || ia->second.size() < 2) {
       verdict.push_back(what + ": no verdict (fewer than 2 draws where both runs are valid)");
+      p[m] = {{"outcome", "no verdict"}};
       continue;
     }
     const report::PairedRatio r =
         report::paired_ratio(ia->second, ib->second, kConfidenceLevel, kBootstrapResamples, seed);
     p[m] = {{"pairs", r.pairs}, {"ratio", r.ratio}, {"ci95", {r.ci.low, r.ci.high}},
-            {"win_rate", r.win_rate}};
+            {"win_rate", r.win_rate}, {"outcome", "no verdict"}};
     if (too_many_invalid) {
       verdict.push_back(what + ": no verdict (" + std::to_string(s.dropped) + " of " +
                         std::to_string(s.draws) + " draws have an invalid run)");
@@ -70,6 +71,7 @@ nlohmann::ordered_json paired_verdict(const PairedSamples& s, std::uint64_t seed
         continue;
       }
     }
+    p[m]["outcome"] = r.ci.contains(1.0) ? "no significant difference" : r.ratio < 1 ? "lower" : "higher";
     verdict.push_back(difference(s.a, s.b, what, r));
   }
   if (s.dropped > 0 && !too_many_invalid)

@@ -29,8 +29,10 @@ struct PairedSamples {
   double floor_a = 0, floor_b = 0;  // [m] accuracy floors of the hand error
 };
 
-// {a, b, pairs_with_an_invalid_run, energy_in: {pairs, ratio, ci95, win_rate},
-//  hand_error_rms: {...}, verdict: [sentences]}.
+// {a, b, pairs_with_an_invalid_run, energy_in: {pairs, ratio, ci95, win_rate,
+//  outcome}, hand_error_rms: {...}, verdict: [sentences]}. outcome: "lower" or
+// "higher" (a than b, the interval excludes 1), "no significant difference",
+// or "no verdict" (too few valid pairs, or errors below the floor).
 nlohmann::ordered_json paired_verdict(const PairedSamples& samples, std::uint64_t seed);
 
 }  // namespace elbowsim::study

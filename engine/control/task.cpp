@@ -35,7 +35,7 @@ Curve waypoints(const std::vector<Eigen::Vector3d>& pts, double u) {
           0.5 * (2 * c + 6 * d * s)};
 }
 
-Curve circle(const HandTask& task, double s) {
+Curve circle(const HandTask& task, const Eigen::Vector3d& center, double s) {
   const Eigen::Vector3d n = task.normal.normalized();
   // Start along +x projected into the circle's plane (for a planar arm's x-z
   // plane exactly +x); a normal along x starts along any perpendicular.
@@ -45,16 +45,17 @@ Curve circle(const HandTask& task, double s) {
   const double w = 2 * std::numbers::pi, th = task.start_angle + w * s;
   const Eigen::Vector3d radial = std::cos(th) * e1 + std::sin(th) * e2;
   const Eigen::Vector3d tangent = -std::sin(th) * e1 + std::cos(th) * e2;
-  return {task.center + task.radius * radial, task.radius * w * tangent,
+  return {center + task.radius * radial, task.radius * w * tangent,
           -task.radius * w * w * radial};
 }
 
-Curve curve(const HandTask& task, const std::vector<Eigen::Vector3d>& pts, double s) {
+Curve curve(const HandTask& task, const std::vector<Eigen::Vector3d>& pts,
+            const Eigen::Vector3d& center, double s) {
   switch (task.path) {
     case HandTask::Path::none:
     case HandTask::Path::hold: return {pts[0], Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
     case HandTask::Path::line: return {pts[0] + s * (pts[1] - pts[0]), pts[1] - pts[0], Eigen::Vector3d::Zero()};
-    case HandTask::Path::circle: return circle(task, s);
+    case HandTask::Path::circle: return circle(task, center, s);
     case HandTask::Path::waypoints: {
       const double span = double(pts.size() - 1);
       Curve c = waypoints(pts, s * span);
@@ -70,11 +71,13 @@ Curve curve(const HandTask& task, const std::vector<Eigen::Vector3d>& pts, doubl
 
 HandTarget hand_target(const HandTask& task, const Eigen::Vector3d& start, double t) {
   std::vector<Eigen::Vector3d> pts = task.points;
+  const Eigen::Vector3d origin = task.from_start ? start : Eigen::Vector3d::Zero();
+  for (Eigen::Vector3d& p : pts) p += origin;
   if (pts.empty()) pts.push_back(start);
   if (!pts[0].allFinite()) pts[0] = start;
   const Eigen::Vector3d s = time_scaling(task.timing, (t - task.start_delay) / task.duration);
   const double sd = s[1] / task.duration, sdd = s[2] / (task.duration * task.duration);
-  const Curve c = curve(task, pts, s[0]);
+  const Curve c = curve(task, pts, task.center + origin, s[0]);
   return {c.p, c.dp * sd, c.ddp * sd * sd + c.dp * sdd};
 }
 

@@ -19,12 +19,15 @@ struct HandTask {
   // line: points[0] -> points[1]; waypoints: through all points (piecewise
   // linear in arc length); hold: points[0]. A non-finite (NaN) points[0], or no
   // points, means the hand's position at the initial pose.
-  std::vector<Eigen::Vector3d> points;  // [m] world
+  std::vector<Eigen::Vector3d> points;  // [m] world (offsets with from_start)
   // circle: centre, radius, plane normal, start angle; one full turn.
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  // [m]
   double radius = 0.05;                              // [m]
   Eigen::Vector3d normal = Eigen::Vector3d::UnitY(); // circle plane normal
   double start_angle = 0.0;                          // [rad]
+  // Points and centre are offsets from the hand's start (task.origin: start),
+  // so one task fits every initial pose; else world positions.
+  bool from_start = false;
 
   // Elbows the inverse kinematics keeps on the table (clearance 0) or the
   // stated clearance above it (the elbow-off variant). Names from Model::elbows.

@@ -171,3 +171,37 @@ TEST_CASE("hand_target of a circle whose normal is near +y but tilted: still on 
   CHECK(worst_radius < 1e-15);
   CHECK(worst_plane < 1e-15);
 }
+
+TEST_CASE("hand_target with from_start: points and centre are offsets from the start, exactly") {
+  // The same line and circle given as world positions and as offsets from
+  // the start must give the same targets (the offset is added once; the sums
+  // below are exact in binary only up to rounding of one addition: 1e-16).
+  const Eigen::Vector3d start(0.62, 0.0, -0.0325);
+  HandTask world, offset;
+  world.path = offset.path = HandTask::Path::line;
+  world.duration = offset.duration = 2.0;
+  world.points = {Eigen::Vector3d::Constant(NAN), start + Eigen::Vector3d(0.08, 0, 0.01)};
+  offset.points = {Eigen::Vector3d::Constant(NAN), Eigen::Vector3d(0.08, 0, 0.01)};
+  offset.from_start = true;
+  for (double t : {0.0, 0.7, 1.0, 2.0, 3.0}) {
+    const HandTarget a = hand_target(world, start, t), b = hand_target(offset, start, t);
+    CHECK(approx(a.p, b.p, 1e-16));
+    CHECK(approx(a.v, b.v, 1e-15));
+  }
+  CHECK(hand_target(offset, start, 0.0).p == start);  // `start` stays the start
+  HandTask circle_world = world, circle_offset = offset;
+  circle_world.path = circle_offset.path = HandTask::Path::circle;
+  circle_world.points.clear();
+  circle_offset.points.clear();
+  circle_world.center = start + Eigen::Vector3d(0, 0, 0.015);
+  circle_offset.center = Eigen::Vector3d(0, 0, 0.015);
+  circle_world.radius = circle_offset.radius = 0.015;
+  circle_world.start_angle = circle_offset.start_angle = std::numbers::pi / 2;  // from the bottom
+  for (double t : {0.0, 0.5, 1.3}) {
+    CHECK(approx(hand_target(circle_world, start, t).p, hand_target(circle_offset, start, t).p, 1e-16));
+  }
+  CHECK(approx(hand_target(circle_offset, start, 0.0).p, start, 1e-16));  // starts at the hand
+  // Without from_start the offsets are world positions: the hand would jump.
+  offset.from_start = false;
+  CHECK((hand_target(offset, start, 2.0).p - hand_target(world, start, 2.0).p).norm() > 0.5);
+}

@@ -1,0 +1,150 @@
+#include "report/study_report.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "report/html.hpp"
+#include "report/run_plots.hpp"
+#include "report/plot/plot.hpp"
+
+namespace elbowsim::report {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr const char* kCompared[] = {"energy_in", "hand_error_rms"};
+
+std::string fmt(const Json& x) { return x.is_number() ? html::display_value(x) : "—"; }
+
+std::string with_interval(const Json& value, const Json& ci) {
+  std::string out = fmt(value);
+  if (ci.is_array() && ci.size() == 2) out += " (" + fmt(ci[0]) + "–" + fmt(ci[1]) + ")";
+  return out;
+}
+
+// The paired ratio of each compared metric per case (first pair of variants),
+// with its interval as a vertical bar; 1 is "no difference".
+plot::LinePlot ratio_plot(const Json& doc) {
+  plot::LinePlot p;
+  p.title = "Paired ratio per case, with 95 % intervals";
+  p.x = plot::linear_axis("case (row of the table)", "");
+  p.y = plot::log_axis("ratio a / b (geometric mean over draws)", "");
+  p.width = 1100;
+  const Json& cases = doc["cases"];
+  int colour = 0;
+  for (const char* m : kCompared) {
+    plot::Series point, bars;
+    point.label = std::string(m) == "energy_in" ? "electrical energy" : "RMS hand error";
+    point.color = bars.color = plot::palette(colour++);
+    point.markers = true;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+      const Json& pairs = cases[k]["pairs"];
+      if (pairs.empty() || !pairs[0].contains(m)) continue;
+      const Json& r = pairs[0][m];
+      const double x = static_cast<double>(k + 1) + (colour == 1 ? -0.12 : 0.12);
+      if (!r.value("ratio", Json()).is_number()) continue;
+      point.x.insert(point.x.end(), {x, std::nan("")});
+      point.y.insert(point.y.end(), {r["ratio"].get<double>(), std::nan("")});
+      const Json ci = r.value("ci95", Json::array());
+      if (ci.size() == 2 && ci[0].is_number() && ci[1].is_number()) {
+        bars.x.insert(bars.x.end(), {x, x, std::nan("")});
+        bars.y.insert(bars.y.end(), {ci[0].get<double>(), ci[1].get<double>(), std::nan("")});
+      }
+    }
+    p.series.push_back(point);
+    p.series.push_back(bars);
+  }
+  plot::Series one;
+  one.label = "no difference (1)";
+  one.color = plot::Color{0.4, 0.4, 0.4};
+  one.dash = plot::Dash::dashed;
+  one.x = {0.5, static_cast<double>(cases.size()) + 0.5};
+  one.y = {1, 1};
+  p.series.push_back(one);
+  return p;
+}
+
+std::string case_table(const Json& doc) {
+  const Json& variants = doc.value("variants", Json::array());
+  std::string out = "<h2>Cases</h2>\n<p>Means over the valid draws with their 95 % bootstrap "
+                    "intervals; ratios are paired (same draw), a / b of the first pair of "
+                    "variants; the outcome says whether the interval excludes 1 (and, for the "
+                    "hand error, whether the errors are above 10 × the accuracy floor).</p>\n"
+                    "<table id=\"study-cases\"><thead><tr><th>#</th><th>case</th>";
+  for (const Json& a : doc["axes"]) out += "<th>" + html::escape(a.value("name", "")) + "</th>";
+  for (const Json& v : variants) out += "<th>energy, " + html::escape(v.get<std::string>()) + " [J]</th>";
+  out += "<th>energy ratio</th><th>energy</th>";
+  for (const Json& v : variants) out += "<th>RMS hand error, " + html::escape(v.get<std::string>()) + " [m]</th>";
+  out += "<th>hand error ratio</th><th>hand error</th><th>invalid runs</th></tr></thead><tbody>\n";
+  int row = 0;
+  for (const Json& c : doc["cases"]) {
+    const std::string name = c.value("case", "");
+    out += "<tr><td>" + std::to_string(++row) + "</td><td><a href=\"" + html::escape(name) +
+           "/report.html\">" + html::escape(name) + "</a></td>";
+    for (const Json& a : doc["axes"]) out += "<td>" + html::escape(c["levels"].value(a.value("name", ""), "")) + "</td>";
+    const Json pair = c["pairs"].empty() ? Json::object() : c["pairs"][0];
+    for (const char* m : kCompared) {
+      for (const Json& v : variants) {
+        const Json x = c.value("metrics", Json::object()).value(v.get<std::string>(), Json::object()).value(m, Json::object());
+        out += "<td class=\"num\">" + with_interval(x.value("mean", Json()), x.value("ci95", Json())) + "</td>";
+      }
+      const Json r = pair.value(m, Json::object());
+      const std::string outcome = r.value("outcome", "no verdict");
+      out += "<td class=\"num\">" + with_interval(r.value("ratio", Json()), r.value("ci95", Json())) +
+             "</td><td class=\"outcome\" data-outcome=\"" + html::escape(outcome) + "\">" +
+             html::escape(outcome) + "</td>";
+    }
+    out += "<td class=\"num\">" + std::to_string(c.value("invalid_runs", 0)) + "</td></tr>\n";
+  }
+  return out + "</tbody></table>\n";
+}
+
+}  // namespace
+
+void write_study_report(const std::filesystem::path& folder) {
+  const std::filesystem::path json = folder / "study.json";
+  std::ifstream in(json);
+  if (!in) throw std::runtime_error("cannot read " + json.string());
+  Json doc;
+  try {
+    doc = Json::parse(in);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(json.string() + ": " + e.what());
+  }
+  std::filesystem::create_directories(folder / "plots");
+  const plot::LinePlot ratios = ratio_plot(doc);
+  plot::write_png(ratios, folder / "plots" / "ratios.png");
+
+  std::vector<std::string> verdict;
+  for (const Json& line : doc.value("verdict", Json::array())) verdict.push_back(line.get<std::string>());
+  const std::string name = doc.value("scenario", std::string());
+  std::string page = html::page_begin("Study: " + name);
+  page += "<h1>Monte Carlo study over " + std::to_string(doc["cases"].size()) + " cases: " +
+          html::escape(name) + "</h1>\n";
+  page += html::notice("verdict", "Verdict over the cases", verdict, "verdict");
+  std::string axes;
+  for (const Json& a : doc["axes"]) {
+    std::string levels;
+    for (const Json& l : a["levels"]) levels += (levels.empty() ? "" : ", ") + l.get<std::string>();
+    axes += (axes.empty() ? "" : "; ") + a.value("name", "") + ": " + levels;
+  }
+  page += html::info_table({{"scenario file", doc.value("file", "")},
+                            {"axes", axes},
+                            {"draws per case", std::to_string(doc.value("samples", 0)) + " (seed " +
+                                                   std::to_string(doc.value("seed", 0UL)) +
+                                                   "), each applied to every variant"}});
+  page += case_table(doc);
+  page += "<h2>Ratios per case</h2>\n";
+  page += html::figure({"plots/ratios.png", ratios.title,
+                        "Paired ratio a / b per case (numbered as in the table): a point at the "
+                        "geometric mean over the draws, a bar over its 95 % interval. Below 1: a "
+                        "lower than b.",
+                        ratios.width, ratios.height});
+  page += html::page_end();
+  html::write_file(folder / "report.html", page);
+}
+
+}  // namespace elbowsim::report
