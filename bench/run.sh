@@ -55,7 +55,7 @@ mkdir -p "$logs"
 
 # --- what runs, and how ------------------------------------------------------------
 gbench_programs=(bench_dynamics bench_constrained bench_collision bench_effects bench_step)
-all_programs=("${gbench_programs[@]}" bench_render)
+all_programs=("${gbench_programs[@]}" bench_render bench_montecarlo)
 missing=()
 for p in "${all_programs[@]}"; do [[ -x $build/bench/$p ]] || missing+=("$p"); done
 if ((${#missing[@]})); then
@@ -155,6 +155,10 @@ done
 echo "== bench_render $(date -u +%H:%M:%S) load $(cut -d' ' -f1-3 /proc/loadavg)"
 "$build/bench/bench_render" "$render_runs" --json "$out/bench_render.json.tmp" | tee "$logs/bench_render.txt"
 mv "$out/bench_render.json.tmp" "$out/bench_render.json"
+echo "== bench_montecarlo $(date -u +%H:%M:%S) load $(cut -d' ' -f1-3 /proc/loadavg)"
+if ((quick)); then mc_args=(1 --samples 4); else mc_args=(3 --samples 8); fi
+"$build/bench/bench_montecarlo" "${mc_args[@]}" --json "$out/bench_montecarlo.json.tmp" | tee "$logs/bench_montecarlo.txt"
+mv "$out/bench_montecarlo.json.tmp" "$out/bench_montecarlo.json"
 
 write_machine_json true
 echo "run.sh: done in $(( $(date +%s) - t0 )) s"

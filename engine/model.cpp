@@ -200,9 +200,6 @@ void finalize(Model& model) {
   if (model.effects.joint_friction) {
     require(static_cast<int>(model.joint_friction.size()) == n,
             "joint_friction needs one entry per joint");
-    require(!model.effects.contact,
-            "joint friction with contact is not supported yet (the joint rows are not part of "
-            "the contact solve): switch one of them off");
     for (const JointFriction& f : model.joint_friction)
       require(f.coulomb >= 0 && f.breakaway >= f.coulomb && f.stribeck_velocity > 0,
               "joint friction needs 0 <= coulomb <= breakaway and stribeck_velocity > 0");

@@ -316,8 +316,6 @@ TEST_CASE("joint_friction errors") {
               "x.yaml:10:", "joint_friction.coulomb", "one per joint");
   CHECK_ERROR(two_link_with("effects: {joint_friction: true}\njoint_friction: {stribeck_velocity: 0}\n"),
               "x.yaml:10:", "joint_friction.stribeck_velocity", "must be > 0");
-  CHECK_ERROR(two_link_with("effects: {joint_friction: true, contact: true}\n"), "x.yaml:9:",
-              "effects.joint_friction", "not supported yet");
 }
 
 TEST_CASE("motors: gear efficiencies in (0, 1]; below 1 the model keeps a gear loss") {

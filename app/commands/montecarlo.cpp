@@ -7,6 +7,8 @@
 // seed gives the same bytes, whatever --jobs.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -364,13 +366,17 @@ int montecarlo_command(const MonteCarloArguments& args) {
   std::vector<Json> docs;
   try {
     for (std::size_t k = 0; k < plans.size(); ++k) {
+      const auto started = std::chrono::steady_clock::now();
       docs.push_back(run_case(args, base, plans[k], draws, seed));
+      const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
       const std::string& name = plans[k].study_case.name;
       std::cout << base.model.name << (name.empty() ? "" : " " + name) << ": " << args.samples
                 << " draws x " << plans[k].variants.size() << " variants (seed " << seed << ", "
                 << docs.back()["invalid"].size() << " invalid runs) in " << plans[k].folder.string();
       if (plans.size() > 1) std::cout << " [case " << k + 1 << " of " << plans.size() << "]";
-      std::cout << "\n";
+      char took[32];  // printed only: the files stay byte-identical
+      std::snprintf(took, sizeof took, ", %.1f s wall\n", wall.count());
+      std::cout << took;
       for (const Json& line : docs.back()["verdict"]) std::cout << "  " << line.get<std::string>() << "\n";
     }
     if (!base.study.empty()) {

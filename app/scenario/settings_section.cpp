@@ -42,9 +42,6 @@ Effects read_effects(const Value& effects) {
   out.impacts = value_or(effects.get("impacts"), out.impacts, boolean);
   Value joint_friction = effects.get("joint_friction");
   out.joint_friction = value_or(joint_friction, out.joint_friction, boolean);
-  if (out.joint_friction && out.contact)
-    joint_friction.fail("joint friction with effects.contact is not supported yet (the joint "
-                        "rows are not part of the contact solve): switch one of them off");
   Value stabilization = effects.get("stabilization");
   if (stabilization.present())
     out.stabilization = choose(

@@ -6,6 +6,7 @@
 #include "engine/contact/lcp.hpp"
 #include "engine/contact/stick_slip.hpp"
 #include "engine/control/controller.hpp"
+#include "engine/dynamics/applied_torques.hpp"
 #include "engine/dynamics/crba.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/motor.hpp"
@@ -16,7 +17,7 @@ namespace elbowsim {
 
 namespace {
 
-// Mass matrix, bias and applied torques at the state in data.x.
+// Mass matrix, bias and applied torques (data.tau_applied) at the state in data.x.
 void prepare_mechanics(const Model& model, Data& data) {
   const StateLayout s(model);
   const auto qd = data.x.segment(s.qd(), s.n);
@@ -25,6 +26,7 @@ void prepare_mechanics(const Model& model, Data& data) {
     motor_stage(model, data, qd, data.x.segment(s.current, s.n));
   else
     motor_stage(model, data, qd, data.current);
+  applied_torques(model, data, qd);
   if (model.options.dynamics == DynamicsMethod::walker_orin)
     mass_matrix_walker_orin(model, data);
   else
@@ -129,7 +131,7 @@ bool select_active_set(const Model& model, Data& data) {
   }
   const StateLayout s(model);
   constraint_rows(model, data, data.x.segment(s.qd(), s.n));
-  contact_lcp_terms(model, data, data.actuation);
+  contact_lcp_terms(model, data, data.tau_applied);
   if (model.effects.friction && (c.A.diagonal().array() <= 0).any()) {
     fail(data, Failure::Kind::painleve);
     return false;

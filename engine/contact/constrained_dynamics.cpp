@@ -39,20 +39,53 @@ void rank_revealing_solve(const Model& model, Data& data) {
   min_norm_solve(ws, c.rhs, c.fn);
 }
 
+// Joint friction: whether a joint is stuck (its qdd is then 0).
+bool any_stuck(const Model& model, const Data& data) {
+  if (!model.effects.joint_friction) return false;
+  for (signed char mode : data.joint_mode)
+    if (mode == 0) return true;
+  return false;
+}
+
+// Zeroes the stuck joints' rows of an n-row matrix or vector.
+template <class Rows>
+void zero_stuck_rows(const Data& data, Rows&& x) {
+  for (Eigen::Index j = 0; j < x.rows(); ++j)
+    if (data.joint_mode[static_cast<std::size_t>(j)] == 0) x.row(j).setZero();
+}
+
 // Schur complement. With M = L L^T, w = L^-1 (tau - B_J), Y = L^-1 Jc^T and
 // Z = L^-1 Jf^T: A = Y^T Z, f = A^-1 (gamma - Y^T w), qdd = L^-T (w + Z f).
-// Three triangular solves and one p x p factorisation.
+// Three triangular solves and one p x p factorisation. Stuck joints are
+// locked: their rows and columns of M become the identity and their entries
+// of tau - B_J, Jc^T and Jf^T zero, so the same solve gives the reduced
+// system's f and qdd with qdd_j = 0 exactly (L keeps them uncoupled).
 void schur(const Model& model, Data& data, ConstVec tau) {
   ContactData& c = data.contact;
-  data.llt.compute(data.mass_matrix);
+  const bool locked = any_stuck(model, data);
+  if (locked) {
+    data.joint_mass = data.mass_matrix;
+    for (int j = 0; j < model.dof; ++j) {
+      if (data.joint_mode[static_cast<std::size_t>(j)] != 0) continue;
+      data.joint_mass.row(j).setZero();
+      data.joint_mass.col(j).setZero();
+      data.joint_mass(j, j) = 1.0;
+    }
+  }
+  data.llt.compute(locked ? data.joint_mass : data.mass_matrix);
   const auto L = data.llt.matrixL();
   c.a_free = tau - data.bias;  // becomes w
-  L.solveInPlace(c.a_free);
   c.Y = c.Jc.transpose();
+  if (locked) {
+    zero_stuck_rows(data, c.a_free);
+    zero_stuck_rows(data, c.Y);
+  }
+  L.solveInPlace(c.a_free);
   L.solveInPlace(c.Y);
   const Eigen::MatrixXd* Z = &c.Y;  // without friction Jf = Jc
   if (model.effects.friction) {
     c.Z = c.Jf.transpose();
+    if (locked) zero_stuck_rows(data, c.Z);
     L.solveInPlace(c.Z);
     Z = &c.Z;
   }
@@ -92,6 +125,7 @@ void explicit_inverse(Data& data, ConstVec tau) {
 }  // namespace
 
 void solve_constrained(const Model& model, Data& data, ConstVec tau, ConstraintSolver method) {
+  if (any_stuck(model, data)) method = ConstraintSolver::schur;  // the one that locks joints
   switch (method) {
     case ConstraintSolver::schur: schur(model, data, tau); return;
     case ConstraintSolver::dense_lu: dense_lu(data, tau); return;

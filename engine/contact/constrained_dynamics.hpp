@@ -19,7 +19,9 @@ namespace elbowsim {
 enum class ConstraintSolver { schur, dense_lu, explicit_inverse };
 
 // Needs data.mass_matrix (= M + Jm) and data.bias (= B_J) at the current
-// state and constraint_rows(). tau [n] are the applied joint torques. Fills
+// state and constraint_rows(). tau [n] are the applied joint torques. Joints
+// stuck by joint friction (data.joint_mode 0) are locked, qdd_j = 0 (always
+// by the Schur path; their holding torques: dynamics/joint_friction.hpp). Fills
 // data.qdd and data.contact.fn; data.contact.dependent tells whether the
 // rows were dependent (rank below p at model.contact.rank_tolerance), in
 // which case f_n is the minimum-norm solution.

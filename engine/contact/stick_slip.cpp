@@ -53,7 +53,7 @@ bool modes_hold(const Model& model, Data& data, ConstVec qd) {
   tangent_rows_from_modes(model, data);
   if (c.normal_rows() + static_cast<int>(c.tangent_rows.size()) > c.capacity()) return false;
   constraint_rows(model, data, qd);
-  solve_constrained(model, data, data.actuation);
+  solve_constrained(model, data, data.tau_applied);
   for (int r = 0; r < c.normal_rows(); ++r) {
     const int k = c.active[static_cast<std::size_t>(r)];
     if (c.fn[r] < -kForceTolerance) return false;
@@ -96,7 +96,7 @@ bool solve_modes(const Model& model, Data& data, ConstVec qd) {
     return false;
   }
   constraint_rows(model, data, qd);
-  contact_lcp_terms(model, data, data.actuation);
+  contact_lcp_terms(model, data, data.tau_applied);
   c.cones.cones.clear();
   bool slipping = false;
   for (std::size_t i = 0; i < c.tangent_rows.size(); ++i) {

@@ -37,6 +37,9 @@ struct Plan;
 struct Controller {
   ControllerSpec spec;
   std::shared_ptr<const Plan> plan;
+  // Where the plant starts (q): the task's first pose on the plant's own
+  // model; empty: the plan's first pose (the controller knows the plant).
+  Eigen::VectorXd plant_start;
 };
 
 // The command at time t for the state (q [n], qd [n]): with a motor, the

@@ -135,13 +135,16 @@ void feed_forward(const Model& model, const ControllerSpec& controller, Data& da
   }
 }
 
+Eigen::VectorXd initial_pose(const Model& model) {
+  return model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
+}
+
 }  // namespace
 
 std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& experiment) {
   auto plan = std::make_shared<Plan>();
   Data data(model);
-  const Eigen::VectorXd q_start =
-      model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
+  const Eigen::VectorXd q_start = initial_pose(model);
   forward_kinematics(model, data, q_start);
   const Eigen::Vector3d hand_start = point_position(data, model.hand_link, model.hand_point);
   const IkProblem base = ik_problem(model, experiment.task, data, q_start);
@@ -174,11 +177,24 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
   return plan;
 }
 
-std::shared_ptr<const Controller> make_controller(const Model& model, const Experiment& experiment) {
+Eigen::VectorXd start_pose(const Model& model, const Experiment& experiment) {
+  Data data(model);
+  const Eigen::VectorXd q_start = initial_pose(model);
+  forward_kinematics(model, data, q_start);
+  const Eigen::Vector3d hand_start = point_position(data, model.hand_link, model.hand_point);
+  IkProblem problem = ik_problem(model, experiment.task, data, q_start);
+  problem.hand = hand_target(experiment.task, hand_start, 0.0).p;
+  const IkResult r = solve_ik(model, data, problem, q_start);
+  check(r, 0.0, problem.hand);
+  return r.q;
+}
+
+std::shared_ptr<const Controller> make_controller(const Model& plant, const Experiment& experiment) {
   if (!experiment.needs_plan()) return nullptr;
   auto controller = std::make_shared<Controller>();
   controller->spec = experiment.controller;
-  controller->plan = make_plan(model, experiment);
+  controller->plan = make_plan(experiment.believed(plant), experiment);
+  if (experiment.controller_model) controller->plant_start = start_pose(plant, experiment);
   return controller;
 }
 

@@ -49,8 +49,17 @@ struct Plan {
 // the task cannot be followed.
 std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& experiment);
 
-// The controller a run uses: the experiment's gains and, when it needs one,
-// its plan (make_plan; throws PlanError). Null for an open-loop scene.
-std::shared_ptr<const Controller> make_controller(const Model& model, const Experiment& experiment);
+// The task's first pose on `model`: initial.q moved by the inverse kinematics
+// onto the hand's start and the task's elbow constraints (an elbow held
+// above the table is lifted), as the plan's first sample. Throws PlanError.
+Eigen::VectorXd start_pose(const Model& model, const Experiment& experiment);
+
+// The controller a run on `plant` uses: the experiment's gains and, when it
+// needs one, its plan, made from what the controller believes
+// (experiment.believed(plant); throws PlanError). Null for an open-loop
+// scene. The plant starts at the task's first pose solved on its own model
+// (Controller::plant_start), not the plan's: a controller that believes the
+// table lower would otherwise start the arm inside the real one.
+std::shared_ptr<const Controller> make_controller(const Model& plant, const Experiment& experiment);
 
 }  // namespace elbowsim

@@ -13,16 +13,18 @@ double sliding_friction(const JointFriction& f, double speed) {
   return f.coulomb + (f.breakaway - f.coulomb) * std::exp(-w * w);
 }
 
-void joint_friction_dynamics(const Model& model, Data& data, ConstVec qd) {
-  bool stuck = false;
+void sliding_friction_torques(const Model& model, Data& data, ConstVec qd) {
   for (int j = 0; j < model.dof; ++j) {
     const signed char mode = data.joint_mode[static_cast<std::size_t>(j)];
-    const double f =
+    data.joint_friction_torque[j] =
         mode == 0 ? 0.0 : -mode * sliding_friction(model.joint_friction[static_cast<std::size_t>(j)], std::abs(qd[j]));
-    data.joint_friction_torque[j] = f;
-    stuck = stuck || mode == 0;
   }
   data.tau_applied = data.actuation + data.joint_friction_torque;
+}
+
+void joint_friction_dynamics(const Model& model, Data& data, ConstVec qd) {
+  bool stuck = false;
+  for (signed char mode : data.joint_mode) stuck = stuck || mode == 0;
   if (!stuck) {
     forward_dynamics(model, data, qd, data.tau_applied, data.qdd);
     return;
@@ -48,6 +50,15 @@ void joint_friction_dynamics(const Model& model, Data& data, ConstVec qd) {
   for (int j = 0; j < model.dof; ++j)
     if (data.joint_mode[static_cast<std::size_t>(j)] == 0)
       data.joint_friction_torque[j] = data.mass_matrix.row(j).dot(data.qdd) - data.tau[j];
+}
+
+void holding_torques(const Model& model, Data& data) {
+  const ContactData& c = data.contact;
+  for (int j = 0; j < model.dof; ++j) {
+    if (data.joint_mode[static_cast<std::size_t>(j)] != 0) continue;
+    data.joint_friction_torque[j] = data.mass_matrix.row(j).dot(data.qdd) -
+                                    (data.tau_applied[j] - data.bias[j]) - c.Jf.col(j).dot(c.fn);
+  }
 }
 
 }  // namespace elbowsim

@@ -13,11 +13,20 @@ namespace elbowsim {
 // [N m] >= 0: the friction torque of a joint sliding at |speed| (the Stribeck curve).
 double sliding_friction(const JointFriction& f, double speed);
 
-// The arm's accelerations with joint friction in the modes data.joint_mode
-// (no contact): data.tau_applied = actuation + friction of the sliding joints;
-// stuck joints locked (qdd_j = 0, by M with their rows and columns replaced
-// by the identity), data.joint_friction_torque[j] the torque that holds them.
-// Fills data.qdd. Needs forward_kinematics(q) and data.actuation.
+// The friction of the sliding joints in the modes data.joint_mode into
+// data.joint_friction_torque (stuck joints: 0 until their holding torque is
+// known) and data.tau_applied = data.actuation + that friction.
+void sliding_friction_torques(const Model& model, Data& data, ConstVec qd);
+
+// The arm's accelerations with joint friction (no resting elbow), after
+// sliding_friction_torques: stuck joints locked (qdd_j = 0, by M with their
+// rows and columns replaced by the identity), data.joint_friction_torque[j]
+// the torque that holds them. Fills data.qdd. Needs forward_kinematics(q).
 void joint_friction_dynamics(const Model& model, Data& data, ConstVec qd);
+
+// With resting elbows, after the constrained solve (which locks stuck joints,
+// contact/constrained_dynamics.hpp): what holds each stuck joint,
+// M_j qdd - (tau_applied - B)_j - (Jf^T f)_j, into data.joint_friction_torque.
+void holding_torques(const Model& model, Data& data);
 
 }  // namespace elbowsim

@@ -4,6 +4,7 @@
 
 #include "engine/contact/constrained_dynamics.hpp"
 #include "engine/contact/constraint_rows.hpp"
+#include "engine/dynamics/applied_torques.hpp"
 #include "engine/dynamics/joint_friction.hpp"
 #include "engine/dynamics/crba.hpp"
 #include "engine/dynamics/forward_dynamics.hpp"
@@ -63,23 +64,15 @@ void energy_rates(const Model& model, Data& data, ConstVec qd, double hand_power
   out[4] = normal;
 }
 
-// A constant world force F at the hand acts as joint torques J_hand^T F.
-// Returns its power F . v_hand [W].
-double add_hand_force(const Model& model, Data& data, ConstVec qd) {
-  point_jacobian(model, data, model.hand_link, model.hand_point, data.contact.J3);
-  data.actuation.noalias() += data.contact.J3.transpose() * model.hand_load.force;
-  return model.hand_load.force.dot(data.contact.J3 * qd);
-}
-
 // (M + Jm) qdd = tau - B_J + Jf^T fn with Jc qdd = gamma for the resting
-// elbows (eq. 30-33); plain forward dynamics when none rests.
+// elbows (eq. 30-33), stuck joints locked (joint friction); plain forward
+// dynamics when none rests.
 void arm_accelerations(const Model& model, Data& data, ConstVec qd) {
-  if (model.effects.joint_friction) {  // never with contact (finalize)
-    joint_friction_dynamics(model, data, qd);
-    return;
-  }
   if (!model.effects.contact || data.contact.active.empty()) {
-    forward_dynamics(model, data, qd, data.actuation, data.qdd);
+    if (model.effects.joint_friction)
+      joint_friction_dynamics(model, data, qd);
+    else
+      forward_dynamics(model, data, qd, data.actuation, data.qdd);
     return;
   }
   if (model.options.dynamics == DynamicsMethod::walker_orin)
@@ -88,7 +81,8 @@ void arm_accelerations(const Model& model, Data& data, ConstVec qd) {
     mass_matrix_crba(model, data);  // aba has no M to hand: contacts factor CRBA's
   bias_torques(model, data, qd);
   constraint_rows(model, data, qd);
-  solve_constrained(model, data, data.actuation);
+  solve_constrained(model, data, data.tau_applied);
+  if (model.effects.joint_friction) holding_torques(model, data);
 }
 
 }  // namespace
@@ -104,7 +98,7 @@ void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
     motor_stage(model, data, qd, x.segment(s.current, s.n));
   else
     motor_stage(model, data, qd, data.current);
-  const double hand_power = s.external >= 0 ? add_hand_force(model, data, qd) : 0.0;
+  const double hand_power = applied_torques(model, data, qd);
   arm_accelerations(model, data, qd);
 
   N.segment(s.q(), s.n) = qd;

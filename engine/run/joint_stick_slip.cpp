@@ -14,9 +14,14 @@ constexpr double kHoldTolerance = 1e-12;  // relative: a holding torque at break
 
 std::size_t at(int j) { return static_cast<std::size_t>(j); }
 
+// A joint without dry friction never sticks: it "slides" (with zero
+// friction) at any speed, so locking it could only make rows dependent.
+bool frictionless(const Model& model, int j) { return model.joint_friction[at(j)].breakaway == 0; }
+
 // Breakaway margin of a stuck joint (>= 0 holds), or the signed speed along
 // the slide of a sliding one (>= 0 goes on), at the state in data.x.
 double event_value(const Model& model, Data& data, int j) {
+  if (frictionless(model, j)) return 1.0;  // slides either way: no event
   const StateLayout s(model);
   if (data.joint_mode[at(j)] != 0) return data.joint_mode[at(j)] * data.x[s.qd() + j];
   nonstiff_rates(model, data, data.t, data.x, data.k1);
@@ -31,7 +36,9 @@ void decide_joint_modes(const Model& model, Data& data) {
   const StateLayout s(model);
   for (int j = 0; j < model.dof; ++j) {
     double& speed = data.x[s.qd() + j];
-    if (std::abs(speed) > kJointStickSpeed) {
+    if (frictionless(model, j)) {
+      data.joint_mode[at(j)] = speed < 0 ? -1 : 1;
+    } else if (std::abs(speed) > kJointStickSpeed) {
       data.joint_mode[at(j)] = speed > 0 ? 1 : -1;
     } else {
       data.joint_mode[at(j)] = 0;
@@ -65,7 +72,14 @@ void locate_joint_event(const Model& model, Data& data, double t0) {
   int first = -1;
   double first_time = h;
   bool cut = false;  // data ends a shortened step (a previous joint's search)
+  const StateLayout s(model);
   for (int j = 0; j < model.dof; ++j) {
+    // A joint released from rest at this step's start: its speed may stay at
+    // rounding level (a resting elbow can block it), where its sign means
+    // nothing; whether it moved is decided at the next step's start. Locating
+    // such "stops" would shrink the steps toward zero (Zeno).
+    const bool released = data.joint_mode[at(j)] != 0 && data.x_start[s.qd() + j] == 0.0;
+    if (released) continue;
     if (cut) redo_step(model, data, t0, h);  // back to the whole step
     cut = false;
     if (event_value(model, data, j) >= 0) continue;

@@ -13,7 +13,8 @@ namespace elbowsim {
 constexpr double kJointStickSpeed = 1e-6;
 
 // At a step's start (and at reset): a joint moving faster than
-// kJointStickSpeed slides its way; the others stick (speed set to 0) unless
+// kJointStickSpeed slides its way, as does a joint without friction
+// (breakaway 0) at any speed; the others stick (speed set to 0) unless
 // the torque that would hold them exceeds their breakaway torque, in which
 // case they slide against it (the largest excess first, until all hold).
 void decide_joint_modes(const Model& model, Data& data);

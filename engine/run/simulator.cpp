@@ -61,7 +61,7 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
   result.trajectory = Recording(trajectory_layout(model, experiment.needs_plan()));
   Data data(model);
   // The plan comes from what the controller believes; the plant is `model`.
-  data.controller = make_controller(experiment.believed(model), experiment);  // may throw PlanError
+  data.controller = make_controller(model, experiment);  // may throw PlanError
   reset(model, data);
   collect_log(model, data, result);
   record_sample(model, data, result.trajectory);

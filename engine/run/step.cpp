@@ -59,7 +59,7 @@ void reset_state(const Model& model, Data& data) {
   if (!controller || !controller->plan || controller->spec.kind == ControllerSpec::Kind::open_loop)
     return;
   const Plan& plan = *controller->plan;
-  data.x.segment(s.q(), s.n) = plan.q[0];
+  data.x.segment(s.q(), s.n) = controller->plant_start.size() == s.n ? controller->plant_start : plan.q[0];
   data.x.segment(s.qd(), s.n) = plan.qd[0];
   if (s.current >= 0 && controller->spec.kind != ControllerSpec::Kind::pd)
     data.x.segment(s.current, s.n) =

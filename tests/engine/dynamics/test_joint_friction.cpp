@@ -41,6 +41,8 @@ TEST_CASE("joint_friction_dynamics: sliding torques oppose the modes; a stuck jo
   data.actuation = Eigen::Vector2d(1.0, 0.2);
   // Both sliding: forward dynamics with the friction torques added.
   data.joint_mode = {1, -1};
+  sliding_friction_torques(m, data, qd);
+  CHECK(data.tau_applied == data.actuation + data.joint_friction_torque);
   joint_friction_dynamics(m, data, qd);
   const Eigen::Vector2d friction(-sliding_friction(m.joint_friction[0], 0.4), +0.1);
   CHECK(data.joint_friction_torque.isApprox(friction, 1e-15));
@@ -51,6 +53,8 @@ TEST_CASE("joint_friction_dynamics: sliding torques oppose the modes; a stuck jo
   // welded, and M qdd = tau - B + friction holds in both rows.
   data.joint_mode = {0, -1};
   const Eigen::Vector2d rest(0.0, -2.0);
+  sliding_friction_torques(m, data, rest);
+  CHECK(data.joint_friction_torque[0] == 0.0);  // stuck: held, not yet known
   joint_friction_dynamics(m, data, rest);
   CHECK(data.qdd[0] == 0.0);
   const Eigen::VectorXd residual =

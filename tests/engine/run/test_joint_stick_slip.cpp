@@ -11,6 +11,7 @@
 #include "engine/run/joint_stick_slip.hpp"
 #include "engine/run/simulator.hpp"
 #include "engine/run/step.hpp"
+#include "support/contact_scenes.hpp"
 #include "support/models.hpp"
 #include "support/runs.hpp"
 
@@ -125,4 +126,63 @@ TEST_CASE("decide_joint_modes: a joint at rest whose load exceeds breakaway is s
   reset(held, d2);
   CHECK(d2.joint_mode[0] == 0);
   CHECK(d2.joint_friction_torque[0] == doctest::Approx(0.4));  // holds the push
+}
+
+// The ElbowArm (tests/support/contact_scenes.hpp) with dry friction at the
+// elbow joint only, no inputs: the table carries the shoulder's moment through
+// the elbow (frictionless contact), the joint's friction holds the forearm.
+static Model leaning_arm(double breakaway_over_g2) {
+  const testing::ElbowArm arm;
+  Model m = arm.model(0.0, 0.0);
+  m.inputs.joints.clear();
+  m.effects.joint_friction = true;
+  const double breakaway = breakaway_over_g2 * std::abs(arm.G2());
+  m.joint_friction = {{0.0, 0.0, 0.01}, {0.8 * breakaway, breakaway, 0.01}};
+  m.options.duration = 0.5;
+  finalize(m);
+  return m;
+}
+
+TEST_CASE("joint friction with a resting elbow: stuck joint and table share the load as statics say") {
+  // Breakaway twice the forearm's gravity torque G2: nothing moves; the
+  // elbow joint holds G2 and the table f = G1 / (l1 cos q1) (hand-derived,
+  // ElbowArm::statics_force with no shoulder torque). Tolerances: the
+  // Baumgarte-stabilised contact holds the elbow to ~1e-12 m, so q drifts by
+  // far less than 1e-9 rad; forces to 1e-9 relative (one Cholesky of a 2 x 2).
+  const testing::ElbowArm arm;
+  const Model m = leaning_arm(2.0);
+  Data data(m);
+  reset(m, data);
+  const Eigen::VectorXd q0 = data.x.head(2);
+  while (!finished(m, data)) {
+    step(m, data);
+    REQUIRE(!data.failure);
+  }
+  CHECK((data.x.head(2) - q0).norm() < 1e-9);
+  CHECK(data.joint_mode[1] == 0);
+  REQUIRE(data.contact.active.size() == 1);
+  CHECK(data.joint_friction_torque[1] == doctest::Approx(arm.G2()).epsilon(1e-9));
+  CHECK(data.contact.fn[0] == doctest::Approx(arm.statics_force(0.0)).epsilon(1e-9));
+  CHECK(data.joint_friction_torque[0] == 0.0);  // the frictionless shoulder
+}
+
+TEST_CASE("joint friction with a resting elbow: below G2 the forearm falls against Coulomb's torque") {
+  // Breakaway half of G2: the forearm breaks away at once and turns down
+  // (q2 falls) with the friction torque +tau_c opposing; the elbow stays on
+  // the table and the energy balance closes with the joint's friction loss.
+  const Model m = leaning_arm(0.5);
+  const RunResult r = simulate(m, RunOptions{1, {}});
+  REQUIRE(r.valid);
+  const double q2_start = r.trajectory.at(0, r.trajectory.column("q1"));
+  CHECK(last(r, "q1") < q2_start - 0.05);
+  double fastest = 0;  // it turned down (it may come to rest again, e.g. on the table)
+  for (std::size_t row = 0; row < r.trajectory.rows(); ++row)
+    fastest = std::min(fastest, r.trajectory.at(row, r.trajectory.column("qd1")));
+  CHECK(fastest < -0.1);
+  MESSAGE("forearm: q2 ", q2_start, " -> ", last(r, "q1"), " rad, fastest ", fastest,
+          " rad/s; friction loss ", r.energy_final.joint_friction, " J; residual ", r.balance_residual, " J");
+  CHECK(r.energy_final.joint_friction > 0);
+  // The loss it reports is its torque times the angle turned, to the
+  // accuracy of the balance (which closes to 1e-6 of the energy that flowed).
+  CHECK(std::abs(r.balance_residual) < 1e-6 * std::abs(r.energy_final.potential - r.energy_initial.potential));
 }
