@@ -334,3 +334,23 @@ controller: {type: pd, sample_rate: 100, sensors: {encoder: {counts_per_rev: 10,
   CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, sample_rate: 100, sensors: {noise: -1}}\n"),
               "x.yaml:13:", "controller.sensors.noise", "must be >= 0");
 }
+
+TEST_CASE("controller.model: a table believed where the initial pose would be inside it loads (the plant's is checked)") {
+  // The arm lies along z = 0 at q = 0 with no elbow sphere radius given:
+  // a table believed with its top at z = 0.01 would hold the elbow 1 cm deep.
+  const Scenario s = load(scene_with(R"(
+controller:
+  model:
+    table.boxes[0].center: [0.4, 0, -0.04]
+)"));
+  REQUIRE(s.experiment.controller_model);
+  CHECK(s.experiment.controller_model->table[0].center.z() == -0.04);
+  CHECK(s.model.table[0].center.z() == -0.2);
+  // The plant's own table there is an error, as before.
+  CHECK_ERROR(two_link_with(R"(
+effects: {contact: true}
+elbows: [{name: elbow, link: 0, at: 0.3}]
+table: {boxes: [{center: [0.4, 0, -0.04], size: [1.0, 0.6, 0.1]}]}
+)"),
+              "x.yaml:", "elbows[0]", "inside table box 0 at the initial pose");
+}

@@ -80,8 +80,11 @@ void finalize_model(Model& model, const Source& source) {
 // The sections, in dependency order: effects and robot (dof) before motors,
 // elbows, initial state, inputs and the task. Fills `sets` with the variants:
 // and study: sections (with where each entry is written).
+// `plant`: false for the controller's model, whose table may be believed
+// where the arm's initial pose would be inside it (the arm is where the
+// plant's table is: its start pose is solved on the plant).
 Scenario read(const Value& root, const Source& source, OverrideSets& sets,
-              std::vector<VariantSpec::Entry>& beliefs) {
+              std::vector<VariantSpec::Entry>& beliefs, bool plant = true) {
   root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "elbows",
                    "table", "contact", "initial", "simulation", "inputs", "output", "render",
                    "task", "controller", "hand_load", "variants", "validity", "uncertainty",
@@ -116,7 +119,7 @@ Scenario read(const Value& root, const Source& source, OverrideSets& sets,
   s.output = read_output(root.get("output"), model.name);
   s.render = read_render(root.get("render"));
   finalize_model(model, source);
-  check_initial_penetration(root, model);
+  if (plant) check_initial_penetration(root, model);
   const auto texts = [](const VariantSpec& v) {
     std::vector<std::string> out;
     for (const VariantSpec::Entry& e : v.overrides) out.push_back(e.text);
@@ -146,7 +149,7 @@ Model read_believed(const YAML::Node& root, Source source,
   for (const VariantSpec::Entry& e : beliefs) apply_override(copy, e.text, source, e.origin);
   OverrideSets none;
   std::vector<VariantSpec::Entry> no_beliefs;
-  Model believed = read(Value(source, copy), source, none, no_beliefs).model;
+  Model believed = read(Value(source, copy), source, none, no_beliefs, false).model;
   auto differs = [&](const char* what, std::size_t a, std::size_t b) {
     if (a == b) return;
     const VariantSpec::Entry& e = beliefs.front();
