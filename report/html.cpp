@@ -139,4 +139,14 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
   if (error) throw std::runtime_error(path.string() + ": " + error.message());
 }
 
+nlohmann::ordered_json read_json(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  try {
+    return nlohmann::ordered_json::parse(in);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path.string() + ": " + e.what());
+  }
+}
+
 }  // namespace elbowsim::report::html

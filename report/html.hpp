@@ -44,4 +44,8 @@ std::string figure(const Figure& f);
 // std::runtime_error naming the path on failure.
 void write_file(const std::filesystem::path& path, const std::string& text);
 
+// A JSON file a report is made from (montecarlo.json, study.json). Throws
+// std::runtime_error naming the file when it cannot be read or parsed.
+nlohmann::ordered_json read_json(const std::filesystem::path& path);
+
 }  // namespace elbowsim::report::html

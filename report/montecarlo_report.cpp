@@ -143,15 +143,7 @@ std::string parameters_section(const Json& doc) {
 }  // namespace
 
 void write_montecarlo_report(const std::filesystem::path& folder) {
-  const std::filesystem::path json = folder / "montecarlo.json";
-  std::ifstream in(json);
-  if (!in) throw std::runtime_error("cannot read " + json.string());
-  Json doc;
-  try {
-    doc = Json::parse(in);
-  } catch (const std::exception& e) {
-    throw std::runtime_error(json.string() + ": " + e.what());
-  }
+  const Json doc = html::read_json(folder / "montecarlo.json");
   std::filesystem::create_directories(folder / "plots");
   std::vector<Figure> figures;
   auto add = [&](const plot::LinePlot& p, const std::string& file, const std::string& caption) {

@@ -105,15 +105,7 @@ std::string case_table(const Json& doc) {
 }  // namespace
 
 void write_study_report(const std::filesystem::path& folder) {
-  const std::filesystem::path json = folder / "study.json";
-  std::ifstream in(json);
-  if (!in) throw std::runtime_error("cannot read " + json.string());
-  Json doc;
-  try {
-    doc = Json::parse(in);
-  } catch (const std::exception& e) {
-    throw std::runtime_error(json.string() + ": " + e.what());
-  }
+  const Json doc = html::read_json(folder / "study.json");
   std::filesystem::create_directories(folder / "plots");
   const plot::LinePlot ratios = ratio_plot(doc);
   plot::write_png(ratios, folder / "plots" / "ratios.png");

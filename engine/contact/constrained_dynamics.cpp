@@ -4,6 +4,7 @@
 #include <Eigen/QR>
 
 #include "engine/contact/min_norm_solve.hpp"
+#include "engine/dynamics/joint_friction.hpp"
 
 namespace elbowsim {
 
@@ -63,15 +64,7 @@ void zero_stuck_rows(const Data& data, Rows&& x) {
 void schur(const Model& model, Data& data, ConstVec tau) {
   ContactData& c = data.contact;
   const bool locked = any_stuck(model, data);
-  if (locked) {
-    data.joint_mass = data.mass_matrix;
-    for (int j = 0; j < model.dof; ++j) {
-      if (data.joint_mode[static_cast<std::size_t>(j)] != 0) continue;
-      data.joint_mass.row(j).setZero();
-      data.joint_mass.col(j).setZero();
-      data.joint_mass(j, j) = 1.0;
-    }
-  }
+  if (locked) lock_stuck_joints(data);
   data.llt.compute(locked ? data.joint_mass : data.mass_matrix);
   const auto L = data.llt.matrixL();
   c.a_free = tau - data.bias;  // becomes w

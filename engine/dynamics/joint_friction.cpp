@@ -13,6 +13,16 @@ double sliding_friction(const JointFriction& f, double speed) {
   return f.coulomb + (f.breakaway - f.coulomb) * std::exp(-w * w);
 }
 
+void lock_stuck_joints(Data& data) {
+  data.joint_mass = data.mass_matrix;
+  for (Eigen::Index j = 0; j < data.joint_mass.rows(); ++j) {
+    if (data.joint_mode[static_cast<std::size_t>(j)] != 0) continue;
+    data.joint_mass.row(j).setZero();
+    data.joint_mass.col(j).setZero();
+    data.joint_mass(j, j) = 1.0;
+  }
+}
+
 void sliding_friction_torques(const Model& model, Data& data, ConstVec qd) {
   for (int j = 0; j < model.dof; ++j) {
     const signed char mode = data.joint_mode[static_cast<std::size_t>(j)];
@@ -35,15 +45,10 @@ void joint_friction_dynamics(const Model& model, Data& data, ConstVec qd) {
   mass_matrix_crba(model, data);
   bias_torques(model, data, qd);
   data.tau = data.tau_applied - data.bias;  // (tau - B), kept for the holding torques
-  data.joint_mass = data.mass_matrix;
+  lock_stuck_joints(data);
   data.qdd = data.tau;
-  for (int j = 0; j < model.dof; ++j) {
-    if (data.joint_mode[static_cast<std::size_t>(j)] != 0) continue;
-    data.joint_mass.row(j).setZero();
-    data.joint_mass.col(j).setZero();
-    data.joint_mass(j, j) = 1.0;
-    data.qdd[j] = 0.0;
-  }
+  for (int j = 0; j < model.dof; ++j)
+    if (data.joint_mode[static_cast<std::size_t>(j)] == 0) data.qdd[j] = 0.0;
   data.llt.compute(data.joint_mass);
   data.llt.solveInPlace(data.qdd);
   // What holds a stuck joint: M_j qdd - (tau - B)_j (its friction torque).

@@ -13,6 +13,11 @@ namespace elbowsim {
 // [N m] >= 0: the friction torque of a joint sliding at |speed| (the Stribeck curve).
 double sliding_friction(const JointFriction& f, double speed);
 
+// data.joint_mass = data.mass_matrix with the rows and columns of the joints
+// stuck in data.joint_mode replaced by the identity's: factored, it gives
+// qdd_S = 0 and the free joints' accelerations of the locked arm.
+void lock_stuck_joints(Data& data);
+
 // The friction of the sliding joints in the modes data.joint_mode into
 // data.joint_friction_torque (stuck joints: 0 until their holding torque is
 // known) and data.tau_applied = data.actuation + that friction.
