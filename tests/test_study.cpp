@@ -101,14 +101,22 @@ TEST_CASE("study errors: names, structure, levels that change the study, bad val
   CHECK_ERROR(two_link_with("study: {levels: {}}\n"), "x.yaml:9:", "study.levels", "allowed here: axes");
   CHECK_ERROR(two_link_with("variants: {a: {study.axes: 1}}\n"), "x.yaml:9:", "variants.a.study.axes",
               "a variant cannot change study");
-  // A level's bad value is reported at the level's entry, naming the case.
-  const std::string bad = error_of(two_link_with(R"(
+  // A level's bad value is reported at the level's entry, naming the case,
+  // when the case is loaded (montecarlo, validate); a run ignores the study.
+  const std::string broken = two_link_with(R"(
 study:
   axes:
     time:
       short: {simulation.duration: 0.3}
       broken: {simulation.duration: -1}
-)"));
+)");
+  CHECK(error_of(broken).empty());
+  std::string bad;
+  try {
+    elbowsim::load_scenario_case_text(broken, "x.yaml", {"broken"}, "");
+  } catch (const ScenarioError& e) {
+    bad = e.what();
+  }
   INFO(bad);
   CHECK(bad.starts_with("x.yaml:13:"));
   CHECK(contains(bad, "simulation.duration"));
@@ -203,6 +211,17 @@ TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same by
   CHECK_FALSE(fs::exists(dir / "some" / "low-short"));
   CHECK(elbowsim::testing::slurp(dir / "some" / "high-long" / "samples.csv") ==
         elbowsim::testing::slurp(dir / "one" / "high-long" / "samples.csv"));
+  // validate loads every case: it says how many, and names a broken level.
+  const auto checked = elbowsim::testing::run_elbowsim("validate " + file.string());
+  CHECK(checked.exit_code == 0);
+  CHECK(contains(checked.output, "study      4 cases (2 pose x 2 time), each loaded"));
+  const fs::path broken = dir / "broken.yaml";
+  std::ofstream(broken) << kStudy << "      never: {simulation.duration: -1}\n";
+  const auto refused = elbowsim::testing::run_elbowsim("validate " + broken.string());
+  CHECK(refused.exit_code == 2);
+  CHECK(contains(refused.output, "simulation.duration: must be > 0"));
+  CHECK(contains(refused.output, "(in study case low-never)"));
+
   const auto bad = run("bad", "--case pose=middle");
   CHECK(bad.exit_code == 2);
   CHECK(contains(bad.output, "axis pose has no level \"middle\""));

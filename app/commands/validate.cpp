@@ -2,6 +2,7 @@
 
 #include "app/commands/commands.hpp"
 #include "app/scenario/scenario.hpp"
+#include "app/study/cases.hpp"
 
 namespace elbowsim {
 
@@ -35,7 +36,20 @@ void print_model(const Scenario& s) {
 
 int validate_command(const std::string& scenario, const std::vector<std::string>& sets) {
   try {
-    print_model(load_scenario(scenario, sets));
+    const Scenario s = load_scenario(scenario, sets);
+    print_model(s);
+    // Every case of the study, with every variant, as montecarlo loads them.
+    const auto cases = study::study_cases(s);
+    if (!s.study.empty()) {
+      for (const study::StudyCase& c : cases) {
+        load_scenario_case(scenario, c.levels, "", sets);
+        for (const auto& [variant, overrides] : s.variants) load_scenario_case(scenario, c.levels, variant, sets);
+      }
+      std::cout << "study      " << cases.size() << " cases (";
+      for (std::size_t a = 0; a < s.study.size(); ++a)
+        std::cout << (a ? " x " : "") << s.study[a].levels.size() << " " << s.study[a].name;
+      std::cout << "), each loaded\n";
+    }
   } catch (const ScenarioError& e) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_bad_input;

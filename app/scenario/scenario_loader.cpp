@@ -257,21 +257,15 @@ std::string read_file(const std::string& path) {
 
 }  // namespace loader
 
-// The scenario itself, then each variant and each study level loaded once
-// (on its own) to check it.
+// The scenario itself, then each variant loaded once to check it. Study
+// levels are checked where cases are loaded (montecarlo, validate): a --set
+// for one run may well contradict a level (task.path against a circle's keys).
 Scenario load_scenario_text(const std::string& text, const std::string& file_name,
                             const std::vector<std::string>& overrides) {
   loader::OverrideSets sets, none;
   Scenario scenario = loader::load_once(text, file_name, {}, overrides, sets);
   for (const loader::VariantSpec& v : sets.variants)
     loader::load_once(text, file_name, {{}, &v}, overrides, none);
-  for (std::size_t a = 0; a < sets.axes.size(); ++a)
-    for (const loader::VariantSpec& level : sets.axes[a].levels) {
-      loader::Applied one;  // this level, every other axis at its first level
-      for (std::size_t b = 0; b < sets.axes.size(); ++b)
-        one.levels.push_back(b == a ? &level : &sets.axes[b].levels.front());
-      loader::load_once(text, file_name, one, overrides, none);
-    }
   return scenario;
 }
 
