@@ -115,17 +115,40 @@ void parallel_for(std::size_t count, int jobs, const Task& task) {
   for (std::thread& t : threads) t.join();
 }
 
-// Runs every (draw, variant) on `jobs` threads; results by index, so the
-// order of completion does not matter.
-std::vector<std::vector<Sample>> run_all(const MonteCarloArguments& args, const CasePlan& plan,
-                                         const std::vector<study::Draw>& draws, int jobs) {
+// One case's runs, on `jobs` threads in one pool, results by index (the order
+// of completion does not matter): first the accuracy floor's runs, each
+// variant's nominal run at half its step (the longest runs: they go first,
+// so that no thread is left with one at the end) and at its step, then every
+// (draw, variant).
+struct CaseRuns {
+  std::vector<Sample> half, full;          // [variant] the floor's nominal runs
+  std::vector<std::vector<Sample>> draws;  // [draw][variant]
+};
+
+CaseRuns run_case_runs(const MonteCarloArguments& args, const CasePlan& plan,
+                       const std::vector<study::Draw>& draws) {
   const std::vector<Variant>& variants = plan.variants;
-  const std::size_t nv = variants.size(), total = draws.size() * nv;
-  std::vector<std::vector<Sample>> out(draws.size(), std::vector<Sample>(nv));
+  const std::size_t nv = variants.size(), floor_runs = 2 * nv, total = floor_runs + draws.size() * nv;
+  std::vector<Scenario> halved;  // loaded here: a ScenarioError leaves before any run
+  for (const Variant& v : variants) halved.push_back(at_half_step(v.nominal));
+  // The halved run's controller believes the halved scenario: its plan is
+  // sampled on the half step (the nominal's is sampled on the step).
+  std::vector<std::shared_ptr<const Model>> halved_believed;
+  for (const Scenario& h : halved)
+    halved_believed.push_back(std::make_shared<const Model>(h.experiment.believed(h.model)));
+  CaseRuns out{std::vector<Sample>(nv), std::vector<Sample>(nv),
+               std::vector<std::vector<Sample>>(draws.size(), std::vector<Sample>(nv))};
   std::atomic<std::size_t> done{0};
   const std::string label = plan.study_case.name.empty() ? "" : " " + plan.study_case.name;
-  parallel_for(total, jobs, [&](std::size_t k) {
-    out[k / nv][k % nv] = run_draw(args, plan.study_case, variants[k % nv], draws[k / nv]);
+  parallel_for(total, args.jobs, [&](std::size_t k) {
+    if (k < nv) {
+      out.half[k] = run_one(halved[k], halved_believed[k]);
+    } else if (k < floor_runs) {
+      out.full[k - nv] = run_one(variants[k - nv].nominal, variants[k - nv].believed);
+    } else {
+      const std::size_t r = k - floor_runs;
+      out.draws[r / nv][r % nv] = run_draw(args, plan.study_case, variants[r % nv], draws[r / nv]);
+    }
     const std::size_t finished = ++done;
     if (finished % std::max<std::size_t>(1, total / 10) == 0)
       std::cerr << "montecarlo" + label + ": " << finished << " of " << total << " runs\n";
@@ -134,28 +157,15 @@ std::vector<std::vector<Sample>> run_all(const MonteCarloArguments& args, const 
 }
 
 // The integration floor of the hand error: each variant's nominal run at its
-// step and at half of it, on `jobs` threads.
-Json accuracy_floors(const std::vector<Variant>& variants, int jobs) {
-  std::vector<Scenario> halved;  // loaded here: a ScenarioError leaves before any run
-  for (const Variant& v : variants) halved.push_back(at_half_step(v.nominal));
-  // The halved run's controller believes the halved scenario: its plan is
-  // sampled on the half step (the nominal's is sampled on the step).
-  std::vector<std::shared_ptr<const Model>> halved_believed;
-  for (const Scenario& h : halved)
-    halved_believed.push_back(std::make_shared<const Model>(h.experiment.believed(h.model)));
-  std::vector<Sample> runs(2 * variants.size());
-  parallel_for(runs.size(), jobs, [&](std::size_t k) {
-    const Variant& v = variants[k / 2];
-    runs[k] = k % 2 == 0 ? run_one(v.nominal, v.believed)
-                         : run_one(halved[k / 2], halved_believed[k / 2]);
-  });
+// step and at half of it.
+Json accuracy_floors(const std::vector<Variant>& variants, const CaseRuns& runs) {
   const auto rms = [](const Sample& s) {
     const auto it = s.metrics.find("hand_error_rms");
     return s.valid && it != s.metrics.end() ? it->second : std::nan("");
   };
   Json floors;
   for (std::size_t i = 0; i < variants.size(); ++i) {
-    const Sample &full = runs[2 * i], &half = runs[2 * i + 1];
+    const Sample &full = runs.full[i], &half = runs.half[i];
     Json f;
     f["step"] = variants[i].nominal.model.options.step;
     f["hand_error_rms_step"] = rms(full);
@@ -260,8 +270,9 @@ std::vector<CasePlan> plan_cases(const MonteCarloArguments& args, const Scenario
 Json run_case(const MonteCarloArguments& args, const Scenario& base, const CasePlan& plan,
               const std::vector<study::Draw>& draws, std::uint64_t seed) {
   const std::vector<Variant>& variants = plan.variants;
-  const Json floors = accuracy_floors(variants, args.jobs);
-  const auto samples = run_all(args, plan, draws, args.jobs);
+  const CaseRuns runs = run_case_runs(args, plan, draws);
+  const Json floors = accuracy_floors(variants, runs);
+  const auto& samples = runs.draws;
 
   Json doc;
   doc["scenario"] = base.model.name;
