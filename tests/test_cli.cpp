@@ -1,6 +1,7 @@
 // The elbowsim command line, run as a process: exit codes, messages, outputs.
 #include <doctest/doctest.h>
 
+#include "app/output/folder_lock.hpp"
 #include "support/process.hpp"
 #include "support/scratch.hpp"
 #include <sys/wait.h>
@@ -49,7 +50,7 @@ TEST_CASE("cli: run writes trajectory.csv and summary.json, byte-identical on a 
   CHECK(summary["effects"] == nlohmann::json::array({"gravity"}));
   CHECK(summary["steps"].get<long>() > 0);
   for (const auto& entry : fs::directory_iterator(dir / "a"))
-    CHECK(entry.path().extension() != ".tmp");
+    CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
 }
 
 TEST_CASE("cli: --set overrides a key; a bad --set names itself and writes nothing") {
@@ -98,4 +99,23 @@ TEST_CASE("cli: a diverging run exits 3 with a clear message and keeps what it r
   const auto summary = nlohmann::json::parse(slurp(dir / "summary.json"));
   CHECK(summary["completed"] == false);
   CHECK(summary["failure"].get<std::string>().find("diverged") != std::string::npos);
+}
+
+TEST_CASE("cli: a folder another run is writing is refused (exit 1, nothing written); free, it is used") {
+  const fs::path dir = scratch("cli", "locked");
+  const std::string out = (dir / "busy").string();
+  {
+    const elbowsim::FolderLock held(dir / "busy");  // as another run would hold it
+    for (const std::string command : {"run " + kPendulum + " --out " + out,
+                                      "sweep " + kPendulum + " --key simulation.duration --values 0.1 --out " + out}) {
+      const Outcome busy = run(command);
+      INFO(busy.output);
+      CHECK(busy.exit_code == 1);
+      CHECK(busy.output.find("is in use by another elbowsim run") != std::string::npos);
+    }
+    CHECK_FALSE(fs::exists(dir / "busy" / "summary.json"));
+  }
+  const Outcome free = run("run " + kPendulum + " --out " + out);
+  CHECK(free.exit_code == 0);
+  CHECK(fs::exists(dir / "busy" / "summary.json"));
 }

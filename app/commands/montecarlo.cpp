@@ -19,6 +19,7 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
+#include "app/output/folder_lock.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/cases.hpp"
 #include "app/study/draws.hpp"
@@ -376,6 +377,7 @@ int montecarlo_command(const MonteCarloArguments& args) {
 
   std::vector<Json> docs;
   try {
+    const FolderLock lock(folder);  // one study at a time in a folder
     for (std::size_t k = 0; k < plans.size(); ++k) {
       const auto started = std::chrono::steady_clock::now();
       docs.push_back(run_case(args, base, plans[k], draws, seed));

@@ -9,6 +9,7 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
+#include "app/output/folder_lock.hpp"
 #include "app/output/run_folder.hpp"
 #include "report/compare_report.hpp"
 #include "app/output/events_csv.hpp"
@@ -213,8 +214,15 @@ int run_command(const RunArguments& args) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_bad_input;
   }
+  const std::filesystem::path folder = args.out.value_or(scenario.output.folder);
   std::vector<RunRecord> records;
-  return run_scenario(args, scenario, args.out.value_or(scenario.output.folder), records);
+  try {
+    const FolderLock lock(folder);  // held until the run's last file is written
+    return run_scenario(args, scenario, folder, records);
+  } catch (const std::runtime_error& e) {  // FolderInUse, or the lock file
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_io;
+  }
 }
 
 }  // namespace elbowsim

@@ -12,6 +12,7 @@
 #include "app/commands/commands.hpp"
 #include "report/sweep_plots.hpp"
 #include "app/output/atomic_file.hpp"
+#include "app/output/folder_lock.hpp"
 #include "app/output/run_folder.hpp"
 #include "report/comparison.hpp"
 #include "app/scenario/scenario.hpp"
@@ -81,6 +82,7 @@ int sweep_command(const SweepArguments& args) {
   std::vector<report::RunData> row_runs;
   int code = exit_ok;
   try {
+    const FolderLock lock(folder);  // the whole sweep: one writer at a time
     for (std::size_t i = 0; i < values.size(); ++i) {
       std::vector<RunRecord> records;
       const int c = run_scenario(runs[i], scenarios[i], folder / (args.key + "=" + values[i]), records);

@@ -1,0 +1,33 @@
+// One run at a time per output folder: two runs writing into the same folder
+// would mix their files (rows of both in one trajectory.csv, a summary of one
+// beside the trajectory of the other). A run holds an exclusive lock on
+// <folder>/.elbowsim.lock (flock: released by the kernel when the process
+// ends, however it ends) while it writes.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace elbowsim {
+
+// Another process holds the folder.
+class FolderInUse : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class FolderLock {
+ public:
+  // Creates the folder if needed and takes its lock without waiting. Throws
+  // FolderInUse when another process holds it, std::runtime_error when the
+  // lock file cannot be opened (naming it).
+  explicit FolderLock(const std::filesystem::path& folder);
+  ~FolderLock();
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+}  // namespace elbowsim
