@@ -46,7 +46,8 @@ DIR/samples.csv, montecarlo.json and report.html (DIR default: output.folder/mon
 (one level of each axis) in DIR/<case>/, plus DIR/study.csv, study.json and report.html;
 --case task=loops,speed=fast runs only the cases with those levels.
 Exit codes: 0 ok, 1 I/O error, 2 bad input, 3 run stopped early (outputs kept),
-4 an --expect expression does not hold.
+4 an --expect expression does not hold, 128 + signal (130 Ctrl-C, 143 SIGTERM): interrupted
+(run, sweep: what was recorded is written).
 Scenario keys: scenarios/README.md)";
 
 cxxopts::Options make_options() {

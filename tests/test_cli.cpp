@@ -119,3 +119,31 @@ TEST_CASE("cli: a folder another run is writing is refused (exit 1, nothing writ
   CHECK(free.exit_code == 0);
   CHECK(fs::exists(dir / "busy" / "summary.json"));
 }
+
+TEST_CASE("cli: SIGINT or SIGTERM during a run: what was recorded is written, marked interrupted, exit 128 + signal") {
+  const fs::path dir = scratch("cli", "interrupt");
+  // A pendulum for 2000 s at 0.1 ms (2e7 steps, far longer than the second
+  // the shell waits before the signal).
+  for (const auto& [signal, code] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
+    const fs::path out = dir / signal;
+    const Outcome r = elbowsim::testing::shell(
+        "(" + std::string(ELBOWSIM_BINARY) + " run " + kPendulum + " --out " + out.string() +
+        " --set simulation.duration=2000 --set simulation.step=1e-4 --set output.every=1000"
+        " --no-render & pid=$!; sleep 1; kill -" + signal + " $pid; wait $pid; echo \"exit=$?\")");
+    INFO(r.output);
+    CHECK(r.output.find("exit=" + std::to_string(code)) != std::string::npos);
+    CHECK(r.output.find("interrupted") != std::string::npos);
+    REQUIRE(fs::exists(out / "summary.json"));
+    const auto summary = nlohmann::json::parse(slurp(out / "summary.json"));
+    CHECK(summary["interrupted"] == true);
+    CHECK(summary["completed"] == false);
+    CHECK(summary["valid"] == false);
+    CHECK(summary["final_time"].get<double>() > 0.0);
+    CHECK(summary["final_time"].get<double>() < 2000.0);
+    const std::string csv = slurp(out / "trajectory.csv");
+    CHECK(std::count(csv.begin(), csv.end(), '\n') > 2);  // header and rows
+    CHECK_FALSE(fs::exists(out / "report.html"));         // nothing more started
+    for (const auto& entry : fs::directory_iterator(out))
+      CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
+  }
+}

@@ -9,6 +9,7 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
+#include "app/commands/interrupt.hpp"
 #include "app/output/folder_lock.hpp"
 #include "app/output/run_folder.hpp"
 #include "report/compare_report.hpp"
@@ -67,7 +68,7 @@ struct RunOutcome {
 RunResult simulate_or_fail(const Scenario& scenario) {
   try {
     return simulate(scenario.model, scenario.experiment,
-                    RunOptions{scenario.output.every, terminal_progress()});
+                    RunOptions{scenario.output.every, terminal_progress(), &interrupt_flag()});
   } catch (const PlanError& e) {
     RunResult failed;
     failed.failure = std::string("the hand task cannot be followed: ") + e.what();
@@ -104,7 +105,7 @@ RunOutcome run_one(const Scenario& scenario, const std::filesystem::path& folder
   const RunResult result = simulate_or_fail(scenario);
   const bool recorded = result.trajectory.rows() > 0;
   RunOutcome outcome{exit_ok, run_summary(scenario, result)};
-  if (args.check_step && result.valid) add_step_check(scenario, result, outcome.summary);
+  if (args.check_step && result.valid && !interrupt_exit_code()) add_step_check(scenario, result, outcome.summary);
   try {
     std::filesystem::create_directories(folder);
     write_outputs(scenario, result, outcome.summary, folder);
@@ -124,6 +125,12 @@ RunOutcome run_one(const Scenario& scenario, const std::filesystem::path& folder
     std::cout << scenario.model.name << ": " << result.steps << " steps to t = "
               << result.final_time << " s in " << result.wall_seconds << " s; outputs in "
               << folder.string() << '\n';
+  }
+  // Interrupted: the data files are written; nothing more is started.
+  if (interrupt_exit_code()) {
+    std::cerr << "interrupted: wrote what was recorded to " << folder.string() << '\n';
+    outcome.code = interrupt_exit_code();
+    return outcome;
   }
   // Frames and video last, from the recording in memory (what it recorded,
   // also when the run stopped early).
@@ -182,6 +189,7 @@ int run_variants(const RunArguments& args, const Scenario& scenario,
   for (const Scenario& v : variants) {
     RunOutcome outcome = run_one(v, folder / v.variant, args);
     if (outcome.code == exit_io) return exit_io;
+    if (interrupt_exit_code()) return interrupt_exit_code();  // no more runs, no comparison
     if (code == exit_ok) code = outcome.code;
     summaries[v.variant] = outcome.summary;
     records.push_back({v.variant, folder / v.variant});
@@ -216,6 +224,7 @@ int run_command(const RunArguments& args) {
   }
   const std::filesystem::path folder = args.out.value_or(scenario.output.folder);
   std::vector<RunRecord> records;
+  install_interrupt_handlers();
   try {
     const FolderLock lock(folder);  // held until the run's last file is written
     return run_scenario(args, scenario, folder, records);

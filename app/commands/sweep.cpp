@@ -12,6 +12,7 @@
 #include "app/commands/commands.hpp"
 #include "report/sweep_plots.hpp"
 #include "app/output/atomic_file.hpp"
+#include "app/commands/interrupt.hpp"
 #include "app/output/folder_lock.hpp"
 #include "app/output/run_folder.hpp"
 #include "report/comparison.hpp"
@@ -82,11 +83,13 @@ int sweep_command(const SweepArguments& args) {
   std::vector<report::RunData> row_runs;
   int code = exit_ok;
   try {
+    install_interrupt_handlers();
     const FolderLock lock(folder);  // the whole sweep: one writer at a time
     for (std::size_t i = 0; i < values.size(); ++i) {
       std::vector<RunRecord> records;
       const int c = run_scenario(runs[i], scenarios[i], folder / (args.key + "=" + values[i]), records);
       if (c == exit_io) return exit_io;
+      if (interrupt_exit_code()) return interrupt_exit_code();  // no more runs, no table
       if (code == exit_ok) code = c;
       for (const RunRecord& r : records) {
         row_values.push_back(values[i]);

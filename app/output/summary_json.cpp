@@ -87,6 +87,7 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   j["completed"] = result.completed;
   j["valid"] = result.valid;  // completed and every check of engine/run/validity.hpp held
   j["failure"] = result.failure;
+  j["interrupted"] = result.interrupted;  // by a signal (exit 128 + signal), not by the physics
   j["steps"] = result.steps;
   j["final_time"] = result.final_time;
   j["wall_seconds"] = result.wall_seconds;

@@ -23,6 +23,7 @@ struct RunResult {
   bool completed = false;       // reached the end (false: stopped early, see failure)
   bool valid = false;           // completed and every check of run/validity.hpp held
   std::string failure;          // why the run stopped early or is not valid
+  bool interrupted = false;     // stopped from outside (RunOptions::stop), not by the physics
   std::vector<std::string> warnings;
   std::vector<ContactEvent> events;  // landings and releases, in time order
   long steps = 0;

@@ -38,6 +38,7 @@ void finish(const Model& model, Data& data, RunResult& result) {
     check_planned_rest(model, data.controller->plan->resting, result.trajectory, data);
   result.valid = !data.failure;
   result.failure = describe(model, data.failure);
+  result.interrupted = data.failure.kind == Failure::Kind::interrupted;
   result.steps = data.step_count;
   result.final_time = data.t;
   result.energy_initial = data.energy_initial;
@@ -70,6 +71,10 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
   const long expected = std::lround(model.options.duration / model.options.step);
   const long progress_every = std::max(1L, expected / 100);
   while (!finished(model, data)) {
+    if (options.stop && options.stop->load(std::memory_order_relaxed)) {
+      data.failure = Failure{Failure::Kind::interrupted, data.t, data.step_count};
+      break;
+    }
     step(model, data);
     collect_log(model, data, result);
     if (data.failure) break;

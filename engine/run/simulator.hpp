@@ -2,6 +2,7 @@
 // N-th step (run/step.hpp has the step itself).
 #pragma once
 
+#include <atomic>
 #include <functional>
 
 #include "engine/control/experiment.hpp"
@@ -13,6 +14,9 @@ struct RunOptions {
   int record_every = 1;  // record every N-th step (and always the first and last)
   // Called now and then with the fraction done (0..1); may be empty.
   std::function<void(double)> progress;
+  // Read between steps: once true, the run stops as interrupted (its
+  // recording kept). Null: never. The engine installs no signal handler.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // Runs the model from its initial state for options.duration under the

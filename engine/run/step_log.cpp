@@ -140,6 +140,10 @@ std::string describe(const Model& model, const Failure& f) {
           << " contact points touch the table at once, more than the " << f.limit
           << " rows the run made room for (contact.max_rows)";
       return msg.str();
+    case Failure::Kind::interrupted:
+      msg << "interrupted at " << at_time(f.t) << " (a signal asked the run to stop): "
+          << "what it recorded up to then is kept";
+      return msg.str();
     case Failure::Kind::elbow_not_resting:
       msg << "invalid run: " << part_name(model, f) << " rested " << 100 * f.value
           << " % of the run; the task keeps it on the table throughout (validity.rest_share "

@@ -49,6 +49,7 @@ struct Failure {
     energy_balance,       // the energy account off by more than validity.energy_residual of the flow
     elbow_not_resting,    // an elbow the task rests on the table rested less than validity.rest_share
     too_many_contacts,    // more slots touch at once than contact.max_rows
+    interrupted,          // stopped from outside (RunOptions::stop: SIGINT, SIGTERM)
   };
   enum class Part { none, joint, link, elbow };
   Kind kind = Kind::none;
