@@ -90,3 +90,21 @@ TEST_CASE("the experiment under PD control: elbow_off's sagging arm lands on the
   // Held at the table's top: the constraint's worst violation is far below the tolerance.
   CHECK(summary["contact"]["max_abs_C"].get<double>() < 1e-6);
 }
+
+TEST_CASE("a run whose steps shrink to nothing stops as stalled (exit 3, in seconds), not a hang") {
+  // Without gravity and with continuous control the resting elbow grazes the
+  // table: located landings and lift-offs cut the steps to ~1e-9 s at about
+  // t = 1.5 s. Before the stall check the run went on for hours.
+  const fs::path dir = t::scratch("validity", "stalled");
+  const t::Outcome r = t::run_elbowsim(
+      "run " + kExperiment + " --out " + dir.string() +
+      " --no-render --no-report --set effects.gravity=false --set 'variants={elbow_on: {}}'"
+      " --set 'controller={type: pd_feedforward, kp: 50, kd: 2}'");
+  INFO(r.output);
+  CHECK(r.exit_code == 3);
+  CHECK(has(r.output, "the run stalled at t = "));
+  CHECK(has(r.output, "contact.events: step"));
+  const auto summary = nlohmann::json::parse(t::slurp(dir / "elbow_on" / "summary.json"));
+  CHECK(summary["completed"] == false);
+  CHECK(summary["final_time"].get<double>() < 4.8);
+}

@@ -55,6 +55,11 @@ RunResult simulate(const Model& model, const RunOptions& options) {
   return simulate(model, Experiment{}, options);
 }
 
+// Steps per window of the stall check: a window whose steps advanced time by
+// less than 1 % of theirs on average ends the run (events that cut every step
+// to nothing: Zeno). Event location makes a few short steps, never thousands.
+constexpr long kStallSteps = 10000;
+
 RunResult simulate(const Model& model, const Experiment& experiment, const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const long worlds_before = model.effects.contact ? CollisionWorld::worlds_built() : 0;
@@ -70,12 +75,21 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
   const long every = std::max(1, options.record_every);
   const long expected = std::lround(model.options.duration / model.options.step);
   const long progress_every = std::max(1L, expected / 100);
+  double window_start = data.t;  // where the current window of kStallSteps steps began
   while (!finished(model, data)) {
     if (options.stop && options.stop->load(std::memory_order_relaxed)) {
       data.failure = Failure{Failure::Kind::interrupted, data.t, data.step_count};
       break;
     }
     step(model, data);
+    if (!data.failure && data.step_count % kStallSteps == 0) {  // a run that no longer moves on
+      if (data.t - window_start < 0.01 * kStallSteps * model.options.step) {
+        data.failure = Failure{Failure::Kind::stalled, data.t, data.step_count};
+        data.failure.value = data.t - window_start;
+        data.failure.limit = kStallSteps;
+      }
+      window_start = data.t;
+    }
     collect_log(model, data, result);
     if (data.failure) break;
     if (data.step_count % every == 0 || finished(model, data)) record(model, data, result);

@@ -140,6 +140,12 @@ std::string describe(const Model& model, const Failure& f) {
           << " contact points touch the table at once, more than the " << f.limit
           << " rows the run made room for (contact.max_rows)";
       return msg.str();
+    case Failure::Kind::stalled:
+      msg << "the run stalled at " << at_time(f.t) << ": its last " << f.limit << " steps advanced "
+          << quantity(f.value, "s") << " in all, under 1 % of simulation.step each on average; "
+          << "located events keep cutting the steps (an elbow grazing or chattering on the table?): "
+             "try contact.events: step, or a larger contact.locate_tolerance";
+      return msg.str();
     case Failure::Kind::interrupted:
       msg << "interrupted at " << at_time(f.t) << " (a signal asked the run to stop): "
           << "what it recorded up to then is kept";

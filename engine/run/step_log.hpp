@@ -50,6 +50,7 @@ struct Failure {
     elbow_not_resting,    // an elbow the task rests on the table rested less than validity.rest_share
     too_many_contacts,    // more slots touch at once than contact.max_rows
     interrupted,          // stopped from outside (RunOptions::stop: SIGINT, SIGTERM)
+    stalled,              // time no longer advances: kStallSteps steps covered under 1 % of theirs
   };
   enum class Part { none, joint, link, elbow };
   Kind kind = Kind::none;
