@@ -147,3 +147,30 @@ TEST_CASE("cli: SIGINT or SIGTERM during a run: what was recorded is written, ma
       CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
   }
 }
+
+TEST_CASE("cli: report and compare refuse a cut or mismatched run folder (exit 2, the reason)") {
+  const fs::path dir = scratch("cli", "inconsistent");
+  REQUIRE(run("run " + kPendulum + " --out " + (dir / "good").string() + " --no-report").exit_code == 0);
+  const std::string csv = slurp(dir / "good" / "trajectory.csv");
+  // Cut inside a row: a damaged file.
+  fs::copy(dir / "good", dir / "cut", fs::copy_options::recursive);
+  std::ofstream(dir / "cut" / "trajectory.csv", std::ios::binary | std::ios::trunc)
+      << csv.substr(0, csv.size() / 2 + 7);
+  const Outcome cut = run("report " + (dir / "cut").string());
+  CHECK(cut.exit_code == 2);
+  CHECK(cut.output.find("trajectory.csv") != std::string::npos);
+  // Cut at a row's end: readable, but it stops before the summary's end.
+  fs::copy(dir / "good", dir / "short", fs::copy_options::recursive);
+  const std::size_t half = csv.find('\n', csv.size() / 2);
+  std::ofstream(dir / "short" / "trajectory.csv", std::ios::binary | std::ios::trunc) << csv.substr(0, half + 1);
+  const Outcome mismatch = run("compare " + (dir / "short").string() + " " + (dir / "good").string() +
+                               " --out " + (dir / "cmp").string());
+  CHECK(mismatch.exit_code == 2);
+  CHECK(mismatch.output.find("but summary.json says the run completed at") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "cmp"));
+  // A damaged summary.
+  fs::copy(dir / "good", dir / "summary", fs::copy_options::recursive);
+  std::ofstream(dir / "summary" / "summary.json", std::ios::trunc) << "{\"completed\": tr";
+  CHECK(run("report " + (dir / "summary").string()).exit_code == 2);
+  CHECK(run("report " + (dir / "good").string()).exit_code == 0);
+}

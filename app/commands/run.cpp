@@ -42,9 +42,13 @@ void write_outputs(const Scenario& scenario, const RunResult& result,
                    const nlohmann::ordered_json& summary, const std::filesystem::path& folder) {
   write_atomically(folder / "scenario.yaml",
                    [&](std::ostream& out) { out << scenario.resolved_yaml; });
-  if (scenario.output.trajectory)
+  // A run that never started (its plan failed) has no columns: no table, and
+  // none of an earlier run left beside this run's summary.
+  if (scenario.output.trajectory && !result.trajectory.columns().empty())
     write_atomically(folder / "trajectory.csv",
                      [&](std::ostream& out) { write_trajectory_csv(out, result.trajectory); });
+  else
+    std::filesystem::remove(folder / "trajectory.csv");
   if (scenario.model.effects.contact)
     write_atomically(folder / "events.csv", [&](std::ostream& out) {
       write_events_csv(out, scenario.model, result.events);

@@ -1,5 +1,7 @@
 #include "app/output/run_folder.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -146,7 +148,29 @@ report::RunData load_run_folder(const fs::path& folder) {
     attempt(folder / "events.csv", [&] { run.events = read_events(folder / "events.csv"); });
   attempt(folder / "scenario.yaml", [&] { read_scenario(folder / "scenario.yaml", run); });
   run.has_video = fs::exists(folder / "video.mp4");
+  if (const std::string why = inconsistency(run); !why.empty())
+    throw InconsistentRunFolder(folder.string() + ": " + why);
   return run;
+}
+
+std::string inconsistency(const report::RunData& run) {
+  // A file that is there but cannot be read was cut or damaged.
+  for (const std::string& problem : run.problems)
+    for (const char* file : {"summary.json: ", "trajectory.csv: ", "events.csv: "})
+      if (problem.starts_with(file) && problem.find("not in the run folder") == std::string::npos)
+        return problem;
+  if (!run.has_summary() || !run.has_trajectory()) return "";
+  // The same run wrote both: the last recorded row is the run's last state
+  // (or, for a run that stopped early, no later than it).
+  const double final_time = run.summary.value("final_time", 0.0);
+  const double last = run.trajectory.at(run.trajectory.rows() - 1, 0);
+  const double tolerance = 1e-9 * std::max(1.0, std::abs(final_time));
+  const bool completed = run.summary.value("completed", false);
+  if (last > final_time + tolerance || (completed && last < final_time - tolerance))
+    return "trajectory.csv ends at t = " + number(last) + " s but summary.json says the run " +
+           (completed ? "completed at" : "stopped at") + " t = " + number(final_time) +
+           " s: the files are from different runs, or one of them was cut";
+  return "";
 }
 
 }  // namespace elbowsim
