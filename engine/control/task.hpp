@@ -35,8 +35,9 @@ struct HandTask {
   double elbow_clearance = 0.0;  // [m] >= 0
 
   Eigen::VectorXd posture;        // [dof] preferred joints for the redundancy; empty = initial q
-  double posture_weight = 1.0;    // null-space gain per IK iteration: 1 = the solution closest
-                                  // to the posture; < 1 drifts toward it over samples
+  double posture_weight = 0.1;    // null-space gain per IK iteration: 1 = the solution closest
+                                  // to the posture (it can jump branch near full stretch);
+                                  // < 1 drifts toward it over samples, continuously
   Eigen::VectorXd q_min, q_max;   // [dof] joint limits [rad]; empty = none
 };
 

@@ -106,9 +106,10 @@ TEST_CASE("make_plan: a sample per step; qd, qdd central differences of q, zero 
   CHECK(plan->qd.front().isZero());
   CHECK(plan->qd.back().isZero());
   CHECK(plan->qdd.back().isZero());
-  // The task starts after its 0.2 s delay: before it, the plan holds still (the IK
-  // converges to the same pose to its 1e-13 m polish).
-  CHECK((plan->q[100] - plan->q[0]).norm() < 1e-9);
+  // The task starts after its 0.2 s delay: before it, the plan holds still up to
+  // the null-space drift toward the posture (posture_weight 0.1 per sample: 5e-8
+  // rad over these 100 samples; the hand itself does not move).
+  CHECK((plan->q[100] - plan->q[0]).norm() < 1e-6);
   CHECK((plan->q[300] - plan->q[0]).norm() > 1e-3);
 }
 
