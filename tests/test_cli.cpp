@@ -168,6 +168,10 @@ TEST_CASE("cli: report and compare refuse a cut or mismatched run folder (exit 2
   CHECK(mismatch.exit_code == 2);
   CHECK(mismatch.output.find("but summary.json says the run completed at") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "cmp"));
+  const Outcome render = run("render " + (dir / "short").string());
+  CHECK(render.exit_code == 2);
+  CHECK(render.output.find("but summary.json says the run completed at") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "short" / "video.mp4"));
   // A damaged summary.
   fs::copy(dir / "good", dir / "summary", fs::copy_options::recursive);
   std::ofstream(dir / "summary" / "summary.json", std::ios::trunc) << "{\"completed\": tr";

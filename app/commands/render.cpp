@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "app/commands/commands.hpp"
+#include "app/output/run_folder.hpp"
 #include "app/output/trajectory_csv.hpp"
 #include "app/scenario/scenario.hpp"
 #include "render/render_job.hpp"
@@ -75,6 +76,7 @@ std::string load_run(const fs::path& folder, Scenario& scenario, Recording& reco
   if (!fs::is_regular_file(yaml))
     return folder.string() + ": no scenario.yaml (written by elbowsim run since version 0.1.0)";
   try {
+    load_run_folder(folder);  // refuses cut or mismatched files (InconsistentRunFolder)
     scenario = load_scenario(yaml.string());
     std::ifstream in(csv, std::ios::binary);
     recording = read_trajectory_csv(in, csv.string());
