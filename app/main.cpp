@@ -47,7 +47,7 @@ DIR/samples.csv, montecarlo.json and report.html (DIR default: output.folder/mon
 --case task=loops,speed=fast runs only the cases with those levels.
 Exit codes: 0 ok, 1 I/O error, 2 bad input, 3 run stopped early (outputs kept),
 4 an --expect expression does not hold, 128 + signal (130 Ctrl-C, 143 SIGTERM): interrupted
-(run, sweep: what was recorded is written).
+(run, sweep: what was recorded is written; montecarlo: the finished cases).
 Scenario keys: scenarios/README.md)";
 
 cxxopts::Options make_options() {

@@ -227,3 +227,21 @@ TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same by
   CHECK(contains(bad.output, "axis pose has no level \"middle\""));
   CHECK_FALSE(fs::exists(dir / "bad"));
 }
+
+TEST_CASE("cli: montecarlo interrupted: the cases done are kept, the interrupted one and the study tables are not written, exit 130") {
+  const fs::path dir = elbowsim::testing::scratch("cli", "montecarlo_interrupt");
+  const fs::path file = dir / "study.yaml";
+  // Long cases (200 s each) so that the signal comes during the first one.
+  std::ofstream(file) << kStudy;
+  const fs::path out = dir / "out";
+  const auto r = elbowsim::testing::shell(
+      "(" + std::string(ELBOWSIM_BINARY) + " montecarlo " + file.string() + " --samples 4 --jobs 2 --out " +
+      out.string() + " --set simulation.duration=200 & pid=$!; sleep 1; kill -INT $pid; wait $pid; echo \"exit=$?\")");
+  INFO(r.output);
+  CHECK(contains(r.output, "exit=130"));
+  CHECK(contains(r.output, "interrupted: 0 of 4 cases complete"));
+  CHECK_FALSE(fs::exists(out / "study.json"));
+  CHECK_FALSE(fs::exists(out / "low-short" / "montecarlo.json"));
+  for (const auto& entry : fs::recursive_directory_iterator(out))
+    CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
+}

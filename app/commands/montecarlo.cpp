@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "app/commands/commands.hpp"
+#include "app/commands/interrupt.hpp"
 #include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
 #include "app/output/folder_lock.hpp"
@@ -76,7 +77,7 @@ Sample run_one(const Scenario& scenario, const std::shared_ptr<const Model>& bel
   Experiment x = scenario.experiment;
   x.controller_model = believed;
   try {
-    const RunResult r = simulate(scenario.model, x, RunOptions{scenario.output.every, {}});
+    const RunResult r = simulate(scenario.model, x, RunOptions{scenario.output.every, {}, &interrupt_flag()});
     s.valid = r.valid;
     s.failure = r.failure;
     for (const auto& [name, unit] : kMetrics)
@@ -142,6 +143,7 @@ CaseRuns run_case_runs(const MonteCarloArguments& args, const CasePlan& plan,
   std::atomic<std::size_t> done{0};
   const std::string label = plan.study_case.name.empty() ? "" : " " + plan.study_case.name;
   parallel_for(total, args.jobs, [&](std::size_t k) {
+    if (interrupt_flag().load(std::memory_order_relaxed)) return;  // start nothing more
     if (k < nv) {
       out.half[k] = run_one(halved[k], halved_believed[k]);
     } else if (k < floor_runs) {
@@ -272,6 +274,9 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
               const std::vector<study::Draw>& draws, std::uint64_t seed) {
   const std::vector<Variant>& variants = plan.variants;
   const CaseRuns runs = run_case_runs(args, plan, draws);
+  // Interrupted: some runs stopped early; statistics of them would be wrong,
+  // so this case writes nothing (the cases done before it are kept).
+  if (interrupt_exit_code()) return Json();
   const Json floors = accuracy_floors(variants, runs);
   const auto& samples = runs.draws;
 
@@ -378,9 +383,17 @@ int montecarlo_command(const MonteCarloArguments& args) {
   std::vector<Json> docs;
   try {
     const FolderLock lock(folder);  // one study at a time in a folder
+    install_interrupt_handlers();
     for (std::size_t k = 0; k < plans.size(); ++k) {
       const auto started = std::chrono::steady_clock::now();
-      docs.push_back(run_case(args, base, plans[k], draws, seed));
+      Json doc = run_case(args, base, plans[k], draws, seed);
+      if (interrupt_exit_code()) {
+        std::cerr << "interrupted: " << k << " of " << plans.size() << " cases complete in "
+                  << folder.string() << "; case " << (plans[k].study_case.name.empty() ? "(the study)" : plans[k].study_case.name)
+                  << " and the rest not written, nor the study's tables\n";
+        return interrupt_exit_code();
+      }
+      docs.push_back(std::move(doc));
       const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
       const std::string& name = plans[k].study_case.name;
       std::cout << base.model.name << (name.empty() ? "" : " " + name) << ": " << args.samples
