@@ -103,7 +103,7 @@ robot:
   planar:
     links: [{length: 0.3, mass: 1}]
 )"),
-              "x.yaml:1:1:", "simulation", "required key is missing");
+              "x.yaml:1:1:", "simulation", "is required without a task");
   CHECK_ERROR(yaml(R"(
 name: two_link
 robot:

@@ -354,3 +354,17 @@ table: {boxes: [{center: [0.4, 0, -0.04], size: [1.0, 0.6, 0.1]}]}
 )"),
               "x.yaml:", "elbows[0]", "inside table box 0 at the initial pose");
 }
+
+TEST_CASE("simulation: optional with a task (its timing gives the duration; 1 ms, rk4, crba)") {
+  const Scenario s = load_scenario_text(yaml(R"(
+name: two_link
+robot:
+  planar:
+    links: [{length: 0.3, mass: 1}, {length: 0.2, mass: 0.5}]
+task: {path: hold, start_delay: 0.2, duration: 0.5}
+controller: {type: pd}
+)"), "x.yaml");
+  CHECK(s.model.options.duration == doctest::Approx(0.2 + 0.5 + 0.5));
+  CHECK(s.model.options.step == 1e-3);
+  CHECK(s.model.options.integrator == elbowsim::IntegratorKind::rk4);
+}

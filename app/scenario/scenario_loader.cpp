@@ -108,7 +108,7 @@ Scenario read(const Value& root, const Source& source, OverrideSets& sets,
       root.get("effects").present() ? root.get("effects").get("joint_friction") : root.get("effects"),
       model.dof);
   check_contact_scene(root, model);
-  model.options = read_simulation(root.require("simulation"), root.get("task"));
+  model.options = read_simulation(root.get("simulation"), root.get("task"));
   model.initial = read_initial(root.get("initial"), model.dof);
   model.inputs = read_inputs(root.get("inputs"), model);
   s.experiment.task = read_task(root.get("task"), model);

@@ -68,7 +68,7 @@ ValidityOptions read_validity(const Value& validity) {
 // Without simulation.duration a scene with a task runs to the task's end
 // plus 0.5 s to settle, so sweeps over task.duration compare like with like.
 double default_duration(const Value& simulation, const Value& task) {
-  if (simulation.get("duration").present() || !task.present())
+  if (!task.present() || (simulation.present() && simulation.get("duration").present()))
     return positive(simulation.require("duration"));
   const double delay = value_or(task.get("start_delay"), 0.0, number);
   const double length = value_or(task.get("duration"), HandTask{}.duration, number);
@@ -76,9 +76,13 @@ double default_duration(const Value& simulation, const Value& task) {
 }
 
 Options read_simulation(const Value& simulation, const Value& task) {
-  simulation.allow_keys({"duration", "step", "integrator", "dynamics"});
+  // Optional with a task (its timing gives the duration); required otherwise.
+  if (!simulation.present() && !task.present())
+    simulation.fail("is required without a task (give simulation: {duration: ...})");
   Options out;
   out.duration = default_duration(simulation, task);
+  if (!simulation.present()) return out;  // the defaults: 1 ms, rk4, crba
+  simulation.allow_keys({"duration", "step", "integrator", "dynamics"});
   Value step = simulation.get("step");
   out.step = value_or(step, 1e-3, positive);
   if (out.step > out.duration) {
