@@ -40,14 +40,6 @@ void rank_revealing_solve(const Model& model, Data& data) {
   min_norm_solve(ws, c.rhs, c.fn);
 }
 
-// Joint friction: whether a joint is stuck (its qdd is then 0).
-bool any_stuck(const Model& model, const Data& data) {
-  if (!model.effects.joint_friction) return false;
-  for (signed char mode : data.joint_mode)
-    if (mode == 0) return true;
-  return false;
-}
-
 // Zeroes the stuck joints' rows of an n-row matrix or vector.
 template <class Rows>
 void zero_stuck_rows(const Data& data, Rows&& x) {
@@ -63,7 +55,7 @@ void zero_stuck_rows(const Data& data, Rows&& x) {
 // system's f and qdd with qdd_j = 0 exactly (L keeps them uncoupled).
 void schur(const Model& model, Data& data, ConstVec tau) {
   ContactData& c = data.contact;
-  const bool locked = any_stuck(model, data);
+  const bool locked = any_joint_stuck(model, data);
   if (locked) lock_stuck_joints(data);
   data.llt.compute(locked ? data.joint_mass : data.mass_matrix);
   const auto L = data.llt.matrixL();
@@ -118,7 +110,7 @@ void explicit_inverse(Data& data, ConstVec tau) {
 }  // namespace
 
 void solve_constrained(const Model& model, Data& data, ConstVec tau, ConstraintSolver method) {
-  if (any_stuck(model, data)) method = ConstraintSolver::schur;  // the one that locks joints
+  if (any_joint_stuck(model, data)) method = ConstraintSolver::schur;  // the one that locks joints
   switch (method) {
     case ConstraintSolver::schur: schur(model, data, tau); return;
     case ConstraintSolver::dense_lu: dense_lu(data, tau); return;

@@ -135,8 +135,31 @@ void feed_forward(const Model& model, const ControllerSpec& controller, Data& da
   }
 }
 
-Eigen::VectorXd initial_pose(const Model& model) {
-  return model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
+// Where the task starts on `model`: the initial pose, the hand there (the
+// task's `start`) and the IK problem of the task's constraints. Leaves the
+// initial pose's kinematics in data.
+struct TaskStart {
+  Eigen::VectorXd q;
+  Eigen::Vector3d hand;
+  IkProblem base;
+};
+
+TaskStart task_start(const Model& model, const Experiment& experiment, Data& data) {
+  TaskStart start;
+  start.q = model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
+  forward_kinematics(model, data, start.q);
+  start.hand = point_position(data, model.hand_link, model.hand_point);
+  start.base = ik_problem(model, experiment.task, data, start.q);
+  return start;
+}
+
+// The IK problem at time t: the hand's target then, the elbows pinned.
+IkProblem problem_at(const Experiment& experiment, const TaskStart& start,
+                     const std::vector<Eigen::Vector3d>& pins, double t) {
+  IkProblem problem = start.base;
+  problem.hand = hand_target(experiment.task, start.hand, t).p;
+  problem.pins = pins;
+  return problem;
 }
 
 }  // namespace
@@ -144,13 +167,11 @@ Eigen::VectorXd initial_pose(const Model& model) {
 std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& experiment) {
   auto plan = std::make_shared<Plan>();
   Data data(model);
-  const Eigen::VectorXd q_start = initial_pose(model);
-  forward_kinematics(model, data, q_start);
-  const Eigen::Vector3d hand_start = point_position(data, model.hand_link, model.hand_point);
-  const IkProblem base = ik_problem(model, experiment.task, data, q_start);
+  const TaskStart start = task_start(model, experiment, data);
+  const IkProblem& base = start.base;
   plan->dt = model.options.step;
   const long N = std::lround(model.options.duration / plan->dt) + 1;
-  Eigen::VectorXd q = q_start;
+  Eigen::VectorXd q = start.q;
   // With Coulomb friction a resting elbow sticks: it stays where it lands at
   // the start instead of sliding along its plane (the feed-forward asks no
   // friction force of it, so the plan keeps inside any cone).
@@ -158,9 +179,7 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
   std::vector<Eigen::Vector3d> pins;
   for (long k = 0; k < N; ++k) {
     const double t = double(k) * plan->dt;
-    IkProblem problem = base;
-    problem.hand = hand_target(experiment.task, hand_start, t).p;
-    problem.pins = pins;
+    const IkProblem problem = problem_at(experiment, start, pins, t);
     const IkResult r = solve_ik(model, data, problem, q);
     check(r, t, problem.hand);
     forward_kinematics(model, data, r.q);
@@ -179,12 +198,9 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
 
 Eigen::VectorXd start_pose(const Model& model, const Experiment& experiment) {
   Data data(model);
-  const Eigen::VectorXd q_start = initial_pose(model);
-  forward_kinematics(model, data, q_start);
-  const Eigen::Vector3d hand_start = point_position(data, model.hand_link, model.hand_point);
-  IkProblem problem = ik_problem(model, experiment.task, data, q_start);
-  problem.hand = hand_target(experiment.task, hand_start, 0.0).p;
-  const IkResult r = solve_ik(model, data, problem, q_start);
+  const TaskStart start = task_start(model, experiment, data);
+  const IkProblem problem = problem_at(experiment, start, {}, 0.0);
+  const IkResult r = solve_ik(model, data, problem, start.q);  // make_plan's first sample
   check(r, 0.0, problem.hand);
   return r.q;
 }

@@ -13,6 +13,13 @@ double sliding_friction(const JointFriction& f, double speed) {
   return f.coulomb + (f.breakaway - f.coulomb) * std::exp(-w * w);
 }
 
+bool any_joint_stuck(const Model& model, const Data& data) {
+  if (!model.effects.joint_friction) return false;
+  for (signed char mode : data.joint_mode)
+    if (mode == 0) return true;
+  return false;
+}
+
 void lock_stuck_joints(Data& data) {
   data.joint_mass = data.mass_matrix;
   for (Eigen::Index j = 0; j < data.joint_mass.rows(); ++j) {
@@ -33,9 +40,7 @@ void sliding_friction_torques(const Model& model, Data& data, ConstVec qd) {
 }
 
 void joint_friction_dynamics(const Model& model, Data& data, ConstVec qd) {
-  bool stuck = false;
-  for (signed char mode : data.joint_mode) stuck = stuck || mode == 0;
-  if (!stuck) {
+  if (!any_joint_stuck(model, data)) {
     forward_dynamics(model, data, qd, data.tau_applied, data.qdd);
     return;
   }

@@ -13,6 +13,10 @@ namespace elbowsim {
 // [N m] >= 0: the friction torque of a joint sliding at |speed| (the Stribeck curve).
 double sliding_friction(const JointFriction& f, double speed);
 
+// Whether joint friction holds any joint stuck (data.joint_mode 0). Without
+// effects.joint_friction never (joint_mode is then all 0 but means nothing).
+bool any_joint_stuck(const Model& model, const Data& data);
+
 // data.joint_mass = data.mass_matrix with the rows and columns of the joints
 // stuck in data.joint_mode replaced by the identity's: factored, it gives
 // qdd_S = 0 and the free joints' accelerations of the locked arm.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "engine/dynamics/joint_friction.hpp"
 #include "engine/run/derivative.hpp"
 #include "engine/run/event_location.hpp"
 #include "engine/run/state_layout.hpp"
@@ -47,9 +48,7 @@ void decide_joint_modes(const Model& model, Data& data) {
   }
   // Release the stuck joint that most exceeds its breakaway, until all hold
   // (each pass frees one joint: at most n passes). All sliding: nothing to check.
-  bool any_stuck = false;
-  for (signed char mode : data.joint_mode) any_stuck = any_stuck || mode == 0;
-  if (!any_stuck) return;
+  if (!any_joint_stuck(model, data)) return;
   for (int pass = 0; pass < model.dof; ++pass) {
     nonstiff_rates(model, data, data.t, data.x, data.k1);
     int worst = -1;
