@@ -61,6 +61,10 @@ Data::Data(const Model& model) : llt(model.dof), contact(make_contact_data(model
   state_size = m;
   x = x_start = k1 = k2 = k3 = k4 = x_a = x_b = x_c = Eigen::VectorXd::Zero(m);
   lambda = Eigen::ArrayXd::Zero(m);
+  adaptive.k5 = adaptive.k6 = adaptive.k7 = adaptive.f0 = adaptive.dfdt = adaptive.error = adaptive.x_saved = x;
+  adaptive.dense = Eigen::MatrixXd::Zero(m, 5);
+  adaptive.jacobian = adaptive.w = Eigen::MatrixXd::Zero(m, m);
+  adaptive.lu = Eigen::PartialPivLU<Eigen::MatrixXd>(m);
   for (EtdCoefficients* c : {&etd_full, &etd_short})
     c->exp_h = c->exp_half = c->phi1_half = c->phi1_h = c->f1 = c->f2 = c->f3 = lambda;
 }

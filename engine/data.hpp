@@ -103,6 +103,24 @@ struct Data {
     double h = 0;
     Eigen::ArrayXd exp_h, exp_half, phi1_half, phi1_h, f1, f2, f3;
   } etd_full, etd_short;
+  // Adaptive integrators (run/adaptive.hpp): the step the error control
+  // proposes next, and what the last accepted step leaves for dense output.
+  struct AdaptiveState {
+    double h_next = 0;          // [s] proposed next step; 0: none yet (the first step tries options.step)
+    double h_last = 0;          // [s] the last accepted step (before an event shortened it)
+    double error_last = 1e-4;   // its error norm, for the PI control (1e-4: Hairer's start)
+    Eigen::VectorXd k5, k6, k7, f0, dfdt, error, x_saved;
+    Eigen::MatrixXd dense;      // [size x 5] dopri5's continuous extension of the last step
+    Eigen::MatrixXd jacobian;   // [size x size] df/dx at the last step's start (ros34pw2)
+    Eigen::MatrixXd w;          // I - h gamma J (ros34pw2)
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu;  // of w
+  } adaptive;
+  // What the integration cost: every derivative evaluation (recording and
+  // event location included), and the adaptive integrators' rejected steps,
+  // Jacobians and factorisations.
+  struct IntegratorWork {
+    long evaluations = 0, rejected = 0, jacobians = 0, factorisations = 0;
+  } work;
 
   ContactData contact;
 

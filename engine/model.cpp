@@ -22,8 +22,14 @@ const char* to_string(IntegratorKind k) {
     case IntegratorKind::euler: return "euler";
     case IntegratorKind::semi_implicit_euler: return "semi_implicit_euler";
     case IntegratorKind::rk4: return "rk4";
+    case IntegratorKind::dopri5: return "dopri5";
+    case IntegratorKind::ros34pw2: return "ros34pw2";
   }
   return "?";
+}
+
+bool is_adaptive(IntegratorKind k) {
+  return k == IntegratorKind::dopri5 || k == IntegratorKind::ros34pw2;
 }
 
 const char* to_string(DynamicsMethod d) {

@@ -14,7 +14,11 @@
 namespace elbowsim {
 
 enum class MotorModel { none, quasi_static, full };
-enum class IntegratorKind { euler, semi_implicit_euler, rk4 };
+// Fixed step: euler, semi_implicit_euler, rk4 (exponential in the currents' -R/L).
+// Adaptive, with error control and dense output: dopri5 (explicit, order 5(4)),
+// ros34pw2 (linearly implicit Rosenbrock-W, order 3(2), for stiff electrics).
+enum class IntegratorKind { euler, semi_implicit_euler, rk4, dopri5, ros34pw2 };
+bool is_adaptive(IntegratorKind k);
 enum class DynamicsMethod { walker_orin, crba, aba };
 enum class Stabilization { none, baumgarte, projection };
 enum class EventTiming { step, locate };
@@ -192,9 +196,14 @@ struct HandLoad {
 
 struct Options {
   double duration = 1.0;  // [s]
-  double step = 1e-3;     // [s] fixed integration step
+  double step = 1e-3;     // [s] fixed integration step; adaptive: the first step and the recording interval
   IntegratorKind integrator = IntegratorKind::rk4;
   DynamicsMethod dynamics = DynamicsMethod::crba;
+  // Adaptive integrators: a step is accepted when its error estimate e meets
+  // sqrt(mean((e_k / (atol + rtol max(|x_k|, |x_k+|)))^2)) <= 1 (Hairer's norm).
+  double rtol = 1e-6;
+  double atol = 1e-9;
+  double max_step = 0;  // [s] longest adaptive step; 0: step with contact (landings are checked at step ends), else duration / 10
 };
 
 struct Model {

@@ -57,9 +57,14 @@ Rows run_rows(const RunData& run) {
                                number(model.value("total_mass", 0.0), "kg") + ", hand on link " +
                                std::to_string(model.value("hand_link", 0))});
   for (const auto& row : run.model_rows) rows.push_back(row);
-  rows.push_back({"integrator", settings.value("integrator", "") + ", step " +
-                                    number(settings.value("step", 0.0), "s") + ", duration " +
-                                    number(settings.value("duration", 0.0), "s")});
+  std::string integrator = settings.value("integrator", "");
+  if (settings.contains("rtol"))  // adaptive: its tolerances; step is the recording interval
+    integrator += ", rtol " + number(settings.value("rtol", 0.0), "") + ", atol " +
+                  number(settings.value("atol", 0.0), "") + ", rows every " +
+                  number(settings.value("step", 0.0), "s");
+  else
+    integrator += ", step " + number(settings.value("step", 0.0), "s");
+  rows.push_back({"integrator", integrator + ", duration " + number(settings.value("duration", 0.0), "s")});
   rows.push_back({"dynamics", dynamics_name(settings.value("dynamics", ""))});
   if (s.contains("controller") && s["controller"].is_string()) {
     std::string believes = "knows the plant exactly";

@@ -116,6 +116,27 @@ simulation:
   CHECK(error_of(two_link_with("description:\n")).empty());  // a null optional key: default
 }
 
+TEST_CASE("error: the error-control keys belong to the adaptive integrators") {
+  auto with = [](const char* extra) {
+    return yaml((std::string(R"(
+name: two_link
+robot:
+  planar:
+    links: [{length: 0.3, mass: 1}]
+simulation:
+  duration: 1
+)") + extra).c_str());
+  };
+  CHECK_ERROR(with("  rtol: 1e-6\n"), "x.yaml:7:", "simulation.rtol",
+              "applies to the adaptive integrators only (dopri5, ros34pw2); rk4 takes a fixed");
+  CHECK_ERROR(with("  integrator: euler\n  max_step: 0.01\n"), "x.yaml:8:", "simulation.max_step",
+              "adaptive integrators only");
+  CHECK_ERROR(with("  integrator: dopri5\n  rtol: 1e-16\n"), "x.yaml:8:", "simulation.rtol",
+              "must be >= 1e-14");
+  CHECK_ERROR(with("  integrator: ros34pw2\n  atol: -1\n"), "x.yaml:8:", "simulation.atol", "must be");
+  CHECK(error_of(with("  integrator: dopri5\n  rtol: 1e-8\n  atol: 1e-10\n")).empty());
+}
+
 TEST_CASE("error: non-finite numbers") {
   CHECK_ERROR(two_link_with("gravity: [0, 0, .inf]\n"), "x.yaml:9:17:", "gravity[2]",
               "must be a finite number (got .inf)");

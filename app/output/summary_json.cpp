@@ -52,8 +52,14 @@ nlohmann::ordered_json contact_json(const Model& m, const RunResult& r) {
 }
 
 nlohmann::ordered_json settings_json(const Options& o) {
-  return {{"integrator", to_string(o.integrator)}, {"dynamics", to_string(o.dynamics)},
-          {"step", o.step}, {"duration", o.duration}};
+  nlohmann::ordered_json j = {{"integrator", to_string(o.integrator)}, {"dynamics", to_string(o.dynamics)},
+                              {"step", o.step}, {"duration", o.duration}};
+  if (is_adaptive(o.integrator)) {
+    j["rtol"] = o.rtol;
+    j["atol"] = o.atol;
+    j["max_step"] = o.max_step;  // 0: the default (step with contact, else duration / 10)
+  }
+  return j;
 }
 
 }  // namespace
@@ -89,6 +95,12 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   j["failure"] = result.failure;
   j["interrupted"] = result.interrupted;  // by a signal (exit 128 + signal), not by the physics
   j["steps"] = result.steps;
+  // What the integration cost: derivative evaluations (recording and events
+  // included), rejected adaptive steps, Jacobians and LU factorisations.
+  j["integrator_work"] = {{"evaluations", result.work.evaluations},
+                          {"rejected_steps", result.work.rejected},
+                          {"jacobians", result.work.jacobians},
+                          {"factorisations", result.work.factorisations}};
   j["final_time"] = result.final_time;
   j["wall_seconds"] = result.wall_seconds;
   j["energy_initial"] = energy_json(result.energy_initial);

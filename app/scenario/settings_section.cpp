@@ -21,6 +21,22 @@ Eigen::VectorXd read_angles(const Value& initial, const std::string& key, int do
                   [dof](const Value& v) { return per_joint(v, dof); });
 }
 
+// rtol, atol and max_step steer the adaptive integrators only: with a fixed
+// step they would be silently ignored, so they are refused there.
+void read_error_control(const Value& simulation, Options& out) {
+  for (const char* key : {"rtol", "atol", "max_step"}) {
+    Value v = simulation.get(key);
+    if (v.present() && !is_adaptive(out.integrator))
+      v.fail(std::string("applies to the adaptive integrators only (dopri5, ros34pw2); ") +
+             to_string(out.integrator) + " takes a fixed simulation.step");
+  }
+  out.rtol = value_or(simulation.get("rtol"), out.rtol, positive);
+  out.atol = value_or(simulation.get("atol"), out.atol, positive);
+  out.max_step = value_or(simulation.get("max_step"), out.max_step, positive);
+  if (out.rtol < 1e-14)
+    simulation.get("rtol").fail("must be >= 1e-14 (below it rounding decides every step)");
+}
+
 }  // namespace
 
 Effects read_effects(const Value& effects) {
@@ -82,7 +98,7 @@ Options read_simulation(const Value& simulation, const Value& task) {
   Options out;
   out.duration = default_duration(simulation, task);
   if (!simulation.present()) return out;  // the defaults: 1 ms, rk4, crba
-  simulation.allow_keys({"duration", "step", "integrator", "dynamics"});
+  simulation.allow_keys({"duration", "step", "integrator", "dynamics", "rtol", "atol", "max_step"});
   Value step = simulation.get("step");
   out.step = value_or(step, 1e-3, positive);
   if (out.step > out.duration) {
@@ -94,7 +110,9 @@ Options read_simulation(const Value& simulation, const Value& task) {
   Value integrator = simulation.get("integrator");
   if (integrator.present())
     out.integrator = choose(integrator, {IntegratorKind::euler, IntegratorKind::semi_implicit_euler,
-                                         IntegratorKind::rk4});
+                                         IntegratorKind::rk4, IntegratorKind::dopri5,
+                                         IntegratorKind::ros34pw2});
+  read_error_control(simulation, out);
   Value dynamics = simulation.get("dynamics");
   if (dynamics.present())
     out.dynamics =

@@ -90,6 +90,7 @@ void arm_accelerations(const Model& model, Data& data, ConstVec qd) {
 void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
                     Eigen::Ref<Eigen::VectorXd> N) {
   const StateLayout s(model);
+  ++data.work.evaluations;
   const auto q = x.segment(s.q(), s.n);
   const auto qd = x.segment(s.qd(), s.n);
   forward_kinematics(model, data, q);

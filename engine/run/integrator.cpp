@@ -1,6 +1,7 @@
 #include "engine/run/integrator.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "engine/run/derivative.hpp"
 #include "engine/run/state_layout.hpp"
@@ -81,6 +82,10 @@ void step_with(const Model& model, Data& data, const Coefficients& c) {
     case IntegratorKind::euler: euler_step(model, data, c); break;
     case IntegratorKind::semi_implicit_euler: semi_implicit_euler_step(model, data, c); break;
     case IntegratorKind::rk4: etdrk4_step(model, data, c); break;
+    case IntegratorKind::dopri5:
+    case IntegratorKind::ros34pw2:
+      // They choose their own step lengths (adaptive.hpp); step() calls them.
+      throw std::logic_error("integrate_step: the adaptive integrators step by adaptive_step()");
   }
   ++data.step_count;
   data.t += c.h;

@@ -27,6 +27,7 @@ struct RunResult {
   std::vector<std::string> warnings;
   std::vector<ContactEvent> events;  // landings and releases, in time order
   long steps = 0;
+  Data::IntegratorWork work;    // evaluations, rejected steps, Jacobians, factorisations
   double final_time = 0;        // [s]
   double wall_seconds = 0;      // [s]
   EnergyTerms energy_initial, energy_final;

@@ -6,6 +6,7 @@
 #include "engine/contact/collision.hpp"
 #include "engine/control/plan.hpp"
 #include "engine/dynamics/energy.hpp"
+#include "engine/run/event_location.hpp"
 #include "engine/run/recorder.hpp"
 #include "engine/run/step.hpp"
 #include "engine/run/validity.hpp"
@@ -29,6 +30,30 @@ void record(const Model& model, Data& data, RunResult& result) {
   track_energy(model, data);
 }
 
+// Adaptive steps do not fall on the recording times k * interval: the rows
+// inside the step just taken (from t0) come from the step's dense output
+// (adaptive.hpp); a row at the step's end, and the run's last state, are the
+// state itself.
+void record_rows_in_step(const Model& model, Data& data, RunResult& result, double t0,
+                         double interval, long& next_row) {
+  const double tiny = 1e-9 * model.options.step;
+  const double t_end = data.t;
+  bool end_recorded = false;
+  for (double tr = next_row * interval; tr <= t_end + tiny; tr = ++next_row * interval) {
+    if (tr >= t_end - tiny) {
+      record(model, data, result);
+      end_recorded = true;
+      continue;
+    }
+    data.adaptive.x_saved = data.x;
+    redo_step(model, data, t0, tr - t0);
+    record(model, data, result);
+    data.x = data.adaptive.x_saved;
+    data.t = t_end;
+  }
+  if (!end_recorded && finished(model, data)) record(model, data, result);
+}
+
 void finish(const Model& model, Data& data, RunResult& result) {
   result.completed = finished(model, data);
   // Over the whole run: the energy account closed, the elbows the task rests
@@ -40,6 +65,7 @@ void finish(const Model& model, Data& data, RunResult& result) {
   result.failure = describe(model, data.failure);
   result.interrupted = data.failure.kind == Failure::Kind::interrupted;
   result.steps = data.step_count;
+  result.work = data.work;
   result.final_time = data.t;
   result.energy_initial = data.energy_initial;
   result.energy_final = data.energy;
@@ -76,14 +102,24 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
   const long expected = std::lround(model.options.duration / model.options.step);
   const long progress_every = std::max(1L, expected / 100);
   double window_start = data.t;  // where the current window of kStallSteps steps began
+  const bool adaptive = is_adaptive(model.options.integrator);
+  const double stall_share = adaptive ? 1e-4 : 1e-2;
+  const double interval = every * model.options.step;  // adaptive: between rows [s]
+  long next_row = 1;
+  std::size_t window_events = 0;  // events recorded when the window began
   while (!finished(model, data)) {
     if (options.stop && options.stop->load(std::memory_order_relaxed)) {
       data.failure = Failure{Failure::Kind::interrupted, data.t, data.step_count};
       break;
     }
+    const double t0 = data.t;
     step(model, data);
     if (!data.failure && data.step_count % kStallSteps == 0) {  // a run that no longer moves on
-      if (data.t - window_start < 0.01 * kStallSteps * model.options.step) {
+      // Adaptive steps may be short for accuracy alone: only a window full of
+      // events (a tenth of its steps) is a stall there.
+      const bool zeno = !adaptive || result.events.size() - window_events >= kStallSteps / 10;
+      window_events = result.events.size();
+      if (zeno && data.t - window_start < stall_share * kStallSteps * model.options.step) {
         data.failure = Failure{Failure::Kind::stalled, data.t, data.step_count};
         data.failure.value = data.t - window_start;
         data.failure.limit = kStallSteps;
@@ -92,7 +128,10 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
     }
     collect_log(model, data, result);
     if (data.failure) break;
-    if (data.step_count % every == 0 || finished(model, data)) record(model, data, result);
+    if (adaptive)
+      record_rows_in_step(model, data, result, t0, interval, next_row);
+    else if (data.step_count % every == 0 || finished(model, data))
+      record(model, data, result);
     if (data.failure) break;
     if (options.progress && data.step_count % progress_every == 0)
       options.progress(data.t / model.options.duration);

@@ -12,6 +12,7 @@
 #include "engine/control/digital_loop.hpp"
 #include "engine/control/plan.hpp"
 #include "engine/dynamics/energy.hpp"
+#include "engine/run/adaptive.hpp"
 #include "engine/run/derivative.hpp"
 #include "engine/run/integrator.hpp"
 #include "engine/run/joint_stick_slip.hpp"
@@ -33,6 +34,20 @@ double step_length(const Model& model, const Data& data) {
   double h = left > 1e-3 * model.options.step ? std::min(model.options.step, left) : model.options.step;
   const double to_sample = time_to_sample(data);
   if (to_sample > 1e-9 * model.options.step) h = std::min(h, to_sample);
+  return h;
+}
+
+// The longest step an adaptive integrator may take from here: to the end, to
+// the next sample instant, and options.max_step. Unset, that is simulation.step
+// in a contact scene (contacts are checked at step ends: a longer step can carry
+// a link past a landing, as a longer fixed step would) and a tenth of the run
+// otherwise.
+double adaptive_limit(const Model& model, const Data& data) {
+  const Options& o = model.options;
+  const double longest = o.max_step > 0 ? o.max_step : model.effects.contact ? o.step : 0.1 * o.duration;
+  double h = std::min(o.duration - data.t, longest);
+  const double to_sample = time_to_sample(data);
+  if (to_sample > 1e-9 * o.step) h = std::min(h, to_sample);
   return h;
 }
 
@@ -95,6 +110,9 @@ void reset(const Model& model, Data& data) {
   check_data(model, data);
   prepare_integrator(model, data);
   reset_state(model, data);
+  data.adaptive.h_next = 0;
+  data.adaptive.error_last = 1e-4;
+  data.work = {};
   start_digital_loop(model, data);  // the first sample, before anything reads the voltage
   decide_joint_modes(model, data);
   data.failure = Failure{};
@@ -110,7 +128,9 @@ void reset(const Model& model, Data& data) {
 }
 
 bool finished(const Model& model, const Data& data) {
-  return model.options.duration - data.t <= 1e-3 * model.options.step;
+  // Adaptive steps end on the duration itself (adaptive_limit), so only rounding is left.
+  const double share = is_adaptive(model.options.integrator) ? 1e-9 : 1e-3;
+  return model.options.duration - data.t <= share * model.options.step;
 }
 
 void step(const Model& model, Data& data) {
@@ -120,7 +140,10 @@ void step(const Model& model, Data& data) {
   decide_joint_modes(model, data);
   const double t0 = data.t;
   data.x_start = data.x;
-  integrate_step(model, data, step_length(model, data));
+  if (!is_adaptive(model.options.integrator))
+    integrate_step(model, data, step_length(model, data));
+  else if (!adaptive_step(model, data, adaptive_limit(model, data)))
+    return;
   locate_joint_event(model, data, t0);
   if (model.effects.contact) contact_after_step(model, data, t0);
   check_step(model, data);  // run/validity.hpp: divergence, bounds, penetration

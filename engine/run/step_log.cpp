@@ -142,9 +142,18 @@ std::string describe(const Model& model, const Failure& f) {
       return msg.str();
     case Failure::Kind::stalled:
       msg << "the run stalled at " << at_time(f.t) << ": its last " << f.limit << " steps advanced "
-          << quantity(f.value, "s") << " in all, under 1 % of simulation.step each on average; "
+          << quantity(f.value, "s") << " in all, under "
+          << (is_adaptive(model.options.integrator) ? "0.01" : "1")
+          << " % of simulation.step each on average; "
           << "located events keep cutting the steps (an elbow grazing or chattering on the table?): "
              "try contact.events: step, or a larger contact.locate_tolerance";
+      return msg.str();
+    case Failure::Kind::step_underflow:
+      msg << "the " << to_string(model.options.integrator) << " integrator could not go on at "
+          << at_time(f.t) << ": its error control cut the step to " << quantity(f.value, "s")
+          << " without meeting simulation.rtol " << model.options.rtol << " / atol "
+          << model.options.atol
+          << " (the solution blows up, or the equations jump where no event stops the step)";
       return msg.str();
     case Failure::Kind::interrupted:
       msg << "interrupted at " << at_time(f.t) << " (a signal asked the run to stop): "

@@ -51,6 +51,7 @@ struct Failure {
     too_many_contacts,    // more slots touch at once than contact.max_rows
     interrupted,          // stopped from outside (RunOptions::stop: SIGINT, SIGTERM)
     stalled,              // time no longer advances: kStallSteps steps covered under 1 % of theirs
+    step_underflow,       // an adaptive step fell below rounding of t, or its error stayed non-finite
   };
   enum class Part { none, joint, link, elbow };
   Kind kind = Kind::none;
