@@ -26,6 +26,9 @@ constexpr const char* kUsage = R"(usage:
                                                             compare saved runs in one report
   elbowsim montecarlo SCENARIO [--samples N] [--seed S] [--jobs J] [--out DIR] [--set ...]
                        [--case AXIS=LEVEL,...] [--no-report] draw the uncertain plant N times
+  elbowsim accuracy SCENARIO [--methods M,...] [--points N] [--repeats R] [--variant V]
+                       [--no-alternatives] [--out DIR] [--set ...]
+                                                            work-precision study: error vs CPU time
   elbowsim --help | --version
 
 Outputs of run (in output.folder, or DIR): scenario.yaml (as run), trajectory.csv,
@@ -45,6 +48,10 @@ DIR/samples.csv, montecarlo.json and report.html (DIR default: output.folder/mon
 --jobs defaults to the machine's cores. With a study: section, the same for every case
 (one level of each axis) in DIR/<case>/, plus DIR/study.csv, study.json and report.html;
 --case task=loops,speed=fast runs only the cases with those levels.
+accuracy runs each method (euler, semi_implicit_euler, rk4: steps step/m, m = 1,2,3,4,6,8;
+dopri5, ros34pw2: rtol 1e-3.../1e-2...) against a dopri5 rtol 1e-11 reference and writes
+DIR/work_precision.csv, accuracy.json (with the verdict), report.html and plots/
+(DIR default: output.folder/accuracy).
 Exit codes: 0 ok, 1 I/O error, 2 bad input, 3 run stopped early (outputs kept),
 4 an --expect expression does not hold, 128 + signal (130 Ctrl-C, 143 SIGTERM): interrupted
 (run, sweep: what was recorded is written; montecarlo: the finished cases).
@@ -70,7 +77,12 @@ cxxopts::Options make_options() {
       "samples", "montecarlo: number of draws", cxxopts::value<std::string>())(
       "seed", "montecarlo: seed of the draws", cxxopts::value<std::string>())(
       "jobs", "montecarlo: threads", cxxopts::value<std::string>())(
-      "case", "montecarlo: the study cases to run (axis=level,...)", cxxopts::value<std::string>());
+      "case", "montecarlo: the study cases to run (axis=level,...)", cxxopts::value<std::string>())(
+      "methods", "accuracy: integrators, comma-separated", cxxopts::value<std::string>())(
+      "points", "accuracy: settings per method", cxxopts::value<std::string>())(
+      "repeats", "accuracy: timings per setting", cxxopts::value<std::string>())(
+      "variant", "accuracy: the one variant to study", cxxopts::value<std::string>())(
+      "no-alternatives", "accuracy: skip the dynamics/solver/event-mode timings");
   options.parse_positional({"positional"});
   return options;
 }
@@ -137,6 +149,28 @@ int dispatch(const cxxopts::ParseResult& parsed) {
     args.report = !parsed.count("no-report");
     if (parsed.count("case")) args.cases = parsed["case"].as<std::string>();
     return montecarlo_command(args);
+  }
+  if (command == "accuracy" && words.size() == 2) {
+    AccuracyArguments args;
+    args.scenario = words[1];
+    args.sets = sets;
+    if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
+    if (parsed.count("methods")) args.methods = parsed["methods"].as<std::string>();
+    if (parsed.count("variant")) args.variant = parsed["variant"].as<std::string>();
+    args.alternatives = !parsed.count("no-alternatives");
+    for (auto [key, target] : {std::pair{"points", &args.points}, {"repeats", &args.repeats}}) {
+      if (!parsed.count(key)) continue;
+      const std::string text = parsed[key].as<std::string>();
+      long number = 0;
+      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
+      if (ec != std::errc{} || end != text.data() + text.size() || number < 1 || number > 1000) {
+        std::cerr << "error: accuracy: --" << key << " needs a whole number >= 1 (got \"" << text
+                  << "\")\n";
+        return exit_bad_input;
+      }
+      *target = static_cast<int>(number);
+    }
+    return accuracy_command(args);
   }
   if (command == "report" && words.size() == 2)
     return report_command({words[1], strings(parsed, "expect")});

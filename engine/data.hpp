@@ -135,6 +135,11 @@ struct Data {
   Eigen::VectorXd tau_applied;            // [n] actuation + friction [N m]
   Eigen::MatrixXd joint_mass;             // [n x n] M with the stuck joints locked (scratch)
 
+  // Recorded rows fall at multiples of this [s] (simulate() sets it; 0: none):
+  // fixed steps end on them, so a step grid shifted by a located event
+  // realigns there (run/step.cpp).
+  double record_interval = 0;
+
   EnergyTerms energy;           // at time t
   EnergyTerms energy_initial;   // at t = 0
   long step_count = 0;      // steps taken since reset()

@@ -28,6 +28,15 @@ const char* to_string(IntegratorKind k) {
   return "?";
 }
 
+const char* to_string(ConstraintSolver s) {
+  switch (s) {
+    case ConstraintSolver::schur: return "schur";
+    case ConstraintSolver::dense_lu: return "dense_lu";
+    case ConstraintSolver::explicit_inverse: return "explicit_inverse";
+  }
+  return "?";
+}
+
 bool is_adaptive(IntegratorKind k) {
   return k == IntegratorKind::dopri5 || k == IntegratorKind::ros34pw2;
 }

@@ -22,6 +22,8 @@ bool is_adaptive(IntegratorKind k);
 enum class DynamicsMethod { walker_orin, crba, aba };
 enum class Stabilization { none, baumgarte, projection };
 enum class EventTiming { step, locate };
+// How the constrained step's saddle-point system is solved (contact/constrained_dynamics.hpp).
+enum class ConstraintSolver { schur, dense_lu, explicit_inverse };
 enum class FrictionLaw { coulomb, tanh, saturated };
 
 const char* to_string(MotorModel m);
@@ -29,6 +31,7 @@ const char* to_string(IntegratorKind k);
 const char* to_string(DynamicsMethod d);
 const char* to_string(Stabilization s);
 const char* to_string(EventTiming e);
+const char* to_string(ConstraintSolver s);
 const char* to_string(FrictionLaw law);
 
 // Which physical effects the scene simulates (docs/model.md, Effects). An effect that is
@@ -88,6 +91,7 @@ struct ContactOptions {
   // end of the step (2 mm at 2 m/s and 1 ms: beyond penetration_tolerance).
   EventTiming events = EventTiming::locate;
   double locate_tolerance = 1e-9;      // [s] event-time tolerance (events: locate)
+  ConstraintSolver solver = ConstraintSolver::schur;  // of the constrained step (same answers; cost differs)
   double touch_distance = 1e-6;        // [m] signed distance that counts as touching
   double separation_velocity = 1e-6;   // [m/s] normal speed above which a contact separates
   double baumgarte_time = 0.01;        // [s] Baumgarte time constant T: alpha = 2/T, beta = 1/T^2

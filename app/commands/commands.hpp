@@ -91,6 +91,20 @@ struct MonteCarloArguments {
 };
 int montecarlo_command(const MonteCarloArguments& args);
 
+// elbowsim accuracy SCENARIO [--methods M1,M2] [--points N] [--repeats R] [--variant V]
+//                            [--no-alternatives] [--out DIR] [--set ...]
+struct AccuracyArguments {
+  std::string scenario;
+  std::optional<std::string> out;  // default: output.folder + "/accuracy"
+  std::vector<std::string> sets;
+  std::string methods;   // comma-separated integrators; "": all
+  int points = 6;        // settings per method
+  int repeats = 3;       // timings per setting
+  std::string variant;   // "": every variant
+  bool alternatives = true;
+};
+int accuracy_command(const AccuracyArguments& args);
+
 int report_command(const ReportArguments& args);
 int compare_command(const CompareArguments& args);
 

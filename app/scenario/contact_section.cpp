@@ -155,7 +155,7 @@ ContactOptions read_contact(const Value& contact) {
   contact.allow_keys({"restitution", "friction", "events", "locate_tolerance", "touch_distance",
                       "separation_velocity", "baumgarte_time", "rank_tolerance",
                       "initial_penetration", "penetration_tolerance",
-                      "detection_margin", "max_rows"});
+                      "detection_margin", "max_rows", "solver"});
   auto unit_interval = [](const Value& v) { return in_range(v, 0.0, 1.0, true); };
   auto open_unit_interval = [](const Value& v) { return in_range(v, 0.0, 1.0, false); };
   out.restitution = value_or(contact.get("restitution"), out.restitution, unit_interval);
@@ -163,6 +163,10 @@ ContactOptions read_contact(const Value& contact) {
   Value events = contact.get("events");
   if (events.present()) out.events = choose(events, {EventTiming::step, EventTiming::locate});
   out.locate_tolerance = value_or(contact.get("locate_tolerance"), out.locate_tolerance, positive);
+  Value solver = contact.get("solver");
+  if (solver.present())
+    out.solver = choose(solver, {ConstraintSolver::schur, ConstraintSolver::dense_lu,
+                                 ConstraintSolver::explicit_inverse});
   out.touch_distance = value_or(contact.get("touch_distance"), out.touch_distance, positive);
   out.separation_velocity =
       value_or(contact.get("separation_velocity"), out.separation_velocity, positive);

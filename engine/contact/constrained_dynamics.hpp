@@ -16,8 +16,6 @@
 
 namespace elbowsim {
 
-enum class ConstraintSolver { schur, dense_lu, explicit_inverse };
-
 // Needs data.mass_matrix (= M + Jm) and data.bias (= B_J) at the current
 // state and constraint_rows(). tau [n] are the applied joint torques. Joints
 // stuck by joint friction (data.joint_mode 0) are locked, qdd_j = 0 (always
@@ -25,8 +23,11 @@ enum class ConstraintSolver { schur, dense_lu, explicit_inverse };
 // data.qdd and data.contact.fn; data.contact.dependent tells whether the
 // rows were dependent (rank below p at model.contact.rank_tolerance), in
 // which case f_n is the minimum-norm solution.
-void solve_constrained(const Model& model, Data& data, ConstVec tau,
-                       ConstraintSolver method = ConstraintSolver::schur);
+void solve_constrained(const Model& model, Data& data, ConstVec tau, ConstraintSolver method);
+// With the scene's solver (model.contact.solver).
+inline void solve_constrained(const Model& model, Data& data, ConstVec tau) {
+  solve_constrained(model, data, tau, model.contact.solver);
+}
 
 // The Delassus matrix A = Jc (M + Jm)^-1 Jf^T into data.contact.A and the
 // free constraint acceleration b = Jc qdd_free - gamma into data.contact.lcp_b,

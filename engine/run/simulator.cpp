@@ -30,6 +30,12 @@ void record(const Model& model, Data& data, RunResult& result) {
   track_energy(model, data);
 }
 
+// Whether a fixed step ended on a row time k * data.record_interval.
+bool at_row_time(const Model& model, const Data& data) {
+  const double k = std::round(data.t / data.record_interval);
+  return k > 0 && std::abs(data.t - k * data.record_interval) <= 1e-9 * model.options.step;
+}
+
 // Adaptive steps do not fall on the recording times k * interval: the rows
 // inside the step just taken (from t0) come from the step's dense output
 // (adaptive.hpp); a row at the step's end, and the run's last state, are the
@@ -104,7 +110,8 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
   double window_start = data.t;  // where the current window of kStallSteps steps began
   const bool adaptive = is_adaptive(model.options.integrator);
   const double stall_share = adaptive ? 1e-4 : 1e-2;
-  const double interval = every * model.options.step;  // adaptive: between rows [s]
+  const double interval = every * model.options.step;  // between rows [s]
+  if (!adaptive) data.record_interval = interval;  // fixed steps end on the rows (step.cpp)
   long next_row = 1;
   std::size_t window_events = 0;  // events recorded when the window began
   while (!finished(model, data)) {
@@ -130,7 +137,7 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
     if (data.failure) break;
     if (adaptive)
       record_rows_in_step(model, data, result, t0, interval, next_row);
-    else if (data.step_count % every == 0 || finished(model, data))
+    else if (at_row_time(model, data) || finished(model, data))
       record(model, data, result);
     if (data.failure) break;
     if (options.progress && data.step_count % progress_every == 0)

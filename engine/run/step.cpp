@@ -1,6 +1,8 @@
 #include "engine/run/step.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "engine/contact/active_set.hpp"
 #include "engine/contact/collision.hpp"
@@ -27,13 +29,24 @@ Eigen::VectorXd or_zeros(const Eigen::VectorXd& v, int n) {
   return v.size() == n ? v : Eigen::VectorXd::Zero(n);
 }
 
+// Time to the next recorded row after data.t (infinity without rows).
+double time_to_row(const Model& model, const Data& data) {
+  if (data.record_interval <= 0) return std::numeric_limits<double>::infinity();
+  const double k = std::floor((data.t + 1e-9 * model.options.step) / data.record_interval) + 1;
+  return k * data.record_interval - data.t;
+}
+
 // The length of the coming step: the scene's, or what is left before the end
-// or before the digital loop's next sample instant (the voltage changes there).
+// before the digital loop's next sample instant (the voltage changes there),
+// or before the next recorded row.
 double step_length(const Model& model, const Data& data) {
   const double left = model.options.duration - data.t;
   double h = left > 1e-3 * model.options.step ? std::min(model.options.step, left) : model.options.step;
   const double to_sample = time_to_sample(data);
   if (to_sample > 1e-9 * model.options.step) h = std::min(h, to_sample);
+  const double to_row = time_to_row(model, data);
+  // Only a real cut: t's rounding must not turn a whole step into a 1e-18 shorter one.
+  if (to_row > 1e-9 * model.options.step && to_row < h - 1e-9 * model.options.step) h = to_row;
   return h;
 }
 
