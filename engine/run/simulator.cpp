@@ -30,10 +30,15 @@ void record(const Model& model, Data& data, RunResult& result) {
   track_energy(model, data);
 }
 
-// Whether a fixed step ended on a row time k * data.record_interval.
-bool at_row_time(const Model& model, const Data& data) {
+// Whether a fixed step ended on a row time k * data.record_interval not yet
+// recorded (within row_tolerance: t accumulates rounding; step.cpp cuts steps
+// with the same; a step that reaches a sample instant 1e-13 s later would
+// otherwise record the row twice). Remembers k.
+bool at_new_row(const Model& model, const Data& data, long& last_row) {
   const double k = std::round(data.t / data.record_interval);
-  return k > 0 && std::abs(data.t - k * data.record_interval) <= 1e-9 * model.options.step;
+  if (!(k > last_row && std::abs(data.t - k * data.record_interval) <= row_tolerance(model))) return false;
+  last_row = static_cast<long>(k);
+  return true;
 }
 
 // Adaptive steps do not fall on the recording times k * interval: the rows
@@ -79,6 +84,7 @@ void finish(const Model& model, Data& data, RunResult& result) {
   result.contact = {data.contact.max_abs_C, data.contact.max_abs_Cd, data.contact.dependent_steps};
   result.metrics = compute_metrics(result.trajectory);
   for (std::string& w : motor_rating_warnings(model, result.metrics)) result.warnings.push_back(std::move(w));
+  for (std::string& w : stiffness_warnings(model)) result.warnings.push_back(std::move(w));
 }
 
 }  // namespace
@@ -112,7 +118,8 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
   const double stall_share = adaptive ? 1e-4 : 1e-2;
   const double interval = every * model.options.step;  // between rows [s]
   if (!adaptive) data.record_interval = interval;  // fixed steps end on the rows (step.cpp)
-  long next_row = 1;
+  long next_row = 1;  // adaptive: the next row to fill
+  long last_row = 0;  // fixed steps: the last row recorded
   std::size_t window_events = 0;  // events recorded when the window began
   while (!finished(model, data)) {
     if (options.stop && options.stop->load(std::memory_order_relaxed)) {
@@ -137,7 +144,7 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
     if (data.failure) break;
     if (adaptive)
       record_rows_in_step(model, data, result, t0, interval, next_row);
-    else if (at_row_time(model, data) || finished(model, data))
+    else if (at_new_row(model, data, last_row) || finished(model, data))
       record(model, data, result);
     if (data.failure) break;
     if (options.progress && data.step_count % progress_every == 0)

@@ -32,7 +32,7 @@ Eigen::VectorXd or_zeros(const Eigen::VectorXd& v, int n) {
 // Time to the next recorded row after data.t (infinity without rows).
 double time_to_row(const Model& model, const Data& data) {
   if (data.record_interval <= 0) return std::numeric_limits<double>::infinity();
-  const double k = std::floor((data.t + 1e-9 * model.options.step) / data.record_interval) + 1;
+  const double k = std::floor((data.t + row_tolerance(model)) / data.record_interval) + 1;
   return k * data.record_interval - data.t;
 }
 
@@ -46,7 +46,7 @@ double step_length(const Model& model, const Data& data) {
   if (to_sample > 1e-9 * model.options.step) h = std::min(h, to_sample);
   const double to_row = time_to_row(model, data);
   // Only a real cut: t's rounding must not turn a whole step into a 1e-18 shorter one.
-  if (to_row > 1e-9 * model.options.step && to_row < h - 1e-9 * model.options.step) h = to_row;
+  if (to_row < h - row_tolerance(model)) h = to_row;
   return h;
 }
 
@@ -139,6 +139,8 @@ void reset(const Model& model, Data& data) {
   evaluate_outputs(model, data);
   data.energy_initial = data.energy;
 }
+
+double row_tolerance(const Model& model) { return 1e-6 * model.options.step; }
 
 bool finished(const Model& model, const Data& data) {
   // Adaptive steps end on the duration itself (adaptive_limit), so only rounding is left.

@@ -32,6 +32,10 @@ void step(const Model& model, Data& data);
 // of a step: t accumulates rounding).
 bool finished(const Model& model, const Data& data);
 
+// How close [s] a fixed step's end must come to a row time k x interval to be
+// on it (Data::record_interval): far above t's accumulated rounding, far below a step.
+double row_tolerance(const Model& model);
+
 // Evaluates the stage outputs (qdd, voltage, current, actuation, contact
 // forces, energy) at the state in data.x without advancing it.
 void evaluate_outputs(const Model& model, Data& data);

@@ -246,4 +246,24 @@ std::vector<std::string> motor_rating_warnings(const Model& model, const Metrics
   return out;
 }
 
+std::vector<std::string> stiffness_warnings(const Model& model) {
+  std::vector<std::string> out;
+  if (!model.has_current_state() || is_adaptive(model.options.integrator)) return out;
+  int fastest = 0;
+  for (int j = 1; j < model.dof; ++j)
+    if (model.inductance[j] / model.resistance[j] < model.inductance[fastest] / model.resistance[fastest])
+      fastest = j;
+  const double tau = model.inductance[fastest] / model.resistance[fastest];
+  if (!(tau < 0.1 * model.options.step)) return out;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "motor %d's electrical time constant L/R = %.3g s is under a tenth of the step "
+                "%.3g s: the %s integrator stays stable there but its currents and angles are only "
+                "first-order accurate (engine/MODEL.md, Integration); for accurate currents use "
+                "simulation.integrator: ros34pw2 (or motor: quasi_static)",
+                fastest, tau, model.options.step, to_string(model.options.integrator));
+  out.emplace_back(text);
+  return out;
+}
+
 }  // namespace elbowsim

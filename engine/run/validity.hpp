@@ -56,4 +56,9 @@ double stable_step_estimate(const Model& model, Data& data);
 // design is not (a real motor of that rating would overheat).
 std::vector<std::string> motor_rating_warnings(const Model& model, const Metrics& metrics);
 
+// A fixed-step integrator on motor electrics far faster than its step (L/R
+// under a tenth of it): stable, but first order there (engine/MODEL.md,
+// "Integration"): one warning naming the fastest motor and the fix.
+std::vector<std::string> stiffness_warnings(const Model& model);
+
 }  // namespace elbowsim
