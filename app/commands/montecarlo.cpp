@@ -133,8 +133,8 @@ CaseRuns run_case_runs(const MonteCarloArguments& args, const CasePlan& plan,
   const std::size_t nv = variants.size(), floor_runs = 2 * nv, total = floor_runs + draws.size() * nv;
   std::vector<Scenario> halved;  // loaded here: a ScenarioError leaves before any run
   for (const Variant& v : variants) halved.push_back(at_half_step(v.nominal));
-  // The halved run's controller believes the halved scenario: its plan is
-  // sampled on the half step (the nominal's is sampled on the step).
+  // The halved run's controller believes the halved scenario; its plan stays
+  // sampled on the nominal step (task.plan_step): the floor is integration error.
   std::vector<std::shared_ptr<const Model>> halved_believed;
   for (const Scenario& h : halved)
     halved_believed.push_back(std::make_shared<const Model>(h.experiment.believed(h.model)));

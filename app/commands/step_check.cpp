@@ -8,9 +8,12 @@
 namespace elbowsim {
 
 Scenario at_half_step(const Scenario& scenario) {
-  return load_scenario_text(scenario.resolved_yaml, scenario.file,
-                            {"simulation.step=" + study::exact(scenario.model.options.step / 2),
-                             "output.every=" + std::to_string(2 * scenario.output.every)});
+  std::vector<std::string> overrides{"simulation.step=" + study::exact(scenario.model.options.step / 2),
+                                     "output.every=" + std::to_string(2 * scenario.output.every)};
+  // The plan stays sampled as the scenario's: only the integration changes.
+  if (scenario.experiment.needs_plan() && scenario.experiment.task.plan_step <= 0)
+    overrides.push_back("task.plan_step=" + study::exact(scenario.model.options.step));
+  return load_scenario_text(scenario.resolved_yaml, scenario.file, overrides);
 }
 
 nlohmann::ordered_json check_step(const Scenario& scenario, const RunResult& result) {

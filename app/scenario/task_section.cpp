@@ -143,7 +143,7 @@ HandTask read_task(const Value& task, const Model& model) {
   if (!task.present()) return out;
   task.allow_keys({"path", "timing", "start_delay", "duration", "points", "center", "radius",
                    "normal", "start_angle", "origin", "elbows", "elbow_clearance",
-                   "posture", "posture_weight", "joint_limits"});
+                   "posture", "posture_weight", "joint_limits", "plan_step"});
   out.path = choose(task.require("path"),
                     std::vector<std::pair<Path, std::string_view>>{{Path::hold, "hold"},
                                                                    {Path::line, "line"},
@@ -169,6 +169,7 @@ HandTask read_task(const Value& task, const Model& model) {
   out.posture = value_or(task.get("posture"), model.initial.q,
                          [dof](const Value& v) { return per_joint(v, dof); });
   out.posture_weight = value_or(task.get("posture_weight"), out.posture_weight, positive);
+  out.plan_step = value_or(task.get("plan_step"), out.plan_step, positive);
   read_joint_limits(task.get("joint_limits"), dof, out);
   return out;
 }

@@ -183,7 +183,11 @@ RunErrors compare_runs(const RunResult& run, const RunResult& reference) {
 
 Json work_precision(const Scenario& scenario, const WorkPrecisionOptions& options) {
   const Model& scene = scenario.model;
-  const Experiment& experiment = scenario.experiment;
+  // Every run follows the same plan, sampled as the scene's: the study changes
+  // the integration only (task.plan_step).
+  Experiment pinned = scenario.experiment;
+  if (pinned.task.plan_step <= 0) pinned.task.plan_step = scene.options.step;
+  const Experiment& experiment = pinned;
   const int every = scenario.output.every;
   auto stopped = [&] { return options.stop && options.stop->load(); };
   auto say = [&](const std::string& line) {

@@ -169,7 +169,7 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
   Data data(model);
   const TaskStart start = task_start(model, experiment, data);
   const IkProblem& base = start.base;
-  plan->dt = model.options.step;
+  plan->dt = experiment.task.plan_step > 0 ? experiment.task.plan_step : model.options.step;
   const long N = std::lround(model.options.duration / plan->dt) + 1;
   Eigen::VectorXd q = start.q;
   // With Coulomb friction a resting elbow sticks: it stays where it lands at

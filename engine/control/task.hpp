@@ -35,6 +35,11 @@ struct HandTask {
   double elbow_clearance = 0.0;  // [m] >= 0
 
   Eigen::VectorXd posture;        // [dof] preferred joints for the redundancy; empty = initial q
+  // [s] spacing of the plan's samples (IK, feed-forward); 0: simulation.step.
+  // Part of the experiment: studies that change the integration step pin it
+  // (elbowsim accuracy, --check-step, the Monte Carlo floor), so that they
+  // measure integration error, not a finer plan.
+  double plan_step = 0.0;
   double posture_weight = 0.1;    // null-space gain per IK iteration: 1 = the solution closest
                                   // to the posture (it can jump branch near full stretch);
                                   // < 1 drifts toward it over samples, continuously

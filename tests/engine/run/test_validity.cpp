@@ -198,3 +198,27 @@ TEST_CASE("motor ratings: a motor above its rated continuous current warns with 
     }
   CHECK(found == 1);
 }
+
+TEST_CASE("stiffness warning: a fixed step far above L/R says so and names the fix; adaptive runs do not") {
+  auto arm = [](IntegratorKind kind, double inductance) {
+    Model m = driven_arm(kind, 1e-3, 0.05, inductance);
+    for (Motor& motor : m.motors) motor.resistance = 1.0;
+    finalize(m);
+    return m;
+  };
+  auto stiffness = [](const Model& m) {
+    for (const std::string& w : stiffness_warnings(m))
+      if (w.find("electrical time constant") != std::string::npos) return w;
+    return std::string();
+  };
+  const std::string w = stiffness(arm(IntegratorKind::rk4, 1e-6));  // L/R = 1 us against 1 ms
+  CHECK(w.find("motor 0's electrical time constant L/R = 1e-06 s") == 0);
+  CHECK(w.find("ros34pw2") != std::string::npos);
+  CHECK(stiffness(arm(IntegratorKind::rk4, 5e-4)).empty());        // 0.5 ms: resolved enough
+  CHECK(stiffness(arm(IntegratorKind::ros34pw2, 1e-6)).empty());   // adaptive: its own error control
+  // And the run carries it.
+  const RunResult r = simulate(arm(IntegratorKind::rk4, 1e-6), {});
+  bool carried = false;
+  for (const std::string& x : r.warnings) carried = carried || x == w;
+  CHECK(carried);
+}
