@@ -260,7 +260,7 @@ void write_accuracy_report(const Json& doc, const std::filesystem::path& folder)
       verdict.push_back((v.value("variant", "").empty() ? "" : v.value("variant", "") + ": ") +
                         row.value("text", ""));
   page += html::notice("verdict", "Cheapest setting per hand-error target (measured)", verdict, "verdict");
-  page += "<p>Each point is one run of the scenario: CPU time of the simulation (median of " +
+  page += "<p>Each point is one run of the scenario: CPU time of the integration (the controller's plan, the same for every run, left out; median of " +
           std::string("the repeats in work_precision.csv) against its error, compared row by row with "
                       "a reference run. Invalid runs (diverged, penetrating, energy account off) "
                       "are drawn when they completed (their error is measured) but never chosen by the verdict; runs that stopped early are left out. Fixed-step methods: "

@@ -6,8 +6,9 @@
 // a second run at 1e-10: their difference is the reference's uncertainty),
 // then every method over a range of settings — fixed steps h = step / m for
 // m = 1, 2, 3, 4, 6, 8, ... (rows stay at the same times), adaptive
-// tolerances rtol = r0 10^-k — each timed (CPU time of the simulation, median
-// of repeats) and compared with the reference at every recorded row. At the
+// tolerances rtol = r0 10^-k — each timed (CPU time of the simulation without
+// the controller's plan, which every run shares: median of repeats) and
+// compared with the reference at every recorded row. At the
 // scene's own setting the alternatives of equal accuracy are timed too:
 // dynamics methods, constrained solvers, event handling.
 #pragma once

@@ -30,6 +30,7 @@ struct RunResult {
   Data::IntegratorWork work;    // evaluations, rejected steps, Jacobians, factorisations
   double final_time = 0;        // [s]
   double wall_seconds = 0;      // [s]
+  double plan_cpu_seconds = 0;  // [s] CPU time of the controller's plan (inverse kinematics), before the run
   EnergyTerms energy_initial, energy_final;
   double balance_residual = 0;      // [J] at the end
   double max_abs_balance_residual = 0;  // [J] over recorded samples

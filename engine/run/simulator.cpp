@@ -1,5 +1,7 @@
 #include "engine/run/simulator.hpp"
 
+#include <time.h>
+
 #include <chrono>
 #include <cmath>
 
@@ -14,6 +16,12 @@
 namespace elbowsim {
 
 namespace {
+
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 // Moves what the last step reported into the result.
 void collect_log(const Model& model, const Data& data, RunResult& result) {
@@ -105,7 +113,9 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
   result.trajectory = Recording(trajectory_layout(model, experiment.needs_plan()));
   Data data(model);
   // The plan comes from what the controller believes; the plant is `model`.
+  const double plan_start = thread_cpu_seconds();
   data.controller = make_controller(model, experiment);  // may throw PlanError
+  result.plan_cpu_seconds = thread_cpu_seconds() - plan_start;
   reset(model, data);
   collect_log(model, data, result);
   record_sample(model, data, result.trajectory);
