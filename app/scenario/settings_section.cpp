@@ -28,7 +28,8 @@ void read_error_control(const Value& simulation, Options& out) {
     Value v = simulation.get(key);
     if (v.present() && !is_adaptive(out.integrator))
       v.fail(std::string("applies to the adaptive integrators only (dopri5, ros34pw2); ") +
-             to_string(out.integrator) + " takes a fixed simulation.step");
+             to_string(out.integrator) + " takes a fixed simulation.step (to drop the key: --set simulation." +
+             key + "=null)");
   }
   out.rtol = value_or(simulation.get("rtol"), out.rtol, positive);
   out.atol = value_or(simulation.get("atol"), out.atol, positive);

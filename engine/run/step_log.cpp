@@ -1,5 +1,7 @@
 #include "engine/run/step_log.hpp"
 
+#include "engine/run/validity.hpp"
+
 #include <sstream>
 
 #include "engine/model.hpp"
@@ -61,6 +63,15 @@ std::string part_name(const Model& model, const Failure& f) {
 std::string step_advice(const Model& model, const Failure& f) {
   std::ostringstream s;
   const double h = model.options.step;
+  // Motor electrics far faster than a fixed step (validity.hpp,
+  // stiffness_warnings): a smaller step is the expensive fix, the implicit
+  // integrator the cheap one.
+  if (!stiffness_warnings(model).empty()) {
+    s << "; a motor's L/R is under a tenth of the step: use simulation.integrator: ros34pw2 "
+         "(implicit in the motor electrics; or a smaller simulation.step, now "
+      << h << " s)";
+    return s.str();
+  }
   if (f.stable_step > 0 && h > 0.8 * f.stable_step)
     s << "; the step " << h << " s is too large for the arm's fastest rate with the "
       << to_string(model.options.integrator) << " integrator (stable up to about "
