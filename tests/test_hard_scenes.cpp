@@ -65,3 +65,46 @@ TEST_CASE("hard: stiff electrics with the fixed-step rk4: stopped early, and the
   for (const std::string& w : r.warnings) warned = warned || w.find("L/R = 1e-06 s") != std::string::npos;
   CHECK(warned);
 }
+
+TEST_CASE("hard: a 6 m/s landing against its closed forms (time, speed, impulse, energy lost)") {
+  const RunResult r = run(load_scenario(kHard + "fast_landing.yaml"));
+  INFO(r.failure);
+  REQUIRE(r.valid);
+  // The scene (scenarios/hard/fast_landing.yaml): one link, m = 1 kg, l = 0.4 m,
+  // pivot inertia I = m l^2 / 3; elbow at a = 0.3 m; released at q0 = 0.2 rad
+  // with w0 = -20 rad/s; lands at q1 = 0; restitution e = 0.5.
+  const double m = 1.0, l = 0.4, g = 9.81, a = 0.3, q0 = 0.2, w0 = -20.0, e = 0.5;
+  const double I = m * l * l / 3.0;
+  // Energy: I w^2 / 2 - m g (l/2) sin q is conserved before the impact.
+  auto speed_at = [&](double q) { return std::sqrt(w0 * w0 + 2 * m * g * (l / 2) * (std::sin(q0) - std::sin(q)) / I); };
+  const double w1 = speed_at(0.0);
+  // Landing time: t = integral from 0 to q0 of dq / |w(q)| (Simpson, 2e4 cells).
+  const int cells = 20000;
+  double t1 = 0;
+  for (int k = 0; k <= cells; ++k) {
+    const double q = q0 * k / cells;
+    const double weight = (k == 0 || k == cells) ? 1 : (k % 2 ? 4 : 2);
+    t1 += weight / speed_at(q);
+  }
+  t1 *= q0 / cells / 3.0;
+  const double impulse = I * (1 + e) * w1 / a, lost = 0.5 * I * w1 * w1 * (1 - e * e);
+  REQUIRE_FALSE(r.events.empty());
+  const ContactEvent& landing = r.events.front();
+  REQUIRE(landing.kind == ContactEvent::Kind::landing);
+  MESSAGE("landing at ", landing.t, " s (closed form ", t1, "), speed ", landing.speed, " m/s (", a * w1,
+          "), impulse ", landing.impulse, " N s (", impulse, "), lost ", landing.energy_lost, " J (", lost, ")");
+  // RK4 at 1 ms over 10 ms of a smooth swing (errors ~1e-12) and events located
+  // to 1e-12 s: 1e-9 relative leaves room for rounding and the quadrature.
+  CHECK(landing.t == doctest::Approx(t1).epsilon(1e-9));
+  CHECK(landing.speed == doctest::Approx(a * w1).epsilon(1e-9));
+  CHECK(landing.impulse == doctest::Approx(impulse).epsilon(1e-9));
+  CHECK(landing.energy_lost == doctest::Approx(lost).epsilon(1e-9));
+  // After it: the ball leaves (no penetration left) and the swing keeps the
+  // energy the impact left (frictionless, undamped).
+  const int gap = r.trajectory.column("d_elbow");
+  for (std::size_t row = 0; row < r.trajectory.rows(); ++row) CHECK(r.trajectory.at(row, gap) > -1e-9);
+  const double e_start = r.trajectory.at(0, r.trajectory.column("KE_links")) + r.trajectory.at(0, r.trajectory.column("PE"));
+  const double e_end = last(r, "KE_links") + last(r, "PE");
+  CHECK(e_end == doctest::Approx(e_start - lost).epsilon(1e-9));
+  CHECK(last(r, "qd0") > 0);  // bounced up
+}
