@@ -248,7 +248,9 @@ std::vector<std::string> motor_rating_warnings(const Model& model, const Metrics
 
 std::vector<std::string> stiffness_warnings(const Model& model) {
   std::vector<std::string> out;
-  if (!model.has_current_state() || is_adaptive(model.options.integrator)) return out;
+  if (!model.has_current_state() || is_adaptive(model.options.integrator) || model.dof == 0 ||
+      model.inductance.size() != model.dof || model.resistance.size() != model.dof)
+    return out;  // (an unfinalized model has no motor constants yet)
   int fastest = 0;
   for (int j = 1; j < model.dof; ++j)
     if (model.inductance[j] / model.resistance[j] < model.inductance[fastest] / model.resistance[fastest])
