@@ -1,7 +1,5 @@
 #include "app/study/work_precision.hpp"
 
-#include <time.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <cmath>
@@ -24,12 +22,6 @@ std::string g(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", x);
   return text;
-}
-
-double thread_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 // A JSON number, or null for NaN and infinity (JSON has neither).
@@ -146,8 +138,9 @@ RunErrors compare_runs(const RunResult& run, const RunResult& reference) {
   RunErrors e;
   const std::size_t rows = std::min(a.rows(), b.rows());
   e.rows = static_cast<long>(rows);
-  int dof = 0;
-  while (a.column("q" + std::to_string(dof)) >= 0) ++dof;
+  std::vector<std::pair<int, int>> angles;  // (run, reference) column of each joint angle
+  for (int j = 0; a.column("q" + std::to_string(j)) >= 0; ++j)
+    angles.push_back({a.column("q" + std::to_string(j)), b.column("q" + std::to_string(j))});
   std::vector<std::pair<int, int>> forces;
   for (std::size_t c = 0; c < a.columns().size(); ++c) {
     const std::string& name = a.columns()[c].name;
@@ -168,10 +161,7 @@ RunErrors compare_runs(const RunResult& run, const RunResult& reference) {
                                   " s vs " + std::to_string(b.at(row, 0)) + " s (row " +
                                   std::to_string(row) + ")");
     double angle = 0;
-    for (int j = 0; j < dof; ++j) {
-      const std::string q = "q" + std::to_string(j);
-      angle = std::max(angle, std::abs(a.at(row, a.column(q)) - b.at(row, b.column(q))));
-    }
+    for (const auto& [ca, cb] : angles) angle = std::max(angle, std::abs(a.at(row, ca) - b.at(row, cb)));
     e.angle_max = std::max(e.angle_max, angle);
     e.angle_final = angle;  // the last row compared
     double hand = 0;

@@ -15,13 +15,13 @@
 
 namespace elbowsim {
 
-namespace {
-
 double thread_cpu_seconds() {
   timespec t{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
+
+namespace {
 
 // Moves what the last step reported into the result.
 void collect_log(const Model& model, const Data& data, RunResult& result) {

@@ -24,6 +24,9 @@ struct RunOptions {
 // failure says when and why, and what was recorded so far is kept. A hand
 // task that cannot be followed throws PlanError before anything runs.
 RunResult simulate(const Model& model, const Experiment& experiment, const RunOptions& options);
+
+// CPU time [s] of the calling thread (RunResult::plan_cpu_seconds, timed studies).
+double thread_cpu_seconds();
 // An open-loop run: the model's input profiles, no task.
 RunResult simulate(const Model& model, const RunOptions& options);
 
