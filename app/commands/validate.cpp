@@ -3,6 +3,7 @@
 #include "app/commands/commands.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/cases.hpp"
+#include "engine/run/validity.hpp"
 
 namespace elbowsim {
 
@@ -30,6 +31,7 @@ void print_model(const Scenario& s) {
   std::cout << "simulation " << m.options.duration << " s, step " << m.options.step << " s, "
             << to_string(m.options.integrator) << ", " << to_string(m.options.dynamics) << '\n'
             << "output     " << s.output.folder << '\n';
+  for (const std::string& w : model_warnings(m)) std::cout << "note       " << w << '\n';
 }
 
 }  // namespace

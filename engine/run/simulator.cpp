@@ -92,7 +92,7 @@ void finish(const Model& model, Data& data, RunResult& result) {
   result.contact = {data.contact.max_abs_C, data.contact.max_abs_Cd, data.contact.dependent_steps};
   result.metrics = compute_metrics(result.trajectory);
   for (std::string& w : motor_rating_warnings(model, result.metrics)) result.warnings.push_back(std::move(w));
-  for (std::string& w : stiffness_warnings(model)) result.warnings.push_back(std::move(w));
+  for (std::string& w : model_warnings(model)) result.warnings.push_back(std::move(w));
 }
 
 }  // namespace

@@ -268,4 +268,27 @@ std::vector<std::string> stiffness_warnings(const Model& model) {
   return out;
 }
 
+std::vector<std::string> first_link_elbow_warnings(const Model& model) {
+  std::vector<std::string> out;
+  if (!model.effects.contact) return out;
+  for (const Elbow& e : model.elbows) {
+    if (e.link != 0) continue;
+    std::string text = "elbow '" + e.name +
+                       "' is on link 0, whose points move with joint 0 alone: while it rests on the "
+                       "table joint 0 is held still (the arm moves with joints 1 and up)";
+    if (model.effects.friction)
+      text += "; its normal and friction rows of M* are then dependent (rank 1), so only the "
+              "force's moment about joint 0 is determined and the minimum-norm split between "
+              "normal and friction force is used";
+    out.push_back(std::move(text));
+  }
+  return out;
+}
+
+std::vector<std::string> model_warnings(const Model& model) {
+  std::vector<std::string> out = stiffness_warnings(model);
+  for (std::string& w : first_link_elbow_warnings(model)) out.push_back(std::move(w));
+  return out;
+}
+
 }  // namespace elbowsim

@@ -61,4 +61,15 @@ std::vector<std::string> motor_rating_warnings(const Model& model, const Metrics
 // "Integration"): one warning naming the fastest motor and the fix.
 std::vector<std::string> stiffness_warnings(const Model& model);
 
+// An elbow on link 0: its point moves with joint 0 alone (the base is fixed),
+// so while it rests or sticks the table holds joint 0 still, and with friction
+// its normal and friction rows are one row up to scale: rigid-body mechanics
+// fixes only the force's moment about joint 0 (the run uses the minimum-norm
+// split). One sentence per such elbow; the run is valid.
+std::vector<std::string> first_link_elbow_warnings(const Model& model);
+
+// What a run says about its model before it starts (stiffness, first-link
+// elbows), in that order; printed by `validate` too.
+std::vector<std::string> model_warnings(const Model& model);
+
 }  // namespace elbowsim
