@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "app/scenario/scenario.hpp"
@@ -193,4 +194,100 @@ TEST_CASE("hard: the elbow on the first link holds joint 0, says so, and leans b
   CHECK(moment_error < 1e-9);
   // The arm still writes with joints 1-3 (the controller knows the plant).
   CHECK(r.metrics.find("hand_error_max")->values[0] < 1e-6);
+}
+
+namespace {
+
+// scenarios/hard/painleve.yaml by hand: the 2-link arm's M, the tip's normal
+// row Jn and the contact point's sliding row Jx, gravity and velocity terms,
+// all in closed form (no engine code), at t = 0.
+struct PainleveByHand {
+  double A = 0, B = 0;  // Jn M^-1 Jn^T, Jn M^-1 Jx^T
+  double b = 0;         // the tip's normal acceleration with no contact force
+  double slip = 0;      // the contact point's sliding speed along x
+  PainleveByHand(double qd0) {
+    const double q0 = 0.3, q1 = -1.5, l = 0.4, m = 1.0, c = 0.2, I = m * l * l / 12, r = 0.02, g = 9.81;
+    const double M00 = 2 * I + m * c * c + m * (l * l + c * c + 2 * l * c * std::cos(q1));
+    const double M01 = I + m * (c * c + l * c * std::cos(q1)), M11 = I + m * c * c;
+    const double det = M00 * M11 - M01 * M01;
+    const double Mi[2][2] = {{M11 / det, -M01 / det}, {-M01 / det, M00 / det}};
+    const double t0 = q0, t1 = q0 + q1;
+    const double xj = l * std::cos(t0), zj = l * std::sin(t0), xt = xj + l * std::cos(t1), zt = zj + l * std::sin(t1);
+    const double Jn[2] = {xt, xt - xj}, Jx[2] = {-(zt - r), -(zt - r - zj)};
+    const double qd[2] = {qd0, -xt / (xt - xj) * qd0};  // keeps the tip on the table
+    const double h[2] = {-m * l * c * std::sin(q1) * (2 * qd[0] * qd[1] + qd[1] * qd[1]),
+                         m * l * c * std::sin(q1) * qd[0] * qd[0]};
+    const double G[2] = {(m * c + m * l) * g * std::cos(t0) + m * c * g * std::cos(t1), m * c * g * std::cos(t1)};
+    auto quad = [&](const double* u, const double* v) {
+      double s = 0;
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) s += u[i] * Mi[i][j] * v[j];
+      return s;
+    };
+    A = quad(Jn, Jn);
+    B = quad(Jn, Jx);
+    const double minus_hG[2] = {-h[0] - G[0], -h[1] - G[1]};
+    b = quad(Jn, minus_hG) - l * std::sin(t0) * qd[0] * qd[0] - l * std::sin(t1) * (qd[0] + qd[1]) * (qd[0] + qd[1]);
+    slip = Jx[0] * qd[0] + Jx[1] * qd[1];
+  }
+  // Friction -mu f_n sign(slip) along x: the normal force's coefficient is
+  // A - mu sign(slip) B; the force that keeps the tip on the table.
+  double coefficient(double mu) const { return A - mu * (slip > 0 ? 1 : -1) * B; }
+  double normal_force(double mu) const { return -b / coefficient(mu); }
+};
+
+}  // namespace
+
+TEST_CASE("hard: Painleve at mu = 2 is diagnosed at t = 0, at the closed-form threshold, with exact forces below it") {
+  const std::string file = kHard + "painleve.yaml";
+  const PainleveByHand outward(-1.0), inward(1.0);
+  REQUIRE(outward.slip > 0);
+  const double threshold = outward.A / outward.B;
+  MESSAGE("by hand: A = ", outward.A, ", B = ", outward.B, ", threshold mu = ", threshold, ", slip ",
+          outward.slip, " m/s");
+  REQUIRE(threshold < 2.0);
+
+  // The shipped scene: stopped at once with the diagnosis, the t = 0 row kept.
+  const RunResult shipped = run(load_scenario(file));
+  CHECK_FALSE(shipped.completed);
+  CHECK_FALSE(shipped.valid);
+  CHECK(shipped.final_time == 0.0);
+  CHECK(shipped.failure.find("Painleve paradox at t = 0 s") != std::string::npos);
+  CHECK(shipped.failure.find("mu = 2") != std::string::npos);
+  CHECK(shipped.trajectory.rows() == 1);
+
+  // The diagnosis switches where the closed form says (1 % either side).
+  auto with_mu = [&](double mu, const char* qd = nullptr) {
+    char text[64];
+    std::snprintf(text, sizeof text, "contact.friction.mu=%.17g", mu);  // the exact mu, not 6 digits
+    std::vector<std::string> sets = {text};
+    if (qd) sets.push_back(std::string("initial.qd=") + qd);
+    return run(load_scenario(file, sets));
+  };
+  const RunResult below = with_mu(0.99 * threshold), above = with_mu(1.01 * threshold);
+  CHECK(below.completed);
+  CHECK(below.valid);
+  CHECK_FALSE(above.completed);
+  CHECK(above.final_time == 0.0);
+  CHECK(above.failure.find("Painleve") != std::string::npos);
+
+  // Below it the normal force at t = 0 is -b / (A - mu B), growing without bound
+  // towards the threshold (1 / 0.02 A at 0.98 of it). 1e-9 relative: the
+  // solve's rounding times that amplification (50) is ~1e-13.
+  struct Case {
+    double mu;
+    const char* qd;
+    const PainleveByHand& hand;
+  };
+  for (const Case& c : {Case{0.0, nullptr, outward}, Case{1.0, nullptr, outward},
+                        Case{0.98 * threshold, nullptr, outward}, Case{2.0, "[1.0, -3.636445549524]", inward}}) {
+    const RunResult r = with_mu(c.mu, c.qd);
+    const std::string way = c.qd ? "inward" : "outward";
+    INFO("mu = ", c.mu, " sliding ", way, "; ", r.failure);
+    REQUIRE(r.trajectory.rows() > 0);
+    const double fn = r.trajectory.at(0, r.trajectory.column("fn_tip"));
+    MESSAGE("mu = ", c.mu, " ", way, ": f_n(0) = ", fn, " N, by hand ", c.hand.normal_force(c.mu));
+    CHECK(r.valid);
+    CHECK(fn == doctest::Approx(c.hand.normal_force(c.mu)).epsilon(1e-9));
+  }
 }
