@@ -85,6 +85,25 @@ void clamp_limits(const IkProblem& problem, Eigen::VectorXd& q) {
   if (problem.q_max.size() == q.size()) q = q.cwiseMin(problem.q_max);
 }
 
+// q += the largest of dq, dq/2, ... dq/2^10 that lowers |e| (rows: at q on
+// entry); false, q unchanged: none does.
+bool polish(const Model& model, Data& data, const IkProblem& problem, const Eigen::VectorXd& dq, Rows& rows,
+            Eigen::VectorXd& q) {
+  const double before = rows.e.norm();
+  double scale = 1.0;
+  for (int halving = 0; halving <= 10; ++halving, scale *= 0.5) {
+    Eigen::VectorXd trial = q + scale * dq;
+    clamp_limits(problem, trial);
+    forward_kinematics(model, data, trial);
+    build_rows(model, data, problem, rows);
+    if (rows.e.norm() < before) {
+      q = trial;
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 IkResult solve_ik(const Model& model, Data& data, const IkProblem& problem,
@@ -104,6 +123,15 @@ IkResult solve_ik(const Model& model, Data& data, const IkProblem& problem,
                                                     : Eigen::VectorXd::Zero(result.q.size());
       const Eigen::VectorXd dq = ik_step(rows, to_posture, gain, phase == 0);
       if (rows.e.norm() < 1e-13 && dq.norm() < 1e-12) break;
+      if (phase == 1) {
+        // The polish inverts every singular value above 1e-12 of the largest:
+        // near a singular pose (a straight chain) a rounding-level error along
+        // a direction of singular value ~1e-11 asks for a step of radians.
+        // Take a step only where it lowers the residual (halving it up to
+        // 10 times); none does: the rows are met as well as they can be.
+        if (!polish(model, data, problem, dq, rows, result.q)) break;
+        continue;
+      }
       result.q += dq;
       clamp_limits(problem, result.q);
     }
