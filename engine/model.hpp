@@ -94,6 +94,10 @@ struct ContactOptions {
   ConstraintSolver solver = ConstraintSolver::schur;  // of the constrained step (same answers; cost differs)
   double touch_distance = 1e-6;        // [m] signed distance that counts as touching
   double separation_velocity = 1e-6;   // [m/s] normal speed above which a contact separates
+  // [m/s] a landing whose rebound would be slower than this is plastic: it settles
+  // (restitution < 1 makes bounces accumulate in finite time, Zeno). < 0: the
+  // default, |gravity| x simulation.step (settle_speed() in contact/impact.hpp).
+  double settle_speed = -1.0;
   double baumgarte_time = 0.01;        // [s] Baumgarte time constant T: alpha = 2/T, beta = 1/T^2
   double rank_tolerance = 1e-9;        // relative pivot threshold for dependent rows
   double initial_penetration = 1e-4;   // [m] an elbow deeper at t = 0 is a scenario error

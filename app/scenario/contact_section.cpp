@@ -153,7 +153,7 @@ ContactOptions read_contact(const Value& contact) {
     replaced.fail("replaced by contact.penetration_tolerance (a link or elbow deeper than it makes "
                   "the run invalid)");
   contact.allow_keys({"restitution", "friction", "events", "locate_tolerance", "touch_distance",
-                      "separation_velocity", "baumgarte_time", "rank_tolerance",
+                      "separation_velocity", "settle_speed", "baumgarte_time", "rank_tolerance",
                       "initial_penetration", "penetration_tolerance",
                       "detection_margin", "max_rows", "solver"});
   auto unit_interval = [](const Value& v) { return in_range(v, 0.0, 1.0, true); };
@@ -170,6 +170,8 @@ ContactOptions read_contact(const Value& contact) {
   out.touch_distance = value_or(contact.get("touch_distance"), out.touch_distance, positive);
   out.separation_velocity =
       value_or(contact.get("separation_velocity"), out.separation_velocity, positive);
+  if (contact.get("settle_speed").present())
+    out.settle_speed = non_negative(contact.get("settle_speed"));
   out.baumgarte_time = value_or(contact.get("baumgarte_time"), out.baumgarte_time, positive);
   out.rank_tolerance =
       value_or(contact.get("rank_tolerance"), out.rank_tolerance, open_unit_interval);

@@ -120,6 +120,7 @@ struct ContactData {
   Eigen::MatrixXd Y, Z, A;
   Eigen::VectorXd rhs, lcp_b, lcp_f, lcp_w;
   Eigen::VectorXd a_free;        // [n] scratch: L^-1 (tau - B_J)
+  Eigen::VectorXd qd_before_impact;  // [n] scratch: the rates an impact started from
   Matrix3Xd J3;                  // [3 x n] scratch point Jacobian
   Matrix3Xd row_normal;          // [3 x capacity] each normal row's normal at the last constraint_rows
   Matrix3Xd row_friction;        // [3 x capacity] its sliding friction force per newton of fn (world)

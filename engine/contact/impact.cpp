@@ -68,10 +68,45 @@ ImpactResult unsolved(ContactData& c) {
   return ImpactResult{none.impulse, none.speed_before, none.speed_after, none.energy_lost, 0, 0, false};
 }
 
+// Whether a landing row would rebound, but slower than settle_speed.
+bool settles(const Model& model, const ContactData& c, const ImpactResult& r) {
+  const double settle = settle_speed(model);
+  for (std::size_t row = 0; row < c.landing.size(); ++row) {
+    const double rebound = r.speed_after[static_cast<Eigen::Index>(row)];
+    if (rebound > model.contact.separation_velocity && rebound < settle) return true;
+  }
+  return false;
+}
+
+// The impact's loss and events; rows in c.impact_rows order (the landing
+// slots, then the resting ones). A row left separating is released.
+void record_impact(const Model& model, Data& data, const ImpactResult& r) {
+  ContactData& c = data.contact;
+  if (!r.solved) {
+    // No impulse meets the cones and the normal complementarity (or the rows
+    // exceed the run's room): the run cannot go on honestly.
+    data.failure = Failure{Failure::Kind::no_contact_solution, data.t, data.step_count};
+    return;
+  }
+  c.impact_loss += r.kinetic_before - r.kinetic_after;
+  for (std::size_t row = 0; row < c.impact_rows.size(); ++row) {
+    const auto i = static_cast<Eigen::Index>(row);
+    const int k = c.impact_rows[row];
+    const bool lands = row < c.landing.size();
+    if (lands)
+      data.log.events.push_back({data.t, k, ContactEvent::Kind::landing, -r.speed_before[i], r.impulse[i],
+                                 r.energy_lost[i]});
+    const bool separating = r.speed_after[i] > model.contact.separation_velocity;
+    if (separating && (lands || c.resting[k]))
+      data.log.events.push_back({data.t, k, ContactEvent::Kind::release, 0, 0, 0});
+    c.resting[k] = !separating;
+  }
+}
+
 }  // namespace
 
 ImpactResult apply_impact(const Model& model, Data& data, const std::vector<int>& landing,
-                          const std::vector<int>& resting) {
+                          const std::vector<int>& resting, double restitution) {
   const StateLayout s(model);
   ContactData& c = data.contact;
   c.impact_rows.assign(landing.begin(), landing.end());
@@ -88,7 +123,7 @@ ImpactResult apply_impact(const Model& model, Data& data, const std::vector<int>
   ws.A.noalias() = ws.Jc * ws.MinvJt;
   ws.speed_before.noalias() = ws.Jc * qd;
   ws.b = ws.speed_before;
-  for (std::size_t k = 0; k < landing.size(); ++k) ws.b[k] *= 1.0 + model.contact.restitution;
+  for (std::size_t k = 0; k < landing.size(); ++k) ws.b[k] *= 1.0 + restitution;
   const double kinetic_before = kinetic_energy(data, qd);
   bool solved;
   if (model.has_coulomb_friction()) {
@@ -144,20 +179,18 @@ void land_touching_slots(const Model& model, Data& data) {
     data.failure.limit = c.capacity();
     return;
   }
-  const ImpactResult r = apply_impact(model, data, c.landing, c.candidates);
-  if (!r.solved) {
-    // No impulse meets the cones and the normal complementarity (or the rows
-    // exceed the run's room): the run cannot go on honestly.
-    data.failure = Failure{Failure::Kind::no_contact_solution, data.t, data.step_count};
-    return;
-  }
-  c.impact_loss += r.kinetic_before - r.kinetic_after;
-  for (std::size_t row = 0; row < c.landing.size(); ++row) {
-    const auto i = static_cast<Eigen::Index>(row);
-    data.log.events.push_back({data.t, c.landing[row], ContactEvent::Kind::landing,
-                               -r.speed_before[i], r.impulse[i], r.energy_lost[i]});
-    c.resting[c.landing[row]] = true;
-  }
+  const StateLayout s(model);
+  auto qd = data.x.segment(s.qd(), s.n);
+  c.qd_before_impact = qd;
+  const ImpactResult r = apply_impact(model, data, c.landing, c.candidates, model.contact.restitution);
+  if (!r.solved || !settles(model, c, r)) return record_impact(model, data, r);
+  qd = c.qd_before_impact;
+  record_impact(model, data, apply_impact(model, data, c.landing, c.candidates, 0.0));
+}
+
+double settle_speed(const Model& model) {
+  if (model.contact.settle_speed >= 0) return model.contact.settle_speed;
+  return model.effects.gravity ? model.gravity.norm() * model.options.step : 0.0;
 }
 
 }  // namespace elbowsim

@@ -26,17 +26,27 @@ struct ImpactResult {
   bool solved = false;
 };
 
-// Applies the impulse to the rates in data.x for the slots `landing` and
-// `resting`. Needs forward_kinematics at the state's q and the detection of
-// every slot involved. Allocates nothing (at most contact capacity rows; more
-// is unsolved). With Coulomb friction it sets the modes of the slots involved.
+// Applies the impulse to the rates in data.x for the slots `landing` (with
+// Newton restitution `restitution`) and `resting`. Needs forward_kinematics at
+// the state's q and the detection of every slot involved. Allocates nothing
+// (at most contact capacity rows; more is unsolved). With Coulomb friction it
+// sets the modes of the slots involved.
 ImpactResult apply_impact(const Model& model, Data& data, const std::vector<int>& landing,
-                          const std::vector<int>& resting);
+                          const std::vector<int>& resting, double restitution);
+
+// [m/s] The rebound speed below which a landing settles (contact.settle_speed,
+// by default |gravity| x step: a ball rebounding slower is back within two
+// steps and rises at most g h^2 / 2, 4.9 um at 1 ms). 0 without gravity.
+double settle_speed(const Model& model);
 
 // The impact stage of a step: every free slot at or into the table
 // (distance <= 0, or <= touch_distance with located events) and approaching
 // faster than contact.separation_velocity lands; with effects.impacts it gets its impulse. Landing events go to
 // data.log; the impact loss to data.contact.impact_loss. No solution: data.failure.
+// A slot the impulse leaves separating is released at once (a bounce: landing
+// and release events at the same instant); if a landing slot would rebound
+// slower than settle_speed the impact is redone plastic (restitution 0) and
+// the slot rests: the Zeno series of ever shorter bounces ends there.
 void land_touching_slots(const Model& model, Data& data);
 
 }  // namespace elbowsim

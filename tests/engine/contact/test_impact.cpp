@@ -40,7 +40,7 @@ TEST_CASE("impact: plastic leaves zero normal speed, restitution e reverses e ti
     reset_state(m, data);
     data.x.segment(2, 2) = Eigen::Vector2d(-1.0, 0.7);  // elbow moving down
     forward_kinematics(m, data, data.x.head(2));
-    const ImpactResult r = apply_impact(m, data, {0}, {});
+    const ImpactResult r = apply_impact(m, data, {0}, {}, m.contact.restitution);
     REQUIRE(r.solved);
     CAPTURE(e);
     CHECK(r.speed_before[0] < 0);
@@ -95,7 +95,7 @@ TEST_CASE("impact with Coulomb friction: the contact point stops if mu allows, e
     }
     CHECK(sticks == (mu == 2.0));  // the two cases are what they claim to be
 
-    const ImpactResult r = apply_impact(m, data, {0}, {});
+    const ImpactResult r = apply_impact(m, data, {0}, {}, m.contact.restitution);
     REQUIRE(r.solved);
     const StateLayout s(m);
     const Eigen::Vector2d qd_after = data.x.segment(s.qd(), 2);
@@ -188,10 +188,10 @@ TEST_CASE("apply_impact calls the C allocator zero times") {
   Data data = elbow_at_table(m, 1e-4, Eigen::Vector2d(-0.5, 0.3));
   const std::vector<int> landing{0}, resting;
   const Eigen::VectorXd x = data.x;
-  apply_impact(m, data, landing, resting);  // warm-up
+  apply_impact(m, data, landing, resting, m.contact.restitution);  // warm-up
   data.x = x;
   const long mallocs = malloc_count();
-  const ImpactResult r = apply_impact(m, data, landing, resting);
+  const ImpactResult r = apply_impact(m, data, landing, resting, m.contact.restitution);
   const long calls = malloc_count() - mallocs;
   CHECK(r.solved);
   CHECK(calls == 0);
