@@ -111,6 +111,10 @@ void explicit_inverse(Data& data, ConstVec tau) {
 
 void solve_constrained(const Model& model, Data& data, ConstVec tau, ConstraintSolver method) {
   if (any_joint_stuck(model, data)) method = ConstraintSolver::schur;  // the one that locks joints
+  // Dependent rows (found by the step start's solve) make M* singular: the
+  // explicit inverse returns NaN and the dense LU an arbitrary split. The
+  // Schur solve gives the minimum-norm one (the warning says so).
+  if (data.contact.dependent) method = ConstraintSolver::schur;
   switch (method) {
     case ConstraintSolver::schur: schur(model, data, tau); return;
     case ConstraintSolver::dense_lu: dense_lu(data, tau); return;

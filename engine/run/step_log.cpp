@@ -34,8 +34,14 @@ std::string describe(const Model& model, const Warning& w) {
   switch (w.kind) {
     case Warning::Kind::dependent_rows:
       msg << "dependent contact constraints at " << at_time(w.t) << ": " << w.count
-          << " rows of M* of the touching contact points (normal and sticking tangent rows) have rank " << w.rank << " (threshold "
-          << model.contact.rank_tolerance << " relative); minimum-norm contact forces are used";
+          << " rows of M* of the touching contact points ("
+          << (model.has_coulomb_friction() ? "normal and sticking tangent rows" : "normal rows") << ") have rank "
+          << w.rank << " (threshold " << model.contact.rank_tolerance
+          << " relative); how the force splits between them is not determined: the minimum-norm "
+             "split of the rows kept on is used (a contact may carry nothing)";
+      if (model.contact.solver != ConstraintSolver::schur)
+        msg << " (by the schur solver in those steps: contact.solver: " << to_string(model.contact.solver)
+            << " has no answer there, M* being singular)";
       return msg.str();
   }
   return "?";
