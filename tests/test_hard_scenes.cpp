@@ -21,11 +21,14 @@ double last(const RunResult& r, const std::string& column) {
   return r.trajectory.at(r.trajectory.rows() - 1, r.trajectory.column(column));
 }
 
-RunResult run(const Scenario& s) { return simulate(s.model, s.experiment, RunOptions{s.output.every, {}}); }
+RunResult run(const Scenario& s) {
+  return simulate(s.model, s.experiment, RunOptions{s.output.every, {}});
+}
 
 }  // namespace
 
-TEST_CASE("hard: stiff electrics (L/R = 1 us at 1 ms rows): ros34pw2 matches an explicit reference") {
+TEST_CASE(
+    "hard: stiff electrics (L/R = 1 us at 1 ms rows): ros34pw2 matches an explicit reference") {
   const Scenario shipped = load_scenario(kHard + "stiff_electrics.yaml");
   const RunResult r = run(shipped);
   INFO(r.failure);
@@ -45,19 +48,21 @@ TEST_CASE("hard: stiff electrics (L/R = 1 us at 1 ms rows): ros34pw2 matches an 
     peak = std::max(peak, r.metrics.find("current_peak")->values[static_cast<std::size_t>(j)]);
   }
   MESSAGE("ros34pw2: ", r.steps, " steps, ", r.work.evaluations, " evaluations; dopri5 reference ",
-          ref.steps, " steps; final |dq| ", angle, " rad, |di| ", current, " A; peak current ", peak, " A");
+          ref.steps, " steps; final |dq| ", angle, " rad, |di| ", current, " A; peak current ",
+          peak, " A");
   // rtol 1e-6 on angles of order 1 rad and currents of order 1 A: the final
   // error within 10 x tol (global error accumulates over the steps).
   CHECK(angle < 1e-5);
   CHECK(current < 1e-5);
-  CHECK(peak < 24.0);  // below the stall current v_max / R: nothing blew up
+  CHECK(peak < 24.0);                // below the stall current v_max / R: nothing blew up
   CHECK(r.steps < ref.steps / 100);  // and the implicit method is the cheap one here
 }
 
-TEST_CASE("hard: stiff electrics with the fixed-step rk4: stopped early, and the message names the fix") {
-  const Scenario fixed = load_scenario(
-      kHard + "stiff_electrics.yaml",
-      {"simulation.integrator=rk4", "simulation.rtol=null", "simulation.atol=null"});
+TEST_CASE(
+    "hard: stiff electrics with the fixed-step rk4: stopped early, and the message names the fix") {
+  const Scenario fixed =
+      load_scenario(kHard + "stiff_electrics.yaml",
+                    {"simulation.integrator=rk4", "simulation.rtol=null", "simulation.atol=null"});
   const RunResult r = run(fixed);
   CHECK_FALSE(r.valid);
   CHECK_FALSE(r.completed);
@@ -65,7 +70,8 @@ TEST_CASE("hard: stiff electrics with the fixed-step rk4: stopped early, and the
   CHECK(r.failure.find("diverged") != std::string::npos);
   CHECK(r.failure.find("use simulation.integrator: ros34pw2") != std::string::npos);
   bool warned = false;
-  for (const std::string& w : r.warnings) warned = warned || w.find("L/R = 1e-06 s") != std::string::npos;
+  for (const std::string& w : r.warnings)
+    warned = warned || w.find("L/R = 1e-06 s") != std::string::npos;
   CHECK(warned);
 }
 
@@ -79,7 +85,9 @@ TEST_CASE("hard: a 6 m/s landing against its closed forms (time, speed, impulse,
   const double m = 1.0, l = 0.4, g = 9.81, a = 0.3, q0 = 0.2, w0 = -20.0, e = 0.5;
   const double I = m * l * l / 3.0;
   // Energy: I w^2 / 2 - m g (l/2) sin q is conserved before the impact.
-  auto speed_at = [&](double q) { return std::sqrt(w0 * w0 + 2 * m * g * (l / 2) * (std::sin(q0) - std::sin(q)) / I); };
+  auto speed_at = [&](double q) {
+    return std::sqrt(w0 * w0 + 2 * m * g * (l / 2) * (std::sin(q0) - std::sin(q)) / I);
+  };
   const double w1 = speed_at(0.0);
   // Landing time: t = integral from 0 to q0 of dq / |w(q)| (Simpson, 2e4 cells).
   const int cells = 20000;
@@ -94,8 +102,9 @@ TEST_CASE("hard: a 6 m/s landing against its closed forms (time, speed, impulse,
   REQUIRE_FALSE(r.events.empty());
   const ContactEvent& landing = r.events.front();
   REQUIRE(landing.kind == ContactEvent::Kind::landing);
-  MESSAGE("landing at ", landing.t, " s (closed form ", t1, "), speed ", landing.speed, " m/s (", a * w1,
-          "), impulse ", landing.impulse, " N s (", impulse, "), lost ", landing.energy_lost, " J (", lost, ")");
+  MESSAGE("landing at ", landing.t, " s (closed form ", t1, "), speed ", landing.speed, " m/s (",
+          a * w1, "), impulse ", landing.impulse, " N s (", impulse, "), lost ",
+          landing.energy_lost, " J (", lost, ")");
   // RK4 at 1 ms over 10 ms of a smooth swing (errors ~1e-12) and events located
   // to 1e-12 s: 1e-9 relative leaves room for rounding and the quadrature.
   CHECK(landing.t == doctest::Approx(t1).epsilon(1e-9));
@@ -105,22 +114,26 @@ TEST_CASE("hard: a 6 m/s landing against its closed forms (time, speed, impulse,
   // After it: the ball leaves (no penetration left) and the swing keeps the
   // energy the impact left (frictionless, undamped).
   const int gap = r.trajectory.column("d_elbow");
-  for (std::size_t row = 0; row < r.trajectory.rows(); ++row) CHECK(r.trajectory.at(row, gap) > -1e-9);
-  const double e_start = r.trajectory.at(0, r.trajectory.column("KE_links")) + r.trajectory.at(0, r.trajectory.column("PE"));
+  for (std::size_t row = 0; row < r.trajectory.rows(); ++row)
+    CHECK(r.trajectory.at(row, gap) > -1e-9);
+  const double e_start = r.trajectory.at(0, r.trajectory.column("KE_links")) +
+                         r.trajectory.at(0, r.trajectory.column("PE"));
   const double e_end = last(r, "KE_links") + last(r, "PE");
   CHECK(e_end == doctest::Approx(e_start - lost).epsilon(1e-9));
   CHECK(last(r, "qd0") > 0);  // bounced up
 }
 
-TEST_CASE("hard: a million steps with a resting elbow — drift and energy account bounded, no growth") {
+TEST_CASE(
+    "hard: a million steps with a resting elbow — drift and energy account bounded, no growth") {
   const Scenario s = load_scenario(kHard + "long_rest.yaml");
   const RunResult r = run(s);
   INFO(r.failure);
   REQUIRE(r.valid);
   REQUIRE(r.steps >= 1000000);
   // Baumgarte keeps C and its rate at rounding (measured 1.7e-16 m, 9e-15 m/s).
-  MESSAGE(r.steps, " steps: max |C| ", r.contact.max_abs_C, " m, max |Jc qd| ", r.contact.max_abs_Cd,
-          " m/s, balance residual ", r.balance_residual, " J of ", r.energy_final.electrical_in, " J in");
+  MESSAGE(r.steps, " steps: max |C| ", r.contact.max_abs_C, " m, max |Jc qd| ",
+          r.contact.max_abs_Cd, " m/s, balance residual ", r.balance_residual, " J of ",
+          r.energy_final.electrical_in, " J in");
   CHECK(r.contact.max_abs_C < 1e-12);
   CHECK(r.contact.max_abs_Cd < 1e-12);
   // The energy account: RK4's error accumulates with the energy that flows
@@ -130,7 +143,8 @@ TEST_CASE("hard: a million steps with a resting elbow — drift and energy accou
   const int res = r.trajectory.column("balance_residual"), in = r.trajectory.column("E_in");
   const std::size_t first = 1, middle = r.trajectory.rows() / 2, end = r.trajectory.rows() - 1;
   auto rate = [&](std::size_t a, std::size_t b) {
-    return (r.trajectory.at(b, res) - r.trajectory.at(a, res)) / (r.trajectory.at(b, in) - r.trajectory.at(a, in));
+    return (r.trajectory.at(b, res) - r.trajectory.at(a, res)) /
+           (r.trajectory.at(b, in) - r.trajectory.at(a, in));
   };
   const double early = rate(first, middle), late = rate(middle, end);
   MESSAGE("residual per joule in: ", early, " (10 s to 500 s), ", late, " (500 s to 1000 s)");
@@ -148,7 +162,8 @@ TEST_CASE("hard: the elbow on the first link holds joint 0, says so, and leans b
   REQUIRE(r.completed);
   bool said = false;
   for (const std::string& w : r.warnings)
-    said = said || (w.find("is on link 0") != std::string::npos && w.find("joint 0 is held still") != std::string::npos &&
+    said = said || (w.find("is on link 0") != std::string::npos &&
+                    w.find("joint 0 is held still") != std::string::npos &&
                     w.find("minimum-norm split") != std::string::npos);
   CHECK(said);
   const Recording& tr = r.trajectory;
@@ -180,11 +195,12 @@ TEST_CASE("hard: the elbow on the first link holds joint 0, says so, and leans b
     const double fn = tr.at(row, tr.column("fn_elbow"));
     const double cx = a * std::cos(q[0]), cz = a * std::sin(q[0]) - radius;
     fn_min = std::min(fn_min, fn);
-    moment_error = std::max(moment_error, std::abs(fn - std::abs(tau_c) * cx / (cx * cx + cz * cz)) / fn);
+    moment_error =
+        std::max(moment_error, std::abs(fn - std::abs(tau_c) * cx / (cx * cx + cz * cz)) / fn);
   }
-  MESSAGE("joint 0: drift ", q0_drift, " rad, max |qd0| ", qd0_max, " rad/s; elbow force >= ", fn_min,
-          " N, moment balance relative error ", moment_error, "; hand error max ",
-          r.metrics.find("hand_error_max")->values[0], " m");
+  MESSAGE("joint 0: drift ", q0_drift, " rad, max |qd0| ", qd0_max,
+          " rad/s; elbow force >= ", fn_min, " N, moment balance relative error ", moment_error,
+          "; hand error max ", r.metrics.find("hand_error_max")->values[0], " m");
   // Baumgarte holds the resting point at rounding level (1e-12 rad over 2.7 s).
   CHECK(q0_drift < 1e-12);
   CHECK(qd0_max < 1e-12);
@@ -206,18 +222,21 @@ struct PainleveByHand {
   double b = 0;         // the tip's normal acceleration with no contact force
   double slip = 0;      // the contact point's sliding speed along x
   PainleveByHand(double qd0) {
-    const double q0 = 0.3, q1 = -1.5, l = 0.4, m = 1.0, c = 0.2, I = m * l * l / 12, r = 0.02, g = 9.81;
+    const double q0 = 0.3, q1 = -1.5, l = 0.4, m = 1.0, c = 0.2, I = m * l * l / 12, r = 0.02,
+                 g = 9.81;
     const double M00 = 2 * I + m * c * c + m * (l * l + c * c + 2 * l * c * std::cos(q1));
     const double M01 = I + m * (c * c + l * c * std::cos(q1)), M11 = I + m * c * c;
     const double det = M00 * M11 - M01 * M01;
     const double Mi[2][2] = {{M11 / det, -M01 / det}, {-M01 / det, M00 / det}};
     const double t0 = q0, t1 = q0 + q1;
-    const double xj = l * std::cos(t0), zj = l * std::sin(t0), xt = xj + l * std::cos(t1), zt = zj + l * std::sin(t1);
+    const double xj = l * std::cos(t0), zj = l * std::sin(t0), xt = xj + l * std::cos(t1),
+                 zt = zj + l * std::sin(t1);
     const double Jn[2] = {xt, xt - xj}, Jx[2] = {-(zt - r), -(zt - r - zj)};
     const double qd[2] = {qd0, -xt / (xt - xj) * qd0};  // keeps the tip on the table
     const double h[2] = {-m * l * c * std::sin(q1) * (2 * qd[0] * qd[1] + qd[1] * qd[1]),
                          m * l * c * std::sin(q1) * qd[0] * qd[0]};
-    const double G[2] = {(m * c + m * l) * g * std::cos(t0) + m * c * g * std::cos(t1), m * c * g * std::cos(t1)};
+    const double G[2] = {(m * c + m * l) * g * std::cos(t0) + m * c * g * std::cos(t1),
+                         m * c * g * std::cos(t1)};
     auto quad = [&](const double* u, const double* v) {
       double s = 0;
       for (int i = 0; i < 2; ++i)
@@ -227,7 +246,8 @@ struct PainleveByHand {
     A = quad(Jn, Jn);
     B = quad(Jn, Jx);
     const double minus_hG[2] = {-h[0] - G[0], -h[1] - G[1]};
-    b = quad(Jn, minus_hG) - l * std::sin(t0) * qd[0] * qd[0] - l * std::sin(t1) * (qd[0] + qd[1]) * (qd[0] + qd[1]);
+    b = quad(Jn, minus_hG) - l * std::sin(t0) * qd[0] * qd[0] -
+        l * std::sin(t1) * (qd[0] + qd[1]) * (qd[0] + qd[1]);
     slip = Jx[0] * qd[0] + Jx[1] * qd[1];
   }
   // Friction -mu f_n sign(slip) along x: the normal force's coefficient is
@@ -238,13 +258,15 @@ struct PainleveByHand {
 
 }  // namespace
 
-TEST_CASE("hard: Painleve at mu = 2 is diagnosed at t = 0, at the closed-form threshold, with exact forces below it") {
+TEST_CASE(
+    "hard: Painleve at mu = 2 is diagnosed at t = 0, at the closed-form threshold, with exact "
+    "forces below it") {
   const std::string file = kHard + "painleve.yaml";
   const PainleveByHand outward(-1.0), inward(1.0);
   REQUIRE(outward.slip > 0);
   const double threshold = outward.A / outward.B;
-  MESSAGE("by hand: A = ", outward.A, ", B = ", outward.B, ", threshold mu = ", threshold, ", slip ",
-          outward.slip, " m/s");
+  MESSAGE("by hand: A = ", outward.A, ", B = ", outward.B, ", threshold mu = ", threshold,
+          ", slip ", outward.slip, " m/s");
   REQUIRE(threshold < 2.0);
 
   // The shipped scene: stopped at once with the diagnosis, the t = 0 row kept.
@@ -259,7 +281,8 @@ TEST_CASE("hard: Painleve at mu = 2 is diagnosed at t = 0, at the closed-form th
   // The diagnosis switches where the closed form says (1 % either side).
   auto with_mu = [&](double mu, const char* qd = nullptr) {
     char text[64];
-    std::snprintf(text, sizeof text, "contact.friction.mu=%.17g", mu);  // the exact mu, not 6 digits
+    std::snprintf(text, sizeof text, "contact.friction.mu=%.17g",
+                  mu);  // the exact mu, not 6 digits
     std::vector<std::string> sets = {text};
     if (qd) sets.push_back(std::string("initial.qd=") + qd);
     return run(load_scenario(file, sets));
@@ -279,8 +302,9 @@ TEST_CASE("hard: Painleve at mu = 2 is diagnosed at t = 0, at the closed-form th
     const char* qd;
     const PainleveByHand& hand;
   };
-  for (const Case& c : {Case{0.0, nullptr, outward}, Case{1.0, nullptr, outward},
-                        Case{0.98 * threshold, nullptr, outward}, Case{2.0, "[1.0, -3.636445549524]", inward}}) {
+  for (const Case& c :
+       {Case{0.0, nullptr, outward}, Case{1.0, nullptr, outward},
+        Case{0.98 * threshold, nullptr, outward}, Case{2.0, "[1.0, -3.636445549524]", inward}}) {
     const RunResult r = with_mu(c.mu, c.qd);
     const std::string way = c.qd ? "inward" : "outward";
     INFO("mu = ", c.mu, " sliding ", way, "; ", r.failure);
@@ -292,7 +316,8 @@ TEST_CASE("hard: Painleve at mu = 2 is diagnosed at t = 0, at the closed-form th
   }
 }
 
-TEST_CASE("hard: a 30-link chain on six elbows for 10 s: every joint's equation balances at every row") {
+TEST_CASE(
+    "hard: a 30-link chain on six elbows for 10 s: every joint's equation balances at every row") {
   const Scenario s = load_scenario(kHard + "long_chain.yaml");
   const RunResult r = run(s);
   INFO(r.failure);
@@ -316,7 +341,8 @@ TEST_CASE("hard: a 30-link chain on six elbows for 10 s: every joint's equation 
     // Joint origins along x by hand (planar chain, absolute angles summed).
     std::vector<double> origin_x(dof + 1, 0.0);
     double angle = 0;
-    for (int j = 0; j < dof; ++j) angle += q[j], origin_x[j + 1] = origin_x[j] + length * std::cos(angle);
+    for (int j = 0; j < dof; ++j)
+      angle += q[j], origin_x[j + 1] = origin_x[j] + length * std::cos(angle);
     forward_kinematics(s.model, data, q);
     inverse_dynamics(s.model, data, qd, qdd, {}, tau);  // RNEA: what the joints must get
     for (int j = 0; j < dof; ++j) {
@@ -337,10 +363,11 @@ TEST_CASE("hard: a 30-link chain on six elbows for 10 s: every joint's equation 
       scale = std::max(scale, std::abs(tau[j]));
     }
   }
-  MESSAGE("30 joints x ", tr.rows(), " rows: worst |RNEA - tau_motor - Jc^T f| ", worst, " N m (largest joint torque ",
-          scale, " N m); elbow forces >= ", fn_min, " N, gaps >= ", gap_min, " m; max |C| ", r.contact.max_abs_C,
-          " m; balance residual ", r.balance_residual, " J of ", r.energy_final.electrical_in,
-          " J in; hand error max ", r.metrics.find("hand_error_max")->values[0], " m");
+  MESSAGE("30 joints x ", tr.rows(), " rows: worst |RNEA - tau_motor - Jc^T f| ", worst,
+          " N m (largest joint torque ", scale, " N m); elbow forces >= ", fn_min,
+          " N, gaps >= ", gap_min, " m; max |C| ", r.contact.max_abs_C, " m; balance residual ",
+          r.balance_residual, " J of ", r.energy_final.electrical_in, " J in; hand error max ",
+          r.metrics.find("hand_error_max")->values[0], " m");
   // Joint equations: the engine's CRBA + Schur solve against RNEA and the
   // moments by hand, terms of ~10 N m: 1e-9 relative to the largest torque
   // leaves four orders for the 30 x 30 solve's conditioning (~1e7).
@@ -367,14 +394,16 @@ TEST_CASE("hard: the same chain laid straight (a singular pose): the IK polish t
   std::string straight = "initial.q=[";
   for (int j = 0; j < 30; ++j) straight += (j ? ", " : "") + std::string(j == 24 ? "0.6" : "0");
   straight += "]";
-  const RunResult r = run(load_scenario(kHard + "long_chain.yaml", {straight, "simulation.duration=0.55"}));
+  const RunResult r =
+      run(load_scenario(kHard + "long_chain.yaml", {straight, "simulation.duration=0.55"}));
   INFO(r.failure);
   CHECK(r.completed);
   CHECK(r.valid);
   CHECK(r.metrics.find("hand_error_max")->values[0] < 1e-6);
 }
 
-TEST_CASE("hard: chattering (restitution 0.9): bounces match closed forms, then the elbow settles") {
+TEST_CASE(
+    "hard: chattering (restitution 0.9): bounces match closed forms, then the elbow settles") {
   const RunResult r = run(load_scenario(kHard + "zeno_drop.yaml"));
   INFO(r.failure);
   REQUIRE(r.valid);
@@ -413,8 +442,9 @@ TEST_CASE("hard: chattering (restitution 0.9): bounces match closed forms, then 
     w *= e;
   }
   settle_time = t;
-  MESSAGE(landings.size(), " landings (closed form ", expected, "), settled at ", landings.back().t, " s (", settle_time,
-          "); worst relative speed error ", worst_speed, ", worst time error ", worst_time, " s; ", r.steps, " steps");
+  MESSAGE(landings.size(), " landings (closed form ", expected, "), settled at ", landings.back().t,
+          " s (", settle_time, "); worst relative speed error ", worst_speed, ", worst time error ",
+          worst_time, " s; ", r.steps, " steps");
   CHECK(landings.size() == expected);
   // Event times located to 1e-12 s; each flight integrated by RK4 at <= 1 ms
   // (errors ~1e-12 per bounce, summed over ~45): 1e-9 s and 1e-8 relative.
@@ -434,19 +464,22 @@ TEST_CASE("hard: chattering (restitution 0.9): bounces match closed forms, then 
   CHECK(last(r, "E_impact") == doctest::Approx(released).epsilon(1e-9));
 }
 
-TEST_CASE("hard: nearly dependent and redundant elbows, every constrained solver: finite, warned, the one-elbow motion") {
+TEST_CASE(
+    "hard: nearly dependent and redundant elbows, every constrained solver: finite, warned, the "
+    "one-elbow motion") {
   const std::string file = kHard + "dependent_elbows.yaml";
   const std::string short_run = "simulation.duration=1.0";
   // The reference: the same arm with one elbow ball (rows independent).
-  const RunResult one = run(load_scenario(file, {short_run, "elbows=[{name: elbow, link: 1, at: 0.25, radius: 0.03}]"}));
+  const RunResult one = run(
+      load_scenario(file, {short_run, "elbows=[{name: elbow, link: 1, at: 0.25, radius: 0.03}]"}));
   REQUIRE(one.valid);
   const Recording& ref = one.trajectory;
   std::string five = "elbows=[";
   for (int k = 0; k < 5; ++k) {  // five balls 1 nm apart: 5 rows on a 4-joint arm
     char ball[96];
     const std::string name = k ? "e" + std::to_string(k) : "elbow";  // the task rests "elbow"
-    std::snprintf(ball, sizeof ball, "%s{name: %s, link: 1, at: %.10f, radius: 0.03}", k ? ", " : "",
-                  name.c_str(), 0.25 - 1e-9 * k);
+    std::snprintf(ball, sizeof ball, "%s{name: %s, link: 1, at: %.10f, radius: 0.03}",
+                  k ? ", " : "", name.c_str(), 0.25 - 1e-9 * k);
     five += ball;
   }
   five += "]";
@@ -461,12 +494,14 @@ TEST_CASE("hard: nearly dependent and redundant elbows, every constrained solver
       REQUIRE(r.valid);
       REQUIRE(r.completed);
       bool warned = false;
-      for (const std::string& w : r.warnings) warned = warned || w.find("minimum-norm split") != std::string::npos;
+      for (const std::string& w : r.warnings)
+        warned = warned || w.find("minimum-norm split") != std::string::npos;
       CHECK(warned);
       std::vector<int> forces;
       for (std::size_t c = 0; c < r.trajectory.columns().size(); ++c) {
         const std::string& name = r.trajectory.columns()[c].name;
-        if (name.rfind("fn_", 0) == 0 && name.rfind("fn_link", 0) != 0) forces.push_back(static_cast<int>(c));
+        if (name.rfind("fn_", 0) == 0 && name.rfind("fn_link", 0) != 0)
+          forces.push_back(static_cast<int>(c));
       }
       REQUIRE(forces.size() == static_cast<std::size_t>(balls));
       double total_error = 0, split = 0, angle = 0;
@@ -483,11 +518,12 @@ TEST_CASE("hard: nearly dependent and redundant elbows, every constrained solver
         total_error = std::max(total_error, std::abs(sum - single) / single);
         split = std::max(split, (hi - lo) / sum);
         for (int j = 0; j < 4; ++j)
-          angle = std::max(angle, std::abs(r.trajectory.at(row, r.trajectory.column("q" + std::to_string(j))) -
-                                           ref.at(row, ref.column("q" + std::to_string(j)))));
+          angle = std::max(
+              angle, std::abs(r.trajectory.at(row, r.trajectory.column("q" + std::to_string(j))) -
+                              ref.at(row, ref.column("q" + std::to_string(j)))));
       }
-      MESSAGE(std::string(solver), ", ", balls, " balls: total force vs one ball ", total_error, " relative, split spread ", split,
-              ", angles within ", angle, " rad");
+      MESSAGE(std::string(solver), ", ", balls, " balls: total force vs one ball ", total_error,
+              " relative, split spread ", split, ", angles within ", angle, " rad");
       CHECK(finite);
       // The balls' rows differ by ~1e-9 of their size, at the rank tolerance
       // (1e-9): the decomposition drops that direction, so the total force is
@@ -498,5 +534,54 @@ TEST_CASE("hard: nearly dependent and redundant elbows, every constrained solver
       CHECK(split < 1e-6);
       CHECK(angle < 1e-8);
     }
+  }
+}
+
+TEST_CASE(
+    "hard: a huge gear ratio (Jm = 1e4 x the link's inertia): accelerations as a long-double "
+    "solve") {
+  for (const char* method : {"crba", "aba", "walker_orin"}) {
+    CAPTURE(std::string(method));
+    const RunResult r = run(
+        load_scenario(kHard + "huge_gear.yaml", {std::string("simulation.dynamics=") + method}));
+    INFO(r.failure);
+    REQUIRE(r.valid);
+    // scenarios/hard/huge_gear.yaml: uniform links (com at l/2, I = m l^2/12),
+    // Jm = rotor_inertia n^2, Dm = gear_friction n^2, no link damping.
+    using real = long double;
+    const real m1 = 1.5L, l1 = 0.4L, m2 = 0.8L, l2 = 0.3L, g = 9.81L;
+    const real c1 = l1 / 2, c2 = l2 / 2, I1 = m1 * l1 * l1 / 12, I2 = m2 * l2 * l2 / 12;
+    const real n0 = 28284.2712474619L, n1 = 100;
+    const real Jm[2] = {1e-6L * n0 * n0, 5e-7L * n1 * n1},
+               Dm[2] = {1e-9L * n0 * n0, 1e-6L * n1 * n1};
+    const Recording& tr = r.trajectory;
+    double worst = 0, cond = 0;
+    for (std::size_t row = 0; row < tr.rows(); ++row) {
+      auto at = [&](const char* name) { return static_cast<real>(tr.at(row, tr.column(name))); };
+      const real q0 = at("q0"), q1 = at("q1"), w0 = at("qd0"), w1 = at("qd1");
+      const real M00 =
+          I1 + m1 * c1 * c1 + I2 + m2 * (l1 * l1 + c2 * c2 + 2 * l1 * c2 * std::cos(q1)) + Jm[0];
+      const real M01 = I2 + m2 * (c2 * c2 + l1 * c2 * std::cos(q1));
+      const real M11 = I2 + m2 * c2 * c2 + Jm[1];
+      const real h0 = -m2 * l1 * c2 * std::sin(q1) * (2 * w0 * w1 + w1 * w1),
+                 h1 = m2 * l1 * c2 * std::sin(q1) * w0 * w0;
+      const real G0 = (m1 * c1 + m2 * l1) * g * std::cos(q0) + m2 * c2 * g * std::cos(q0 + q1);
+      const real G1 = m2 * c2 * g * std::cos(q0 + q1);
+      const real b0 = at("tau0") - h0 - G0 - Dm[0] * w0, b1 = at("tau1") - h1 - G1 - Dm[1] * w1;
+      const real det = M00 * M11 - M01 * M01;
+      const real a0 = (M11 * b0 - M01 * b1) / det, a1 = (M00 * b1 - M01 * b0) / det;
+      const real scale = std::max(std::abs(a0), std::abs(a1));
+      const real e = std::max(std::abs(a0 - at("qdd0")), std::abs(a1 - at("qdd1"))) / scale;
+      worst = std::max(worst, static_cast<double>(e));
+      const real mean = (M00 + M11) / 2,
+                 spread = std::sqrt((M00 - M11) * (M00 - M11) / 4 + M01 * M01);
+      cond = std::max(cond, static_cast<double>((mean + spread) / (mean - spread)));
+    }
+    MESSAGE(std::string(method), ": cond(M + Jm) up to ", cond,
+            "; worst |qdd - long-double qdd| / max|qdd| ", worst, " over ", tr.rows(), " rows");
+    REQUIRE(cond > 1e4);
+    // Double precision on a condition number ~3e4: ~1e-11 of the largest
+    // acceleration at worst; 1e-10 bounds it with room for the inputs' rounding.
+    CHECK(worst < 1e-10);
   }
 }
