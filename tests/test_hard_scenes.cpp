@@ -585,3 +585,38 @@ TEST_CASE(
     CHECK(worst < 1e-10);
   }
 }
+
+TEST_CASE(
+    "hard: a singular pose (reaching to full stretch): no blow-up, the run says so; beyond it, out "
+    "of reach") {
+  const std::string file = kHard + "singular_stretch.yaml";
+  const RunResult r = run(load_scenario(file));
+  INFO(r.failure);
+  REQUIRE(r.valid);
+  std::string said;
+  for (const std::string& w : r.warnings)
+    if (w.find("near-singular pose at t = 1.2 s") != std::string::npos) said = w;
+  MESSAGE(said);
+  CHECK_FALSE(said.empty());
+  // The arm ends straight (q1 = 0 to the IK's accuracy) and still on the path:
+  // the damped step leaves at most ~1e-6 m near the singular end (measured
+  // 1.4e-6 m), the final pose 1e-9 m.
+  CHECK(std::abs(last(r, "q1")) < 1e-6);
+  CHECK(r.metrics.find("hand_error_max")->values[0] < 1e-5);
+  CHECK(r.metrics.find("hand_error_final")->values[0] < 1e-8);
+  double rate = 0;
+  for (std::size_t row = 0; row < r.trajectory.rows(); ++row)
+    for (const char* c : {"qd0", "qd1"})
+      rate = std::max(rate, std::abs(r.trajectory.at(row, r.trajectory.column(c))));
+  CHECK(rate < 2.0);  // rad/s: a 3 cm reach in 1 s (measured 0.99), no blow-up at the straight pose
+  // 1 cm beyond the reach: refused, and the message says why.
+  try {
+    run(load_scenario(file, {"task.points=[start, [0.71, 0, 0]]"}));
+    FAIL("a target beyond the arm's reach was accepted");
+  } catch (const std::exception& e) {
+    MESSAGE(std::string(e.what()));
+    CHECK(std::string(e.what()).find("out of reach") != std::string::npos);
+    CHECK(std::string(e.what()).find("singular pose (stretched toward the target") !=
+          std::string::npos);
+  }
+}

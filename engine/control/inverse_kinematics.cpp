@@ -12,7 +12,8 @@ TablePlane table_plane_under(const Model& model, const Eigen::Vector3d& p) {
   for (std::size_t b = 0; b < model.table.size(); ++b) {
     const TableBox& box = model.table[b];
     const Eigen::Vector3d local = box.rotation.transpose() * (p - box.center);
-    const bool over = std::abs(local.x()) <= box.size.x() / 2 && std::abs(local.y()) <= box.size.y() / 2;
+    const bool over =
+        std::abs(local.x()) <= box.size.x() / 2 && std::abs(local.y()) <= box.size.y() / 2;
     const double d = over ? -1.0 : (p - box.center).norm();
     if (d < best_distance) best_distance = d, best = int(b);
   }
@@ -62,7 +63,8 @@ void build_rows(const Model& model, Data& data, const IkProblem& problem, Rows& 
 
 // One step: damped pseudo-inverse of J applied to e, plus `gain` of the
 // posture error projected into the null space of the rows.
-Eigen::VectorXd ik_step(const Rows& rows, const Eigen::VectorXd& to_posture, double gain, bool damp) {
+Eigen::VectorXd ik_step(const Rows& rows, const Eigen::VectorXd& to_posture, double gain,
+                        bool damp) {
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(rows.J, Eigen::ComputeFullU | Eigen::ComputeFullV);
   const Eigen::VectorXd& s = svd.singularValues();
   const double smax = s.size() ? s[0] : 0.0, eps = 1e-3 * smax, lambda_max = 1e-2 * smax;
@@ -85,10 +87,21 @@ void clamp_limits(const IkProblem& problem, Eigen::VectorXd& q) {
   if (problem.q_max.size() == q.size()) q = q.cwiseMin(problem.q_max);
 }
 
+Eigen::VectorXd moved_singular_values(const Eigen::MatrixXd& J) {
+  const Eigen::VectorXd norms = J.rowwise().norm();
+  const double largest = norms.size() ? norms.maxCoeff() : 0.0;
+  if (!(largest > 0)) return Eigen::VectorXd();
+  Eigen::MatrixXd moved(J.rows(), J.cols());
+  Eigen::Index rows = 0;
+  for (Eigen::Index i = 0; i < J.rows(); ++i)
+    if (norms[i] > 1e-12 * largest) moved.row(rows++) = J.row(i);
+  return Eigen::JacobiSVD<Eigen::MatrixXd>(moved.topRows(rows)).singularValues();
+}
+
 // q += the largest of dq, dq/2, ... dq/2^10 that lowers |e| (rows: at q on
 // entry); false, q unchanged: none does.
-bool polish(const Model& model, Data& data, const IkProblem& problem, const Eigen::VectorXd& dq, Rows& rows,
-            Eigen::VectorXd& q) {
+bool polish(const Model& model, Data& data, const IkProblem& problem, const Eigen::VectorXd& dq,
+            Rows& rows, Eigen::VectorXd& q) {
   const double before = rows.e.norm();
   double scale = 1.0;
   for (int halving = 0; halving <= 10; ++halving, scale *= 0.5) {
@@ -106,6 +119,17 @@ bool polish(const Model& model, Data& data, const IkProblem& problem, const Eige
 
 }  // namespace
 
+int numerical_rank(const Eigen::VectorXd& s) {
+  int rank = 0;
+  while (rank < s.size() && s[rank] > 1e-9 * s[0]) ++rank;
+  return rank;
+}
+
+double conditioning(const Eigen::VectorXd& s, int rank) {
+  if (rank <= 0 || s.size() == 0 || !(s[0] > 0)) return 1;
+  return s[std::min<Eigen::Index>(rank, s.size()) - 1] / s[0];
+}
+
 IkResult solve_ik(const Model& model, Data& data, const IkProblem& problem,
                   const Eigen::VectorXd& q0) {
   IkResult result;
@@ -118,9 +142,9 @@ IkResult solve_ik(const Model& model, Data& data, const IkProblem& problem,
       forward_kinematics(model, data, result.q);
       build_rows(model, data, problem, rows);
       const double gain = phase == 0 ? problem.posture_gain : 0.0;
-      const Eigen::VectorXd to_posture =
-          problem.posture.size() == result.q.size() ? Eigen::VectorXd(problem.posture - result.q)
-                                                    : Eigen::VectorXd::Zero(result.q.size());
+      const Eigen::VectorXd to_posture = problem.posture.size() == result.q.size()
+                                             ? Eigen::VectorXd(problem.posture - result.q)
+                                             : Eigen::VectorXd::Zero(result.q.size());
       const Eigen::VectorXd dq = ik_step(rows, to_posture, gain, phase == 0);
       if (rows.e.norm() < 1e-13 && dq.norm() < 1e-12) break;
       if (phase == 1) {
@@ -138,8 +162,10 @@ IkResult solve_ik(const Model& model, Data& data, const IkProblem& problem,
   }
   forward_kinematics(model, data, result.q);
   build_rows(model, data, problem, rows);
+  result.singular_values = moved_singular_values(rows.J);
   result.hand_residual = rows.e.head(3).norm();
-  result.elbow_residual = rows.e.size() > 3 ? rows.e.tail(rows.e.size() - 3).cwiseAbs().maxCoeff() : 0.0;
+  result.elbow_residual =
+      rows.e.size() > 3 ? rows.e.tail(rows.e.size() - 3).cwiseAbs().maxCoeff() : 0.0;
   return result;
 }
 

@@ -31,9 +31,9 @@ struct IkProblem {
   // Resting elbows that stick (Coulomb friction): each elbow's centre held at
   // its point [m, world] (3 rows), not only on its plane (1 row: it may slide).
   std::vector<Eigen::Vector3d> pins;
-  Eigen::VectorXd posture;         // [n] preferred q
-  double posture_gain = 1.0;       // null-space step toward the posture per iteration
-  Eigen::VectorXd q_min, q_max;    // [n] limits, or empty
+  Eigen::VectorXd posture;       // [n] preferred q
+  double posture_gain = 1.0;     // null-space step toward the posture per iteration
+  Eigen::VectorXd q_min, q_max;  // [n] limits, or empty
 };
 
 struct IkResult {
@@ -41,7 +41,19 @@ struct IkResult {
   double hand_residual = 0;   // [m] |target - hand|
   double elbow_residual = 0;  // [m] max |C_k - clearance|
   int iterations = 0;
+  // Singular values of the rows at q, largest first (rows that no joint
+  // moves, like y of a planar arm, left out). Against a regular pose's rank,
+  // one falling to ~0 marks a singular pose (an arm stretched or folded);
+  // rows dependent at every pose (two pins of an elbow on link 0) are not.
+  Eigen::VectorXd singular_values;
 };
+
+// The number of singular values above 1e-9 of the largest (a pose's rank).
+int numerical_rank(const Eigen::VectorXd& singular_values);
+
+// singular_values[rank - 1] / singular_values[0]: how near the pose is to
+// losing one of the `rank` directions a regular pose has (1: none lost).
+double conditioning(const Eigen::VectorXd& singular_values, int rank);
 
 // Gauss-Newton with a damped least-squares pseudo-inverse from the SVD of
 // the row Jacobian (damping grows as the smallest singular value falls

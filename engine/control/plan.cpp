@@ -2,8 +2,8 @@
 
 #include <sstream>
 
-#include "engine/dynamics/kinematics.hpp"
 #include "engine/contact/lcp.hpp"
+#include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/rnea.hpp"
 
 namespace elbowsim {
@@ -61,16 +61,31 @@ void check_over_table(const Model& model, Data& data, const IkProblem& problem, 
   }
 }
 
-std::vector<Eigen::Vector3d> elbow_centres(const Model& model, const Data& data, const IkProblem& problem) {
+std::vector<Eigen::Vector3d> elbow_centres(const Model& model, const Data& data,
+                                           const IkProblem& problem) {
   std::vector<Eigen::Vector3d> centres;
-  for (int k : problem.elbows) centres.push_back(point_position(data, model.elbows[k].link, model.elbows[k].point));
+  for (int k : problem.elbows)
+    centres.push_back(point_position(data, model.elbows[k].link, model.elbows[k].point));
   return centres;
 }
 
-void check(const IkResult& r, double t, const Eigen::Vector3d& target) {
+// A pose whose row Jacobian's smallest singular value is under this share of
+// its largest: the hand all but cannot move along one direction there.
+constexpr double kNearSingular = 1e-3;
+
+// rank: a regular pose's (the task's start); 0: this pose's own.
+void check(const IkResult& r, double t, const Eigen::Vector3d& target, int rank = 0) {
   if (r.hand_residual > 1e-6) {
     std::ostringstream msg;
-    msg << "hand target " << where(t, target) << " is out of reach: missed by " << r.hand_residual << " m";
+    msg << "hand target " << where(t, target) << " is out of reach: missed by " << r.hand_residual
+        << " m";
+    const double near =
+        conditioning(r.singular_values, rank > 0 ? rank : numerical_rank(r.singular_values));
+    if (near < kNearSingular)
+      msg << ", the arm in a singular pose (stretched toward the target, or folded; smallest "
+             "singular "
+             "value "
+          << near << " of the largest)";
     throw PlanError(msg.str());
   }
   if (r.elbow_residual > 1e-6) {
@@ -98,7 +113,8 @@ void differentiate(Plan& plan) {
 // the motor model to voltages: v = R i + Km qd (+ L di/dt), i = tau / Km.
 void feed_forward(const Model& model, const ControllerSpec& controller, Data& data,
                   const IkProblem& problem, Plan& plan) {
-  const int n = model.dof, p = model.effects.contact && problem.clearance == 0 ? int(problem.elbows.size()) : 0;
+  const int n = model.dof,
+            p = model.effects.contact && problem.clearance == 0 ? int(problem.elbows.size()) : 0;
   const std::size_t N = plan.q.size();
   std::vector<Eigen::VectorXd> current(N);
   plan.v_ff.assign(N, Eigen::VectorXd::Zero(n));
@@ -120,7 +136,8 @@ void feed_forward(const Model& model, const ControllerSpec& controller, Data& da
       Eigen::VectorXd f = Eigen::VectorXd::Constant(p, controller.desired_force), w;
       if (controller.kind != ControllerSpec::Kind::force) {
         std::vector<bool> active(p, true);  // min |tau - Jc^T f|^2, f >= 0, as an LCP
-        solve_lcp(Jc * Jc.transpose(), -(Jc * tau), model.contact.rank_tolerance, 1e-12, f, w, active);
+        solve_lcp(Jc * Jc.transpose(), -(Jc * tau), model.contact.rank_tolerance, 1e-12, f, w,
+                  active);
       }
       tau -= Jc.transpose() * f;
       plan.f_ff[k] = f;
@@ -131,7 +148,8 @@ void feed_forward(const Model& model, const ControllerSpec& controller, Data& da
   for (std::size_t k = 0; k < N; ++k) {
     plan.v_ff[k] = model.resistance.cwiseProduct(current[k]) + model.km.cwiseProduct(plan.qd[k]);
     if (model.has_current_state() && k > 0 && k + 1 < N)
-      plan.v_ff[k] += model.inductance.cwiseProduct(current[k + 1] - current[k - 1]) / (2 * plan.dt);
+      plan.v_ff[k] +=
+          model.inductance.cwiseProduct(current[k + 1] - current[k - 1]) / (2 * plan.dt);
   }
 }
 
@@ -146,7 +164,8 @@ struct TaskStart {
 
 TaskStart task_start(const Model& model, const Experiment& experiment, Data& data) {
   TaskStart start;
-  start.q = model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
+  start.q =
+      model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
   forward_kinematics(model, data, start.q);
   start.hand = point_position(data, model.hand_link, model.hand_point);
   start.base = ik_problem(model, experiment.task, data, start.q);
@@ -177,11 +196,16 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
   // friction force of it, so the plan keeps inside any cone).
   const bool sticks = model.has_coulomb_friction() && base.clearance == 0 && !base.elbows.empty();
   std::vector<Eigen::Vector3d> pins;
+  double least = 1;  // the plan's most singular pose: conditioning and sample
+  long least_at = 0;
+  int rank = 0;  // the start pose's (taken as regular)
   for (long k = 0; k < N; ++k) {
     const double t = double(k) * plan->dt;
     const IkProblem problem = problem_at(experiment, start, pins, t);
     const IkResult r = solve_ik(model, data, problem, q);
-    check(r, t, problem.hand);
+    if (k == 0) rank = numerical_rank(r.singular_values);
+    check(r, t, problem.hand, rank);
+    if (const double c = conditioning(r.singular_values, rank); c < least) least = c, least_at = k;
     forward_kinematics(model, data, r.q);
     check_over_table(model, data, problem, t);
     if (k == 0 && sticks) pins = elbow_centres(model, data, problem);
@@ -190,6 +214,17 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
     plan->hand.push_back(problem.hand);
   }
   differentiate(*plan);
+  if (least < kNearSingular) {
+    std::ostringstream msg;
+    msg << "the task passes a near-singular pose at t = " << double(least_at) * plan->dt
+        << " s (the arm stretched or folded: the smallest singular value of its task Jacobian is "
+        << least
+        << " of the largest, so the hand barely moves along one direction there); planned joint "
+           "rates "
+           "there reach "
+        << plan->qd[static_cast<std::size_t>(least_at)].cwiseAbs().maxCoeff() << " rad/s";
+    plan->warnings.push_back(msg.str());
+  }
   feed_forward(model, experiment.controller, data, base, *plan);
   for (std::size_t r = 0; r < base.elbows.size(); ++r)
     if (model.effects.contact && base.clearance == 0) plan->resting.push_back(base.elbows[r]);
@@ -205,7 +240,8 @@ Eigen::VectorXd start_pose(const Model& model, const Experiment& experiment) {
   return r.q;
 }
 
-std::shared_ptr<const Controller> make_controller(const Model& plant, const Experiment& experiment) {
+std::shared_ptr<const Controller> make_controller(const Model& plant,
+                                                  const Experiment& experiment) {
   if (!experiment.needs_plan()) return nullptr;
   auto controller = std::make_shared<Controller>();
   controller->spec = experiment.controller;

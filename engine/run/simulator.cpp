@@ -93,6 +93,8 @@ void finish(const Model& model, Data& data, RunResult& result) {
   result.metrics = compute_metrics(result.trajectory);
   for (std::string& w : motor_rating_warnings(model, result.metrics)) result.warnings.push_back(std::move(w));
   for (std::string& w : model_warnings(model)) result.warnings.push_back(std::move(w));
+  if (data.controller && data.controller->plan)
+    for (const std::string& w : data.controller->plan->warnings) result.warnings.push_back(w);
 }
 
 }  // namespace
