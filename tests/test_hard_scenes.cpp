@@ -620,3 +620,65 @@ TEST_CASE(
           std::string::npos);
   }
 }
+
+TEST_CASE(
+    "hard: a spatial 7-joint arm on two elbows: every joint's equation balances, both elbows stay "
+    "on") {
+  const Scenario s = load_scenario(kHard + "spatial_two_elbows.yaml");
+  const RunResult r = run(s);
+  INFO(r.failure);
+  REQUIRE(r.valid);
+  REQUIRE(r.completed);
+  const int dof = s.model.dof;
+  REQUIRE(dof == 7);
+  const Recording& tr = r.trajectory;
+  struct Ball {
+    const char* name;
+    int link;
+    Eigen::Vector3d point;
+  };
+  const Ball balls[2] = {{"elbow", 1, {0.3, 0, 0}}, {"forearm", 3, {0.2, 0, 0}}};  // the scene's
+  Data data(s.model);
+  Eigen::VectorXd q(dof), qd(dof), qdd(dof), tau(dof);
+  Matrix3Xd J(3, dof);
+  double worst = 0, scale = 0, fn_min = 1e9;
+  for (std::size_t row = 0; row < tr.rows(); ++row) {
+    for (int j = 0; j < dof; ++j) {
+      const std::string k = std::to_string(j);
+      q[j] = tr.at(row, tr.column("q" + k));
+      qd[j] = tr.at(row, tr.column("qd" + k));
+      qdd[j] = tr.at(row, tr.column("qdd" + k));
+    }
+    forward_kinematics(s.model, data, q);
+    inverse_dynamics(s.model, data, qd, qdd, {}, tau);
+    Eigen::VectorXd table = Eigen::VectorXd::Zero(dof);
+    for (const Ball& b : balls) {
+      // The table's normal is +z; n^T J is the same at the ball's centre and
+      // at its contact point (they differ along n).
+      point_jacobian(s.model, data, b.link, b.point, J);
+      const double fn = tr.at(row, tr.column(std::string("fn_") + b.name));
+      fn_min = std::min(fn_min, fn);
+      table += fn * J.row(2).transpose();
+    }
+    for (int j = 0; j < dof; ++j) {
+      const double motor = tr.at(row, tr.column("tau" + std::to_string(j)));
+      worst = std::max(worst, std::abs(tau[j] - motor - table[j]));
+      scale = std::max(scale, std::abs(tau[j]));
+    }
+  }
+  MESSAGE("7 joints x ", tr.rows(), " rows: worst |RNEA - tau_motor - Jc^T f| ", worst,
+          " N m (largest ", scale, " N m); elbow forces >= ", fn_min, " N; max |C| ",
+          r.contact.max_abs_C, " m; balance residual ", r.balance_residual, " J of ",
+          r.energy_final.electrical_in, " J in; hand error max ",
+          r.metrics.find("hand_error_max")->values[0], " m");
+  // The constrained CRBA solve against RNEA and the Jacobians' moments
+  // (terms of a few N m): 1e-10 relative to the largest torque.
+  CHECK(worst < 1e-10 * scale);
+  CHECK(fn_min > 0.5);          // both rest throughout (the plan keeps them on)
+  CHECK(r.events.size() == 2);  // two landings at t = 0, nothing after
+  CHECK(r.contact.max_abs_C < 1e-12);
+  CHECK(r.metrics.find("hand_error_max")->values[0] < 1e-6);
+  // The energy account (RK4, 1 ms): 1e-6 of the energy that flowed in and out.
+  const double flowed = r.energy_final.electrical_in + r.energy_final.joule;
+  CHECK(std::abs(r.balance_residual) < 1e-6 * flowed);
+}
