@@ -40,22 +40,22 @@ std::function<void(double)> terminal_progress() {
 
 void write_outputs(const Scenario& scenario, const RunResult& result,
                    const nlohmann::ordered_json& summary, const std::filesystem::path& folder) {
-  write_atomically(folder / "scenario.yaml",
-                   [&](std::ostream& out) { out << scenario.resolved_yaml; });
+  // All or nothing: a full disk leaves the folder's earlier files as they were.
+  FileBatch files;
+  files.add(folder / "scenario.yaml", [&](std::ostream& out) { out << scenario.resolved_yaml; });
   // A run that never started (its plan failed) has no columns: no table, and
   // none of an earlier run left beside this run's summary.
   if (scenario.output.trajectory && !result.trajectory.columns().empty())
-    write_atomically(folder / "trajectory.csv",
-                     [&](std::ostream& out) { write_trajectory_csv(out, result.trajectory); });
+    files.add(folder / "trajectory.csv",
+              [&](std::ostream& out) { write_trajectory_csv(out, result.trajectory); });
   else
-    std::filesystem::remove(folder / "trajectory.csv");
+    files.remove_at_commit(folder / "trajectory.csv");
   if (scenario.model.effects.contact)
-    write_atomically(folder / "events.csv", [&](std::ostream& out) {
-      write_events_csv(out, scenario.model, result.events);
-    });
+    files.add(folder / "events.csv",
+              [&](std::ostream& out) { write_events_csv(out, scenario.model, result.events); });
   if (scenario.output.summary)
-    write_atomically(folder / "summary.json",
-                     [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+    files.add(folder / "summary.json", [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+  files.commit();
 }
 
 // One run folder: simulate, write, render, report. Its code: exit_ok,

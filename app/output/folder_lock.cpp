@@ -9,7 +9,8 @@
 
 namespace elbowsim {
 
-FolderLock::FolderLock(const std::filesystem::path& folder) {
+FolderLock::FolderLock(const std::filesystem::path& folder) : folder_(folder) {
+  created_ = !std::filesystem::exists(folder);
   std::filesystem::create_directories(folder);
   const std::filesystem::path file = folder / ".elbowsim.lock";
   fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
@@ -26,7 +27,18 @@ FolderLock::FolderLock(const std::filesystem::path& folder) {
 }
 
 FolderLock::~FolderLock() {
-  if (fd_ >= 0) ::close(fd_);  // closing releases the lock
+  if (fd_ < 0) return;
+  if (created_) {
+    std::error_code ignored;
+    bool only_lock = true;
+    for (const auto& entry : std::filesystem::directory_iterator(folder_, ignored))
+      only_lock = only_lock && entry.path().filename() == ".elbowsim.lock";
+    if (only_lock) {
+      std::filesystem::remove(folder_ / ".elbowsim.lock", ignored);
+      std::filesystem::remove(folder_, ignored);
+    }
+  }
+  ::close(fd_);  // closing releases the lock
 }
 
 }  // namespace elbowsim

@@ -20,7 +20,9 @@ class FolderLock {
  public:
   // Creates the folder if needed and takes its lock without waiting. Throws
   // FolderInUse when another process holds it, std::runtime_error when the
-  // lock file cannot be opened (naming it).
+  // lock file cannot be opened (naming it). A folder it created that holds
+  // nothing but the lock when it is released (the run wrote nothing: a full
+  // disk, a failed plan) is removed: the place is left as it was.
   explicit FolderLock(const std::filesystem::path& folder);
   ~FolderLock();
   FolderLock(const FolderLock&) = delete;
@@ -28,6 +30,8 @@ class FolderLock {
 
  private:
   int fd_ = -1;
+  std::filesystem::path folder_;
+  bool created_ = false;  // the folder did not exist before
 };
 
 }  // namespace elbowsim
