@@ -242,6 +242,9 @@ TEST_CASE("cli: montecarlo interrupted: the cases done are kept, the interrupted
   CHECK(contains(r.output, "interrupted: 0 of 4 cases complete"));
   CHECK_FALSE(fs::exists(out / "study.json"));
   CHECK_FALSE(fs::exists(out / "low-short" / "montecarlo.json"));
-  for (const auto& entry : fs::recursive_directory_iterator(out))
-    CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
+  // No case finished: the folder the study created holds nothing of it and
+  // is removed with its lock (left as it was); a kept one has no temporaries.
+  if (fs::exists(out))
+    for (const auto& entry : fs::recursive_directory_iterator(out))
+      CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
 }
