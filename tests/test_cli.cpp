@@ -69,6 +69,21 @@ TEST_CASE("cli: --set overrides a key; a bad --set names itself and writes nothi
   CHECK_FALSE(fs::exists(dir / "bad"));
 }
 
+TEST_CASE("cli: a run whose recording would not fit in memory is refused before simulating (exit 2, nothing written)") {
+  const fs::path dir = scratch("cli", "too_large");
+  // 1e-300 s steps: t + h == t, and 1e299 rows; refused by the size estimate.
+  const Outcome tiny_step = run("run " + kPendulum + " --out " + (dir / "tiny").string() + " --set simulation.step=1e-300");
+  CHECK(tiny_step.exit_code == 2);
+  CHECK(tiny_step.output.find("the recording would hold") != std::string::npos);
+  CHECK(tiny_step.output.find("raise output.every") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "tiny"));
+  // Long and fine enough to need more than this machine has (1e12 rows).
+  const Outcome long_run = run("run " + kPendulum + " --out " + (dir / "long").string() +
+                               " --set simulation.duration=1e9 --set simulation.step=1e-3 --set output.every=1");
+  CHECK(long_run.exit_code == 2);
+  CHECK_FALSE(fs::exists(dir / "long"));
+}
+
 TEST_CASE("cli: a physically invalid scenario exits 2 naming file, line and key; writes nothing") {
   const fs::path dir = scratch("cli", "invalid");
   std::string text = slurp(kPendulum);

@@ -18,6 +18,7 @@
 #include "app/output/trajectory_csv.hpp"
 #include "app/scenario/scenario.hpp"
 #include "engine/control/inverse_kinematics.hpp"
+#include "engine/run/recorder.hpp"
 #include "engine/run/simulator.hpp"
 
 namespace elbowsim {
@@ -175,6 +176,28 @@ int compare_variants(const RunArguments& args, const std::vector<Scenario>& vari
   return exit_ok;
 }
 
+// Before simulating: a recording that would not fit in memory is refused
+// (more than half of this machine's RAM: exit 2, naming the keys that size
+// it); over a tenth, a warning. False: refused.
+bool recording_fits(const Scenario& s) {
+  const double bytes = recording_bytes_estimate(s.model, s.output.every, s.experiment.needs_plan());
+  const double ram = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
+  if (!(ram > 0) || bytes <= 0.1 * ram) return true;
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "%s: the recording would hold ~%.3g GB in memory (simulation.duration %g s / "
+                "(simulation.step %g s x output.every %d) rows x its columns x 8 bytes), %s this "
+                "machine's %.3g GB",
+                s.file.c_str(), bytes / 1e9, s.model.options.duration, s.model.options.step, s.output.every,
+                bytes > 0.5 * ram ? "more than half of" : "over a tenth of", ram / 1e9);
+  if (bytes <= 0.5 * ram) {
+    std::cerr << "warning: " << text << '\n';
+    return true;
+  }
+  std::cerr << "error: " << text << ": raise output.every, or shorten simulation.duration, or lengthen simulation.step\n";
+  return false;
+}
+
 // Each variant into folder/<variant>/ (all loaded first: a bad one writes
 // nothing), then their comparison. A failed run does not stop the others; an
 // I/O error does.
@@ -188,6 +211,8 @@ int run_variants(const RunArguments& args, const Scenario& scenario,
     std::cerr << "error: " << e.what() << '\n';
     return exit_bad_input;
   }
+  for (const Scenario& v : variants)
+    if (!recording_fits(v)) return exit_bad_input;
   int code = exit_ok;
   nlohmann::ordered_json summaries;  // variant -> summary, for --expect
   for (const Scenario& v : variants) {
@@ -226,6 +251,7 @@ int run_command(const RunArguments& args) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_bad_input;
   }
+  if (scenario.variants.empty() && !recording_fits(scenario)) return exit_bad_input;
   const std::filesystem::path folder = args.out.value_or(scenario.output.folder);
   std::vector<RunRecord> records;
   install_interrupt_handlers();

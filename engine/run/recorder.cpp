@@ -1,5 +1,7 @@
 #include "engine/run/recorder.hpp"
 
+#include <algorithm>
+
 #include <limits>
 
 #include "engine/contact/detection.hpp"
@@ -111,6 +113,12 @@ void record_sample(const Model& model, const Data& data, Recording& rec) {
   write_hand(model, L, data, row);
   if (L.has_contact()) write_contacts(model, L, data, row);
   write_energies(L, data, row);
+}
+
+double recording_bytes_estimate(const Model& model, int every, bool desired_hand) {
+  const double interval = model.options.step * std::max(every, 1);
+  const double rows = std::min(model.options.duration / interval + 2, 1e18);
+  return rows * double(trajectory_layout(model, desired_hand).columns().size()) * sizeof(double);
 }
 
 }  // namespace elbowsim
