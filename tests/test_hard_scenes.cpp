@@ -21,6 +21,21 @@ double last(const RunResult& r, const std::string& column) {
   return r.trajectory.at(r.trajectory.rows() - 1, r.trajectory.column(column));
 }
 
+// At recorded row `row`: q and qd read back, and the joint torques RNEA asks
+// for the recorded qdd (forward kinematics left at q in data).
+void rnea_at_row(const Model& model, Data& data, const Recording& tr, std::size_t row,
+                 Eigen::VectorXd& q, Eigen::VectorXd& qd, Eigen::VectorXd& tau) {
+  Eigen::VectorXd qdd(model.dof);
+  for (int j = 0; j < model.dof; ++j) {
+    const std::string k = std::to_string(j);
+    q[j] = tr.at(row, tr.column("q" + k));
+    qd[j] = tr.at(row, tr.column("qd" + k));
+    qdd[j] = tr.at(row, tr.column("qdd" + k));
+  }
+  forward_kinematics(model, data, q);
+  inverse_dynamics(model, data, qd, qdd, {}, tau);
+}
+
 RunResult run(const Scenario& s) {
   return simulate(s.model, s.experiment, RunOptions{s.output.every, {}});
 }
@@ -169,17 +184,12 @@ TEST_CASE("hard: the elbow on the first link holds joint 0, says so, and leans b
   const Recording& tr = r.trajectory;
   const int dof = s.model.dof;
   Data data(s.model);
-  Eigen::VectorXd q(dof), qd(dof), qdd(dof), tau(dof);
+  Eigen::VectorXd q(dof), qd(dof), tau(dof);
   const double a = 0.25, radius = 0.03;  // the elbow ball's centre on link 0 and radius (the scene)
   double q0_drift = 0, qd0_max = 0, moment_error = 0, fn_min = 1e9;
   const double q0_start = tr.at(0, tr.column("q0"));
   for (std::size_t row = 0; row < tr.rows(); ++row) {
-    for (int j = 0; j < dof; ++j) {
-      const std::string k = std::to_string(j);
-      q[j] = tr.at(row, tr.column("q" + k));
-      qd[j] = tr.at(row, tr.column("qd" + k));
-      qdd[j] = tr.at(row, tr.column("qdd" + k));
-    }
+    rnea_at_row(s.model, data, tr, row, q, qd, tau);
     q0_drift = std::max(q0_drift, std::abs(q[0] - q0_start));
     qd0_max = std::max(qd0_max, std::abs(qd[0]));
     // The moment the table must supply about joint 0: inverse dynamics (RNEA,
@@ -189,8 +199,6 @@ TEST_CASE("hard: the elbow on the first link holds joint 0, says so, and leans b
     // along v = dc/dq0 = (-c_z, c_x)·(sign of the axis); the minimum-norm force
     // is along v, so f_n = |tau_c| c_x / |c|^2 (frictionless it would be
     // |tau_c| / c_x: 10 % more here).
-    forward_kinematics(s.model, data, q);
-    inverse_dynamics(s.model, data, qd, qdd, {}, tau);
     const double tau_c = tau[0] - tr.at(row, tr.column("tau0"));
     const double fn = tr.at(row, tr.column("fn_elbow"));
     const double cx = a * std::cos(q[0]), cz = a * std::sin(q[0]) - radius;
@@ -329,22 +337,15 @@ TEST_CASE(
   const int elbow_links[6] = {3, 7, 11, 15, 19, 23};  // the scene's elbows, each at its link's end
   const double length = 0.05;
   Data data(s.model);
-  Eigen::VectorXd q(dof), qd(dof), qdd(dof), tau(dof);
+  Eigen::VectorXd q(dof), qd(dof), tau(dof);
   double worst = 0, scale = 0, fn_min = 1e9, gap_min = 1e9;
   for (std::size_t row = 0; row < tr.rows(); ++row) {
-    for (int j = 0; j < dof; ++j) {
-      const std::string k = std::to_string(j);
-      q[j] = tr.at(row, tr.column("q" + k));
-      qd[j] = tr.at(row, tr.column("qd" + k));
-      qdd[j] = tr.at(row, tr.column("qdd" + k));
-    }
+    rnea_at_row(s.model, data, tr, row, q, qd, tau);
     // Joint origins along x by hand (planar chain, absolute angles summed).
     std::vector<double> origin_x(dof + 1, 0.0);
     double angle = 0;
     for (int j = 0; j < dof; ++j)
       angle += q[j], origin_x[j + 1] = origin_x[j] + length * std::cos(angle);
-    forward_kinematics(s.model, data, q);
-    inverse_dynamics(s.model, data, qd, qdd, {}, tau);  // RNEA: what the joints must get
     for (int j = 0; j < dof; ++j) {
       // An upward force f at x_c turns joint j (axis -y) by f (x_c - x_j).
       double table = 0;
@@ -639,18 +640,11 @@ TEST_CASE(
   };
   const Ball balls[2] = {{"elbow", 1, {0.3, 0, 0}}, {"forearm", 3, {0.2, 0, 0}}};  // the scene's
   Data data(s.model);
-  Eigen::VectorXd q(dof), qd(dof), qdd(dof), tau(dof);
+  Eigen::VectorXd q(dof), qd(dof), tau(dof);
   Matrix3Xd J(3, dof);
   double worst = 0, scale = 0, fn_min = 1e9;
   for (std::size_t row = 0; row < tr.rows(); ++row) {
-    for (int j = 0; j < dof; ++j) {
-      const std::string k = std::to_string(j);
-      q[j] = tr.at(row, tr.column("q" + k));
-      qd[j] = tr.at(row, tr.column("qd" + k));
-      qdd[j] = tr.at(row, tr.column("qdd" + k));
-    }
-    forward_kinematics(s.model, data, q);
-    inverse_dynamics(s.model, data, qd, qdd, {}, tau);
+    rnea_at_row(s.model, data, tr, row, q, qd, tau);
     Eigen::VectorXd table = Eigen::VectorXd::Zero(dof);
     for (const Ball& b : balls) {
       // The table's normal is +z; n^T J is the same at the ball's centre and
