@@ -35,11 +35,11 @@ UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   -artifact_prefix="$build/artifacts/" -print_final_stats=1 "$@" \
   "$build/corpus" "$seeds" >"$log" 2>&1 || status=$?
 
-stat() { sed -n "s/^stat::$1: *//p" "$log" | tail -1; }
-execs=$(stat number_of_executed_units)
+fuzz_stat() { sed -n "s/^stat::$1: *//p" "$log" | tail -1; }
+execs=$(fuzz_stat number_of_executed_units)
 if [ "$status" -ne 0 ]; then
   tail -n 60 "$log" >&2
   echo "fuzz_scenario_loader: FAILED (exit $status) after ${execs:-?} executions; the input is in $build/artifacts/, the log in $log" >&2
   exit "$status"
 fi
-echo "fuzz_scenario_loader: ${seconds} s, ${execs} executions (${execs:+$(stat average_exec_per_sec)} per second), peak RSS $(stat peak_rss_mb) MB, corpus $(ls "$build/corpus" | wc -l) inputs; no finding"
+echo "fuzz_scenario_loader: ${seconds} s, ${execs} executions (${execs:+$(fuzz_stat average_exec_per_sec)} per second), peak RSS $(fuzz_stat peak_rss_mb) MB, corpus $(ls "$build/corpus" | wc -l) inputs; no finding"
