@@ -395,3 +395,22 @@ TEST_CASE("error: YAML syntax and files") {
   CHECK_THROWS_WITH_AS(load_scenario("/nonexistent/x.yaml"),
                        doctest::Contains("/nonexistent/x.yaml: cannot open"), ScenarioError);
 }
+
+TEST_CASE("error: more joints than supported is an error before any entry is read") {
+  // A 20 000-link arm (a hand-made input run through tests/fuzz/) made the loader
+  // ask for 12.8 GB (dense dof x dof matrices for the initial-penetration check):
+  // the count is checked first.
+  auto planar = [](int n) {
+    std::string text = "name: long_arm\nrobot:\n  planar:\n    links:\n";
+    for (int i = 0; i < n; ++i) text += "      - {length: 0.1, mass: 0.1, radius: 0.005}\n";
+    return text + "simulation:\n  duration: 1.0\n";
+  };
+  CHECK(load(planar(elbowsim::kMaxJoints)).model.dof == elbowsim::kMaxJoints);
+  CHECK(error_of(planar(elbowsim::kMaxJoints + 1)) ==
+        "x.yaml:5:7: robot.planar.links: has 257 entries; at most 256 joints are supported");
+  std::string joints = "name: long_arm\nrobot:\n  joints:\n";
+  for (int i = 0; i <= elbowsim::kMaxJoints; ++i)
+    joints += "    - {link: {mass: 1, inertia: {ixx: 1, iyy: 1, izz: 1}}}\n";
+  joints += "simulation:\n  duration: 1.0\n";
+  CHECK(error_of(joints) == "x.yaml:4:5: robot.joints: has 257 entries; at most 256 joints are supported");
+}

@@ -23,9 +23,17 @@ namespace {
 const Eigen::Vector3d kPlanarAxis(0, -1, 0);
 constexpr double kDefaultRadius = 0.02;  // [m]
 
-std::vector<Value> non_empty_list(const Value& list) {
+// The chain: 1 .. kMaxJoints entries. The engine's per-run state holds dense
+// dof x dof matrices (mass matrix, its Cholesky factor, ...) sized when a run (and
+// the loader's initial-penetration check) starts: 20 000 joints asked for 12.8 GB
+// (a hand-made input run through tests/fuzz/). The count is checked before any
+// entry is read.
+std::vector<Value> chain_list(const Value& list) {
   std::vector<Value> items = list.items();
   if (items.empty()) list.fail("needs at least one entry");
+  if (items.size() > static_cast<std::size_t>(kMaxJoints))
+    list.fail("has " + std::to_string(items.size()) + " entries; at most " +
+              std::to_string(kMaxJoints) + " joints are supported");
   return items;
 }
 
@@ -164,7 +172,7 @@ Eigen::Vector3d read_axis(const Value& v) {
 void read_planar_chain(const Value& planar, Model& model) {
   planar.allow_keys({"links"});
   double previous_length = 0;
-  for (const Value& v : non_empty_list(planar.require("links"))) {
+  for (const Value& v : chain_list(planar.require("links"))) {
     PlanarLink p = read_planar_link(v);
     Joint joint;
     joint.origin_position = Eigen::Vector3d(previous_length, 0, 0);
@@ -176,7 +184,7 @@ void read_planar_chain(const Value& planar, Model& model) {
 }
 
 void read_general_chain(const Value& joints, Model& model) {
-  for (const Value& v : non_empty_list(joints)) {
+  for (const Value& v : chain_list(joints)) {
     v.allow_keys({"origin", "axis", "link"});
     const Eigen::Isometry3d origin = value_or(v.get("origin"), Eigen::Isometry3d::Identity(), pose);
     Joint joint;

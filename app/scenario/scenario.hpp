@@ -15,6 +15,10 @@
 
 namespace elbowsim {
 
+// The most joints a scenario's robot may have (robot.planar.links or robot.joints):
+// a run's state holds dense dof x dof matrices, and the dynamics are O(dof^3).
+inline constexpr int kMaxJoints = 256;
+
 // What a run writes, and where.
 struct OutputSettings {
   std::string folder = "runs/<scenario name>";  // default: "runs/" + model.name

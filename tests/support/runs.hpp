@@ -18,5 +18,8 @@ inline const ContactEvent* first_event(const RunResult& r, ContactEvent::Kind ki
     if (e.kind == kind) return &e;
   return nullptr;
 }
+// A pointer into a temporary run would dangle at the end of the full expression
+// (a heap-use-after-free AddressSanitizer found in test_events.cpp): keep the run.
+const ContactEvent* first_event(const RunResult&& r, ContactEvent::Kind kind) = delete;
 
 }  // namespace elbowsim::testing
