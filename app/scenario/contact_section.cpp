@@ -170,8 +170,7 @@ ContactOptions read_contact(const Value& contact) {
   out.touch_distance = value_or(contact.get("touch_distance"), out.touch_distance, positive);
   out.separation_velocity =
       value_or(contact.get("separation_velocity"), out.separation_velocity, positive);
-  if (contact.get("settle_speed").present())
-    out.settle_speed = non_negative(contact.get("settle_speed"));
+  out.settle_speed = value_or(contact.get("settle_speed"), out.settle_speed, non_negative);
   out.baumgarte_time = value_or(contact.get("baumgarte_time"), out.baumgarte_time, positive);
   out.rank_tolerance =
       value_or(contact.get("rank_tolerance"), out.rank_tolerance, open_unit_interval);

@@ -82,10 +82,8 @@ void check(const IkResult& r, double t, const Eigen::Vector3d& target, int rank 
     const double near =
         conditioning(r.singular_values, rank > 0 ? rank : numerical_rank(r.singular_values));
     if (near < kNearSingular)
-      msg << ", the arm in a singular pose (stretched toward the target, or folded; smallest "
-             "singular "
-             "value "
-          << near << " of the largest)";
+      msg << ", the arm in a singular pose (stretched toward the target, or folded; "
+          << "smallest singular value " << near << " of the largest)";
     throw PlanError(msg.str());
   }
   if (r.elbow_residual > 1e-6) {
@@ -218,10 +216,8 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
     std::ostringstream msg;
     msg << "the task passes a near-singular pose at t = " << double(least_at) * plan->dt
         << " s (the arm stretched or folded: the smallest singular value of its task Jacobian is "
-        << least
-        << " of the largest, so the hand barely moves along one direction there); planned joint "
-           "rates "
-           "there reach "
+        << least << " of the largest, so the hand barely moves along one direction there); "
+        << "planned joint rates there reach "
         << plan->qd[static_cast<std::size_t>(least_at)].cwiseAbs().maxCoeff() << " rad/s";
     plan->warnings.push_back(msg.str());
   }
