@@ -1,4 +1,5 @@
-// A fresh folder for a test's files, shared by every test suite.
+// A fresh folder for a test's files, shared by every test suite. ctest sets TMPDIR to
+// <build>/tests/scratch (tests/CMakeLists.txt), so two builds never share one.
 #pragma once
 
 #include <filesystem>
