@@ -105,6 +105,27 @@ elbowsim::RunArguments run_arguments(const cxxopts::ParseResult& parsed, const s
   return args;
 }
 
+// Why a command line matched no command: the first thing wrong with it.
+std::string usage_problem(const std::vector<std::string>& words) {
+  if (words.empty()) return "no command given (run, validate, sweep, render, report, compare, montecarlo, accuracy)";
+  const std::string& command = words[0];
+  const std::string given = std::to_string(words.size() - 1);
+  std::string listed;
+  for (std::size_t i = 1; i < words.size(); ++i) listed += " '" + words[i] + "'";
+  for (const char* one : {"run", "validate", "render", "report", "montecarlo", "accuracy", "sweep"}) {
+    if (command != one) continue;
+    const bool folder = command == "render" || command == "report";
+    if (words.size() != 2)
+      return command + " takes exactly one " + (folder ? "RUN_DIR" : "SCENARIO") + " (got " + given +
+             (listed.empty() ? "" : ":" + listed) + ")";
+    if (command == "sweep") return "sweep needs both --key KEY and --values V1,V2,...";
+  }
+  if (command == "compare")
+    return "compare needs at least two run folders (got " + given + (listed.empty() ? "" : ":" + listed) +
+           "); a scenario with variants: compares them itself (elbowsim run)";
+  return "unknown command '" + command + "'";
+}
+
 int dispatch(const cxxopts::ParseResult& parsed) {
   using namespace elbowsim;
   if (parsed.count("help")) return std::cout << kUsage << '\n', exit_ok;
@@ -180,7 +201,7 @@ int dispatch(const cxxopts::ParseResult& parsed) {
     if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
     return compare_command(args);
   }
-  std::cerr << kUsage << '\n';
+  std::cerr << "error: " << usage_problem(words) << "\n\n" << kUsage << '\n';
   return exit_bad_input;
 }
 

@@ -131,6 +131,18 @@ struct ValidityOptions {
   double rest_share = 0.9;
 };
 
+// When a valid run warns (run/warnings.hpp): what a user needs to know about
+// what the run did, printed on stderr, in summary.json and first in the report.
+struct WarningOptions {
+  // A motor held at its voltage or current limit for more than this share of
+  // the run: it cannot give what it is asked, and the arm follows the limit.
+  // 5 %: brief peaks at a task's start and end are normal, a tenth is not.
+  double saturation_share = 0.05;
+  // [m] the hand farther than this from its desired point at some sample (a
+  // task): 1 mm, a visible miss for a hand writing or placing on a table.
+  double hand_error = 1e-3;
+};
+
 // Revolute joint i: the frame of link i is the frame of link i-1 (or the base)
 // moved by the fixed origin transform, then rotated by q_i about `axis`.
 struct Joint {
@@ -240,6 +252,7 @@ struct Model {
   std::vector<TableBox> table;
   ContactOptions contact;
   ValidityOptions validity;
+  WarningOptions warn;
 
   Effects effects;
   Options options;

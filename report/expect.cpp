@@ -1,5 +1,7 @@
 #include "report/expect.hpp"
 
+#include "report/expect_paths.hpp"
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -347,37 +349,12 @@ class Evaluator {
     throw ExpectError(text_, n.column, message);
   }
 
-  static std::string keys_of(const nlohmann::ordered_json& node) {
-    std::string keys;
-    int shown = 0;
-    for (const auto& [key, value] : node.items()) {
-      if (shown++ == 14) return keys + ", ...";
-      keys += (keys.empty() ? "" : ", ") + key;
-    }
-    return keys;
-  }
-
   nlohmann::ordered_json lookup(const Node& n) {
+    if (const auto problem = path_problem(metrics_, n.segments, PathCheck::exact))
+      fail(n, "no metric \"" + n.text + "\": " + *problem);
     const nlohmann::ordered_json* node = &metrics_;
-    std::string walked;
-    for (const std::string& s : n.segments) {
-      const nlohmann::ordered_json* next = nullptr;
-      if (node->is_object() && node->contains(s)) next = &(*node)[s];
-      if (node->is_array() && s.find_first_not_of("0123456789") == std::string::npos &&
-          std::stoul(s) < node->size())
-        next = &(*node)[std::stoul(s)];
-      if (!next) {
-        std::string hint =
-            node->is_object() ? " (" + std::string(walked.empty() ? "top level" : walked) +
-                                    " has: " + keys_of(*node) + ")"
-            : node->is_array()
-                ? " (" + walked + " is a list of " + std::to_string(node->size()) + ")"
-                : " (" + walked + " is " + type_name(*node) + ")";
-        fail(n, "no metric \"" + n.text + "\": nothing at \"" + s + "\"" + hint);
-      }
-      walked += (walked.empty() ? "" : ".") + s;
-      node = next;
-    }
+    for (const std::string& s : n.segments)
+      node = node->is_array() ? &(*node)[std::stoul(s)] : &(*node)[s];
     bool seen = false;
     for (const auto& v : values) seen = seen || v.first == n.text;
     if (!seen) values.push_back({n.text, value_text(*node)});
@@ -486,6 +463,22 @@ Expectation::Outcome Expectation::evaluate(const nlohmann::ordered_json& metrics
                       "the expression gives " + std::string(type_name(result)) + " (" +
                           value_text(result) + "), not true/false: compare it, e.g. " + "... < 1");
   return {result.get<bool>(), std::move(evaluator.values)};
+}
+
+namespace {
+
+void check_paths_of(const Expectation::Node& n, const std::string& text,
+                    const nlohmann::ordered_json& shape) {
+  if (n.kind == Expectation::Node::path)
+    if (const auto problem = path_problem(shape, n.segments, PathCheck::shape))
+      throw ExpectError(text, n.column, "no metric \"" + n.text + "\": " + *problem);
+  for (const auto& operand : n.operands) check_paths_of(*operand, text, shape);
+}
+
+}  // namespace
+
+void Expectation::check_paths(const nlohmann::ordered_json& shape) const {
+  check_paths_of(*root_, text_, shape);
 }
 
 std::string describe(const ExpectError& e) {

@@ -55,6 +55,12 @@ class Expectation {
   // an operator gets the wrong types, or the result is not true/false.
   Outcome evaluate(const nlohmann::ordered_json& metrics) const;
 
+  // Before a run: every metric path resolves in `shape`, a summary.json of
+  // the same scenario with placeholder values (lists and nulls there hold
+  // anything). Throws ExpectError naming the path, what is there and the
+  // nearest path that resolves (with a variant's prefix where one is needed).
+  void check_paths(const nlohmann::ordered_json& shape) const;
+
   const std::string& text() const { return text_; }
 
   struct Node;

@@ -1,6 +1,8 @@
 // The elbowsim command line, run as a process: exit codes, messages, outputs.
 #include <doctest/doctest.h>
 
+#include <chrono>
+
 #include "app/output/folder_lock.hpp"
 #include "support/process.hpp"
 #include "support/scratch.hpp"
@@ -33,6 +35,57 @@ TEST_CASE("cli: --help and --version exit 0; unknown command exits 2") {
   const Outcome bad = run("frobnicate x");
   CHECK(bad.exit_code == 2);
   CHECK(bad.output.find("usage:") != std::string::npos);
+}
+
+TEST_CASE("cli: every usage error says why before the usage text (exit 2)") {
+  const std::pair<const char*, const char*> cases[] = {
+      {"", "error: no command given"},
+      {"frobnicate x", "error: unknown command 'frobnicate'"},
+      {"run", "error: run takes exactly one SCENARIO (got 0)"},
+      {"run a.yaml b.yaml", "error: run takes exactly one SCENARIO (got 2: 'a.yaml' 'b.yaml')"},
+      {"report", "error: report takes exactly one RUN_DIR (got 0)"},
+      {"sweep s.yaml --key task.duration", "error: sweep needs both --key KEY and --values"},
+      {"compare runs/a", "error: compare needs at least two run folders (got 1: 'runs/a')"},
+  };
+  for (const auto& [arguments, reason] : cases) {
+    CAPTURE(arguments);
+    const Outcome r = run(arguments);
+    CHECK(r.exit_code == 2);
+    CHECK(r.output.find(reason) == 0);
+    CHECK(r.output.find("usage:") != std::string::npos);
+  }
+}
+
+TEST_CASE("cli: --expect naming a metric that is not there fails before simulating, with the nearest path") {
+  const fs::path dir = scratch("cli", "expect_early");
+  // The experiment takes seconds to simulate: refused in far less, nothing written.
+  const std::string experiment = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_experiment.yaml";
+  const auto start = std::chrono::steady_clock::now();
+  const Outcome r = run("run " + experiment + " --out " + dir.string() +
+                        " --no-render --expect 'elbow_on.metrics.energy_inn < 3'");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  INFO(r.output);
+  CHECK(r.exit_code == 2);
+  CHECK(r.output.find("no metric \"elbow_on.metrics.energy_inn\"") != std::string::npos);
+  CHECK(r.output.find("did you mean elbow_on.metrics.energy_in?") != std::string::npos);
+  CHECK(fs::is_empty(dir));
+  CHECK(seconds < 5);  // (loading alone; the runs take about 6 s of CPU)
+  // Without the variant's prefix: the same path under each variant is suggested.
+  const Outcome bare = run("run " + experiment + " --out " + dir.string() +
+                           " --no-render --expect 'metrics.energy_in < 3'");
+  CHECK(bare.exit_code == 2);
+  CHECK(bare.output.find("did you mean elbow_on.metrics.energy_in or elbow_off.metrics.energy_in?") !=
+        std::string::npos);
+  CHECK(fs::is_empty(dir));
+  // A scene without variants; lists (warnings) hold any index before the run.
+  const Outcome single = run("run " + kPendulum + " --out " + dir.string() +
+                             " --expect 'energy_final.jolue >= 0' --expect 'len(warnings) == 0'");
+  CHECK(single.exit_code == 2);
+  CHECK(single.output.find("did you mean energy_final.joule?") != std::string::npos);
+  CHECK(single.output.find("len(warnings)") == std::string::npos);  // the valid one is not blamed
+  const Outcome fine = run("run " + kPendulum + " --out " + dir.string() +
+                           " --expect 'energy_final.joule >= 0' --expect 'len(warnings) == 0'");
+  CHECK(fine.exit_code == 0);
 }
 
 TEST_CASE("cli: run writes trajectory.csv and summary.json, byte-identical on a second run") {
@@ -192,4 +245,21 @@ TEST_CASE("cli: report and compare refuse a cut or mismatched run folder (exit 2
   std::ofstream(dir / "summary" / "summary.json", std::ios::trunc) << "{\"completed\": tr";
   CHECK(run("report " + (dir / "summary").string()).exit_code == 2);
   CHECK(run("report " + (dir / "good").string()).exit_code == 0);
+}
+
+TEST_CASE("cli: validate prints where each elbow is against the table, per variant") {
+  const std::string experiment = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_experiment.yaml";
+  const Outcome r = run("validate " + experiment);
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  // The task's first pose: the elbow rests (elbow_on) or is lifted 2 cm (elbow_off).
+  CHECK(r.output.find("elbow      elbow_on: elbow (link 1, r 0.03 m) at the task's first pose: "
+                      "centre (") != std::string::npos);
+  CHECK(r.output.find("elbow_on: elbow (link 1, r 0.03 m) at the task's first pose") != std::string::npos);
+  const std::size_t on = r.output.find("elbow_on: elbow");
+  const std::size_t off = r.output.find("elbow_off: elbow");
+  REQUIRE(on != std::string::npos);
+  REQUIRE(off != std::string::npos);
+  CHECK(r.output.find("on the table (box 0", on) < off);
+  CHECK(r.output.find("20 mm above box 0", off) != std::string::npos);
 }

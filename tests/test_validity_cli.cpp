@@ -108,3 +108,43 @@ TEST_CASE("a run whose steps shrink to nothing stops as stalled (exit 3, in seco
   CHECK(summary["completed"] == false);
   CHECK(summary["final_time"].get<double>() < 4.8);
 }
+
+TEST_CASE("a 3-link, 3 kg arm on the default motors (1:1 gear, 0.05 N m/A) warns that they saturate") {
+  // The default motor holds at most Km V_max / R = 0.05 x 24 / 1 = 1.2 N m
+  // against the ~8 N m gravity puts on the shoulder: it sits at its voltage
+  // limit the whole run. Valid (the numbers are right), but not a design
+  // anyone meant: stderr, summary.json and the saturation shares say so.
+  const fs::path dir = t::scratch("validity", "weak_motors");
+  const fs::path scene = dir / "weak.yaml";
+  t::write_file(scene, R"(name: weak_motors
+robot:
+  planar:
+    links:
+      - {length: 0.4, mass: 1.0}
+      - {length: 0.3, mass: 1.0}
+      - {length: 0.2, mass: 1.0}
+initial: {q: [0.3, -0.6, -0.4]}
+task: {path: line, duration: 1.0, points: [start, [0.6, 0, 0.1]]}
+controller: {type: pd_feedforward}
+)");
+  const t::Outcome r = t::run_elbowsim("run " + scene.string() + " --out " + (dir / "out").string() +
+                                       " --no-render --no-report");
+  INFO(r.output);
+  CHECK(r.exit_code == 0);
+  CHECK(has(r.output, "warning: motor 0 is at its voltage limit (24 V) for 100 % of the run"));
+  CHECK(has(r.output, "warning: the hand was"));
+  const auto summary = nlohmann::json::parse(t::slurp(dir / "out" / "summary.json"));
+  CHECK(summary["valid"] == true);
+  REQUIRE(summary["saturation_share"].size() == 3);
+  CHECK(summary["saturation_share"][0].get<double>() == 1.0);
+  bool listed = false;
+  for (const auto& w : summary["warnings"]) listed = listed || has(w.get<std::string>(), "saturation_share 5 %");
+  CHECK(listed);
+  // The threshold is the scenario's: at 100 % nothing is over it.
+  const t::Outcome quiet = t::run_elbowsim("run " + scene.string() + " --out " + (dir / "quiet").string() +
+                                           " --no-render --no-report --set warnings.saturation_share=1"
+                                           " --set warnings.hand_error=10");
+  CHECK(quiet.exit_code == 0);
+  CHECK_FALSE(has(quiet.output, "voltage limit"));
+  CHECK_FALSE(has(quiet.output, "warning: the hand"));
+}

@@ -114,6 +114,15 @@ int report_outputs(const std::filesystem::path& folder);
 // --expect (report/expect.hpp): prints each malformed expression with its
 // column; false if any.
 bool expectations_well_formed(const std::vector<std::string>& expressions);
+// What summary.json (or, with variants, variant -> summary.json) a run of
+// `scenario` with `args` writes, as placeholders: for expectations_fit.
+// Throws ScenarioError when a variant does not load.
+nlohmann::ordered_json expectation_shape(const RunArguments& args, const Scenario& scenario);
+// Before simulating: each well formed and every metric path it names present in
+// `shape` (summary_shape, or variant -> summary_shape); prints each problem with
+// the nearest valid path; false if any.
+bool expectations_fit(const std::vector<std::string>& expressions,
+                      const nlohmann::ordered_json& shape);
 // Evaluates them over `metrics`: exit_ok, exit_expectation_failed, or
 // exit_bad_input (malformed, or naming a metric that is not there).
 int check_expectations(const std::vector<std::string>& expressions,

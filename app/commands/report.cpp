@@ -17,6 +17,20 @@ bool expectations_well_formed(const std::vector<std::string>& expressions) {
   return ok;
 }
 
+bool expectations_fit(const std::vector<std::string>& expressions,
+                      const nlohmann::ordered_json& shape) {
+  bool ok = true;
+  for (const report::Expectation& e : report::parse_expectations(expressions, std::cerr, ok)) {
+    try {
+      e.check_paths(shape);
+    } catch (const report::ExpectError& error) {
+      std::cerr << report::describe(error);
+      ok = false;
+    }
+  }
+  return ok;
+}
+
 int check_expectations(const std::vector<std::string>& expressions,
                        const nlohmann::ordered_json& metrics) {
   if (expressions.empty()) return exit_ok;

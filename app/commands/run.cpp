@@ -231,6 +231,14 @@ int run_variants(const RunArguments& args, const Scenario& scenario,
 
 }  // namespace
 
+nlohmann::ordered_json expectation_shape(const RunArguments& args, const Scenario& scenario) {
+  if (scenario.variants.empty()) return summary_shape(scenario, args.check_step);
+  nlohmann::ordered_json shape = nlohmann::ordered_json::object();
+  for (const auto& [name, overrides] : scenario.variants)
+    shape[name] = summary_shape(load_scenario_variant(args.scenario, name, args.sets), args.check_step);
+  return shape;
+}
+
 int run_scenario(const RunArguments& args, const Scenario& scenario,
                  const std::filesystem::path& folder, std::vector<RunRecord>& records) {
   if (!scenario.variants.empty()) return run_variants(args, scenario, folder, records);
@@ -247,6 +255,9 @@ int run_command(const RunArguments& args) {
   Scenario scenario;
   try {
     scenario = load_scenario(args.scenario, args.sets);
+    // A misspelled metric is a usage error too: found before simulating.
+    if (!args.expect.empty() && !expectations_fit(args.expect, expectation_shape(args, scenario)))
+      return exit_bad_input;
   } catch (const ScenarioError& e) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_bad_input;

@@ -1,9 +1,14 @@
+#include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "app/commands/commands.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/cases.hpp"
-#include "engine/run/validity.hpp"
+#include "engine/contact/geometry.hpp"
+#include "engine/control/plan.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/run/warnings.hpp"
 
 namespace elbowsim {
 
@@ -34,12 +39,67 @@ void print_model(const Scenario& s) {
   for (const std::string& w : model_warnings(m)) std::cout << "note       " << w << '\n';
 }
 
+// Where an elbow sphere of `radius` centred at `centre` is against the table:
+// on it, above, into it (mm) or beside it, naming the nearest box.
+std::string place_against_table(const Eigen::Vector3d& centre, double radius,
+                                const std::vector<TableBox>& table) {
+  if (table.empty()) return "no table";
+  int nearest = 0;
+  BoxContact best = sphere_box(centre, radius, table[0]);
+  for (std::size_t b = 1; b < table.size(); ++b) {
+    const BoxContact c = sphere_box(centre, radius, table[b]);
+    if (c.distance < best.distance) best = c, nearest = int(b);
+  }
+  const std::string box = "box " + std::to_string(nearest);
+  const bool over = best.feature == BoxFeature::face && best.normal.z() > 0.5;
+  char text[160];
+  if (std::abs(best.distance) <= 1e-6)
+    std::snprintf(text, sizeof text, "on the table (%s, gap %.2g m)", box.c_str(), best.distance);
+  else if (best.distance < 0)
+    std::snprintf(text, sizeof text, "%.3g mm into %s", -1e3 * best.distance, box.c_str());
+  else
+    std::snprintf(text, sizeof text, "%.3g mm %s %s", 1e3 * best.distance,
+                  over ? "above" : "from", box.c_str());
+  return text;
+}
+
+// Each elbow at the pose the run starts from: the task's first pose (solved
+// as the run solves it) or initial.q.
+void print_elbows(const Scenario& s, const std::string& label) {
+  const Model& m = s.model;
+  if (m.elbows.empty()) return;
+  Eigen::VectorXd q = m.initial.q.size() == m.dof ? m.initial.q : Eigen::VectorXd::Zero(m.dof);
+  std::string pose = "initial.q";
+  if (s.experiment.needs_plan()) {
+    try {
+      q = start_pose(m, s.experiment);
+      pose = "the task's first pose";
+    } catch (const PlanError& e) {
+      std::cout << "elbows     " << label << "the task's first pose: " << e.what() << '\n';
+      return;
+    }
+  }
+  Data data(m);
+  forward_kinematics(m, data, q);
+  for (const Elbow& e : m.elbows) {
+    const Eigen::Vector3d c = point_position(data, e.link, e.point);
+    char centre[96];
+    std::snprintf(centre, sizeof centre, "(%.4g, %.4g, %.4g) m", c.x(), c.y(), c.z());
+    std::cout << "elbow      " << label << e.name << " (link " << e.link << ", r " << e.radius
+              << " m) at " << pose << ": centre " << centre << ", "
+              << place_against_table(c, e.radius, m.table) << '\n';
+  }
+}
+
 }  // namespace
 
 int validate_command(const std::string& scenario, const std::vector<std::string>& sets) {
   try {
     const Scenario s = load_scenario(scenario, sets);
     print_model(s);
+    if (s.variants.empty()) print_elbows(s, "");
+    for (const auto& [variant, overrides] : s.variants)  // (the file alone is not run)
+      print_elbows(load_scenario_variant(scenario, variant, sets), variant + ": ");
     // Every case of the study, with every variant, as montecarlo loads them.
     const auto cases = study::study_cases(s);
     if (!s.study.empty()) {

@@ -1,6 +1,7 @@
 #include "app/output/summary_json.hpp"
 
 #include "engine/dynamics/energy.hpp"
+#include "engine/run/recorder.hpp"
 #include "report/metrics.hpp"
 
 namespace elbowsim {
@@ -115,7 +116,23 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   j["control_loop"] = control_loop_json(scenario.experiment.controller.loop);
   j["contact"] = contact_json(m, result);
   j["warnings"] = result.warnings;
+  if (!result.saturation.empty()) j["saturation_share"] = result.saturation;  // per motor, warnings.hpp
   return j;
+}
+
+nlohmann::ordered_json summary_shape(const Scenario& scenario, bool step_check) {
+  const Model& model = scenario.model;
+  RunResult placeholder;
+  placeholder.trajectory =
+      Recording(trajectory_layout(model, scenario.experiment.needs_plan()));
+  const std::size_t columns = placeholder.trajectory.columns().size();
+  placeholder.trajectory.values.assign(2 * columns, 0.0);
+  placeholder.trajectory.values[columns] = model.options.duration;  // row 1's time
+  placeholder.metrics = compute_metrics(placeholder.trajectory);
+  if (model.has_motor()) placeholder.saturation.assign(static_cast<std::size_t>(model.dof), 0.0);
+  nlohmann::ordered_json shape = run_summary(scenario, placeholder);
+  if (step_check) shape["step_check"] = nullptr;
+  return shape;
 }
 
 }  // namespace elbowsim

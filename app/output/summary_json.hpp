@@ -11,4 +11,10 @@ namespace elbowsim {
 
 nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& result);
 
+// What a run of `scenario` would write as summary.json, with placeholder
+// values (a two-row recording of zeros): its keys, for checking --expect
+// paths before simulating. With `step_check`, a null step_check (anything
+// under it is accepted).
+nlohmann::ordered_json summary_shape(const Scenario& scenario, bool step_check);
+
 }  // namespace elbowsim

@@ -87,8 +87,8 @@ Scenario read(const Value& root, const Source& source, OverrideSets& sets,
               std::vector<VariantSpec::Entry>& beliefs, bool plant = true) {
   root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "elbows",
                    "table", "contact", "initial", "simulation", "inputs", "output", "render",
-                   "task", "controller", "hand_load", "variants", "validity", "uncertainty",
-                   "joint_friction", "study"});
+                   "task", "controller", "hand_load", "variants", "validity", "warnings",
+                   "uncertainty", "joint_friction", "study"});
   Scenario s;
   s.file = source.file();
   Model& model = s.model;
@@ -103,6 +103,7 @@ Scenario read(const Value& root, const Source& source, OverrideSets& sets,
   model.table = read_table(root.get("table"));
   model.contact = read_contact(root.get("contact"));
   model.validity = read_validity(root.get("validity"));
+  model.warn = read_warnings(root.get("warnings"));
   model.joint_friction = read_joint_friction(
       root.get("joint_friction"),
       root.get("effects").present() ? root.get("effects").get("joint_friction") : root.get("effects"),

@@ -40,6 +40,7 @@ std::vector<Elbow> read_elbows(const Value& elbows, const Model& model, bool pla
 std::vector<TableBox> read_table(const Value& table);  // optional; boxes: one or more
 ContactOptions read_contact(const Value& contact);     // optional; defaults: ContactOptions
 ValidityOptions read_validity(const Value& validity);  // optional; defaults: ValidityOptions
+WarningOptions read_warnings(const Value& warnings);  // optional; defaults: WarningOptions
 // joint_friction (with effects.joint_friction): one JointFriction per joint.
 std::vector<JointFriction> read_joint_friction(const Value& section, const Value& effect, int dof);
 // effects.contact: true needs a non-empty elbows list and a table. Call after

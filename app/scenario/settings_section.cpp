@@ -82,6 +82,20 @@ ValidityOptions read_validity(const Value& validity) {
   return out;
 }
 
+WarningOptions read_warnings(const Value& warnings) {
+  WarningOptions out;
+  if (!warnings.present()) return out;
+  warnings.allow_keys({"saturation_share", "hand_error"});
+  Value share = warnings.get("saturation_share");
+  if (share.present()) {
+    out.saturation_share = share.number();
+    if (!(out.saturation_share >= 0 && out.saturation_share <= 1))
+      share.fail("must be in [0, 1] (got " + format_number(out.saturation_share) + ")");
+  }
+  out.hand_error = value_or(warnings.get("hand_error"), out.hand_error, positive);
+  return out;
+}
+
 // Without simulation.duration a scene with a task runs to the task's end
 // plus 0.5 s to settle, so sweeps over task.duration compare like with like.
 double default_duration(const Value& simulation, const Value& task) {

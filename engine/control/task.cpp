@@ -22,17 +22,54 @@ struct Curve {  // position and first two derivatives with respect to the path p
   Eigen::Vector3d p, dp, ddp;
 };
 
-// Catmull-Rom spline through the points, parameter u in [0, n-1].
-Curve waypoints(const std::vector<Eigen::Vector3d>& pts, double u) {
+// The natural cubic spline through the points (Ahlberg, Nilson & Walsh 1967),
+// on chord-length knots u_0 = 0, u_i = u_(i-1) + |P_i - P_(i-1)|: C2 in u, so
+// with a C2 time scaling the hand's planned acceleration has no jumps (a
+// Catmull-Rom spline is only C1: its acceleration jumps at every point). The
+// second derivatives M_i at the knots solve the tridiagonal system
+//   h_(i-1) M_(i-1) + 2 (h_(i-1) + h_i) M_i + h_i M_(i+1)
+//     = 6 ((P_(i+1) - P_i) / h_i - (P_i - P_(i-1)) / h_(i-1)),   M_0 = M_(n-1) = 0,
+// by the Thomas algorithm (diagonally dominant: no pivoting). A point equal
+// to the one before it (within 1e-12 m) adds no chord and is dropped.
+// Parameter s in [0, 1] maps to u = s u_(n-1); derivatives are with respect to s.
+Curve waypoints(std::vector<Eigen::Vector3d> pts, double s) {
+  pts.erase(std::unique(pts.begin(), pts.end(),
+                        [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+                          return (a - b).norm() <= 1e-12;
+                        }),
+            pts.end());
   const int n = int(pts.size());
-  const int k = std::clamp(int(std::floor(u)), 0, n - 2);
-  const double s = u - k;
-  auto at = [&](int i) { return pts[std::clamp(i, 0, n - 1)]; };
-  const Eigen::Vector3d p0 = at(k - 1), p1 = at(k), p2 = at(k + 1), p3 = at(k + 2);
-  const Eigen::Vector3d a = 2 * p1, b = p2 - p0, c = 2 * p0 - 5 * p1 + 4 * p2 - p3,
-                        d = -p0 + 3 * p1 - 3 * p2 + p3;
-  return {0.5 * (a + b * s + c * s * s + d * s * s * s), 0.5 * (b + 2 * c * s + 3 * d * s * s),
-          0.5 * (2 * c + 6 * d * s)};
+  if (n < 2) return {pts[0], Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  std::vector<double> h(std::size_t(n - 1)), knot(std::size_t(n), 0.0);
+  for (int i = 0; i + 1 < n; ++i) {
+    h[std::size_t(i)] = (pts[std::size_t(i + 1)] - pts[std::size_t(i)]).norm();
+    knot[std::size_t(i + 1)] = knot[std::size_t(i)] + h[std::size_t(i)];
+  }
+  // Forward sweep of the Thomas algorithm on rows 1 .. n-2, then back substitution.
+  std::vector<Eigen::Vector3d> M(std::size_t(n), Eigen::Vector3d::Zero()), rhs(M);
+  std::vector<double> upper(std::size_t(n), 0.0);
+  for (int i = 1; i + 1 < n; ++i) {
+    const double hl = h[std::size_t(i - 1)], hr = h[std::size_t(i)];
+    const Eigen::Vector3d r = 6 * ((pts[std::size_t(i + 1)] - pts[std::size_t(i)]) / hr -
+                                   (pts[std::size_t(i)] - pts[std::size_t(i - 1)]) / hl);
+    const double pivot = 2 * (hl + hr) - hl * upper[std::size_t(i - 1)];
+    upper[std::size_t(i)] = hr / pivot;
+    rhs[std::size_t(i)] = (r - hl * rhs[std::size_t(i - 1)]) / pivot;
+  }
+  for (int i = n - 2; i >= 1; --i)
+    M[std::size_t(i)] = rhs[std::size_t(i)] - upper[std::size_t(i)] * M[std::size_t(i + 1)];
+  // The segment holding u, and the spline there.
+  const double total = knot.back(), u = std::clamp(s, 0.0, 1.0) * total;
+  int k = 0;
+  while (k < n - 2 && u > knot[std::size_t(k + 1)]) ++k;
+  const double hk = h[std::size_t(k)], b = u - knot[std::size_t(k)], a = hk - b;
+  const Eigen::Vector3d &P0 = pts[std::size_t(k)], &P1 = pts[std::size_t(k + 1)];
+  const Eigen::Vector3d &M0 = M[std::size_t(k)], &M1 = M[std::size_t(k + 1)];
+  const Eigen::Vector3d c0 = P0 / hk - M0 * hk / 6, c1 = P1 / hk - M1 * hk / 6;
+  const Eigen::Vector3d p = (M0 * a * a * a + M1 * b * b * b) / (6 * hk) + c0 * a + c1 * b;
+  const Eigen::Vector3d dp = (M1 * b * b - M0 * a * a) / (2 * hk) - c0 + c1;
+  const Eigen::Vector3d ddp = (M0 * a + M1 * b) / hk;
+  return {p, dp * total, ddp * total * total};
 }
 
 Curve circle(const HandTask& task, const Eigen::Vector3d& center, double s) {
@@ -56,13 +93,7 @@ Curve curve(const HandTask& task, const std::vector<Eigen::Vector3d>& pts,
     case HandTask::Path::hold: return {pts[0], Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
     case HandTask::Path::line: return {pts[0] + s * (pts[1] - pts[0]), pts[1] - pts[0], Eigen::Vector3d::Zero()};
     case HandTask::Path::circle: return circle(task, center, s);
-    case HandTask::Path::waypoints: {
-      const double span = double(pts.size() - 1);
-      Curve c = waypoints(pts, s * span);
-      c.dp *= span;
-      c.ddp *= span * span;
-      return c;
-    }
+    case HandTask::Path::waypoints: return waypoints(pts, s);
   }
   return {pts[0], Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
 }

@@ -16,8 +16,8 @@ struct HandTask {
   Timing timing = Timing::quintic;  // s(tau), tau = (t - start_delay) / duration in [0, 1]
   double start_delay = 0.0;         // [s] hold the start point this long
   double duration = 1.0;            // [s] > 0, time to traverse the path
-  // line: points[0] -> points[1]; waypoints: through all points (piecewise
-  // linear in arc length); hold: points[0]. A non-finite (NaN) points[0], or no
+  // line: points[0] -> points[1]; waypoints: through all points (a natural
+  // cubic spline on chord-length knots, C2; consecutive points differ); hold: points[0]. A non-finite (NaN) points[0], or no
   // points, means the hand's position at the initial pose.
   std::vector<Eigen::Vector3d> points;  // [m] world (offsets with from_start)
   // circle: centre, radius, plane normal, start angle; one full turn.

@@ -37,6 +37,7 @@ struct RunResult {
   ContactStats contact;
   long collision_worlds_built = 0;  // by this run
   Metrics metrics;                  // computed from the trajectory at the end
+  std::vector<double> saturation;   // [dof] share of the run each motor spent at its limit (warnings.hpp); empty without motors
 };
 
 }  // namespace elbowsim

@@ -12,6 +12,7 @@
 #include "engine/run/recorder.hpp"
 #include "engine/run/step.hpp"
 #include "engine/run/validity.hpp"
+#include "engine/run/warnings.hpp"
 
 namespace elbowsim {
 
@@ -73,6 +74,24 @@ void record_rows_in_step(const Model& model, Data& data, RunResult& result, doub
   if (!end_recorded && finished(model, data)) record(model, data, result);
 }
 
+void append(std::vector<std::string>& to, std::vector<std::string> more) {
+  for (std::string& w : more) to.push_back(std::move(w));
+}
+
+// What the user needs to know about the run (run/warnings.hpp), after the
+// warnings its steps collected: what it did, then its model, then its plan.
+void add_warnings(const Model& model, const Data& data, RunResult& result) {
+  const Plan* plan = data.controller ? data.controller->plan.get() : nullptr;
+  append(result.warnings, saturation_warnings(model, result.saturation));
+  append(result.warnings, motor_rating_warnings(model, result.metrics));
+  if (plan && model.effects.contact)
+    append(result.warnings,
+           lift_off_warnings(model, data.contact.geometry, result.events, plan->resting));
+  append(result.warnings, hand_error_warnings(model, result.trajectory));
+  append(result.warnings, model_warnings(model));
+  if (plan) append(result.warnings, plan->warnings);
+}
+
 void finish(const Model& model, Data& data, RunResult& result) {
   result.completed = finished(model, data);
   // Over the whole run: the energy account closed, the elbows the task rests
@@ -91,10 +110,8 @@ void finish(const Model& model, Data& data, RunResult& result) {
   result.balance_residual = balance_residual(data.energy, data.energy_initial);
   result.contact = {data.contact.max_abs_C, data.contact.max_abs_Cd, data.contact.dependent_steps};
   result.metrics = compute_metrics(result.trajectory);
-  for (std::string& w : motor_rating_warnings(model, result.metrics)) result.warnings.push_back(std::move(w));
-  for (std::string& w : model_warnings(model)) result.warnings.push_back(std::move(w));
-  if (data.controller && data.controller->plan)
-    for (const std::string& w : data.controller->plan->warnings) result.warnings.push_back(w);
+  result.saturation = saturation_shares(model, result.trajectory);
+  add_warnings(model, data, result);
 }
 
 }  // namespace

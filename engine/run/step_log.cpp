@@ -1,6 +1,6 @@
 #include "engine/run/step_log.hpp"
 
-#include "engine/run/validity.hpp"
+#include "engine/run/warnings.hpp"
 
 #include <sstream>
 
@@ -69,7 +69,7 @@ std::string part_name(const Model& model, const Failure& f) {
 std::string step_advice(const Model& model, const Failure& f) {
   std::ostringstream s;
   const double h = model.options.step;
-  // Motor electrics far faster than a fixed step (validity.hpp,
+  // Motor electrics far faster than a fixed step (warnings.hpp,
   // stiffness_warnings): a smaller step is the expensive fix, the implicit
   // integrator the cheap one.
   if (!stiffness_warnings(model).empty()) {

@@ -51,25 +51,4 @@ void check_planned_rest(const Model& model, const std::vector<int>& planned_rest
 // damping and a tracking controller's gains); 0 when it cannot be estimated.
 double stable_step_estimate(const Model& model, Data& data);
 
-// One sentence per motor whose RMS current over the run (the metrics'
-// current_rms) exceeds its rated continuous current: the run is valid, the
-// design is not (a real motor of that rating would overheat).
-std::vector<std::string> motor_rating_warnings(const Model& model, const Metrics& metrics);
-
-// A fixed-step integrator on motor electrics far faster than its step (L/R
-// under a tenth of it): stable, but first order there (engine/MODEL.md,
-// "Integration"): one warning naming the fastest motor and the fix.
-std::vector<std::string> stiffness_warnings(const Model& model);
-
-// An elbow on link 0: its point moves with joint 0 alone (the base is fixed),
-// so while it rests or sticks the table holds joint 0 still, and with friction
-// its normal and friction rows are one row up to scale: rigid-body mechanics
-// fixes only the force's moment about joint 0 (the run uses the minimum-norm
-// split). One sentence per such elbow; the run is valid.
-std::vector<std::string> first_link_elbow_warnings(const Model& model);
-
-// What a run says about its model before it starts (stiffness, first-link
-// elbows), in that order; printed by `validate` too.
-std::vector<std::string> model_warnings(const Model& model);
-
 }  // namespace elbowsim

@@ -41,4 +41,8 @@ inline std::string slurp(const std::filesystem::path& path) {
   return text.str();
 }
 
+inline void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
 }  // namespace elbowsim::testing

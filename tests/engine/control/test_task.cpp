@@ -114,7 +114,7 @@ TEST_CASE("hand_target: velocity and acceleration are the time derivatives of th
       CHECK(approx(now.a, Eigen::Vector3d((up.v - down.v) / (2 * h)), 1e-7));
     }
   }
-  // Waypoints pass through every point (Catmull-Rom), at s = k / 3.
+  // Waypoints end at the last point when the time scaling does (s = 1).
   CHECK(approx(hand_target(waypoints, Eigen::Vector3d::Zero(), 1.3).p, waypoints.points[3], 1e-15));
 }
 
@@ -204,4 +204,71 @@ TEST_CASE("hand_target with from_start: points and centre are offsets from the s
   // Without from_start the offsets are world positions: the hand would jump.
   offset.from_start = false;
   CHECK((hand_target(offset, start, 2.0).p - hand_target(world, start, 2.0).p).norm() > 0.5);
+}
+
+namespace {
+
+// The time at which the quintic time scaling reaches s (bisection; s is
+// monotone on [0, 1]), for a task without delay and duration 1.
+double time_at(double s) {
+  double lo = 0, hi = 1;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (time_scaling(HandTask::Timing::quintic, mid)[0] < s ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+//   P1 o       o P3
+//     / \     / \        waypoints through a natural cubic spline on
+//  P0o   \   /   o P4    chord-length knots: through every point, C2, and
+//         o P2           straight (zero curvature) at both ends
+TEST_CASE("hand_target of waypoints: a C2 natural spline through every point at its chord-length parameter") {
+  HandTask task;
+  task.path = HandTask::Path::waypoints;
+  task.points = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.02, 0, 0.03),
+                 Eigen::Vector3d(0.05, 0.01, -0.01), Eigen::Vector3d(0.06, 0, 0.02),
+                 Eigen::Vector3d(0.1, 0, 0)};
+  const Eigen::Vector3d none = Eigen::Vector3d::Zero();
+  std::vector<double> knot{0};
+  for (std::size_t i = 1; i < task.points.size(); ++i)
+    knot.push_back(knot.back() + (task.points[i] - task.points[i - 1]).norm());
+  for (std::size_t i = 0; i < task.points.size(); ++i) {
+    CAPTURE(i);
+    // Through the point: bisection puts t within 1e-16 s, the hand within 1e-15 m.
+    const double t = time_at(knot[i] / knot.back());
+    CHECK(approx(hand_target(task, none, t).p, task.points[i], 1e-12));
+    if (i == 0 || i + 1 == task.points.size()) continue;
+    // C2 at an interior point: the acceleration 1e-6 s before and after differs
+    // by about jerk x 2e-6 s (jerk here below 1e3 m/s^3: < 2e-3 m/s^2); a C1
+    // spline's jump at a point is of the order of the acceleration (~1 m/s^2).
+    const Eigen::Vector3d before = hand_target(task, none, t - 1e-6).a;
+    const Eigen::Vector3d after = hand_target(task, none, t + 1e-6).a;
+    CHECK((after - before).norm() < 2e-3);
+    CHECK(after.norm() > 0.1);  // (the acceleration there is not zero by itself)
+  }
+  // Natural ends: d2p/du2 = 0 at u = 0. With s'(0) = s''(0) = 0 the hand's
+  // acceleration vanishes there anyway; check the curve by a path whose time
+  // scaling is past its start: the line from P0 to the next point is tangent
+  // and straight, so p(s) - P0 is parallel to dp/ds to second order.
+  const double t = time_at(1e-4);
+  const HandTarget near = hand_target(task, none, t);
+  const Eigen::Vector3d chord = near.p - task.points[0];
+  CHECK(chord.normalized().cross(near.v.normalized()).norm() < 1e-6);
+}
+
+TEST_CASE("hand_target of waypoints: a point repeated is dropped, not a division by zero") {
+  HandTask task, repeated;
+  task.path = repeated.path = HandTask::Path::waypoints;
+  task.points = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0.1, 0, 0.05), Eigen::Vector3d(0.2, 0, 0)};
+  repeated.points = {task.points[0], task.points[1], task.points[1], task.points[2]};
+  for (double t : {0.0, 0.3, 0.5, 0.8, 1.0}) {
+    const HandTarget a = hand_target(task, Eigen::Vector3d::Zero(), t);
+    const HandTarget b = hand_target(repeated, Eigen::Vector3d::Zero(), t);
+    CHECK(b.p.allFinite());
+    CHECK(approx(a.p, b.p, 1e-15));
+    CHECK(approx(a.a, b.a, 1e-12));
+  }
 }

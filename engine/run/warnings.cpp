@@ -1,0 +1,200 @@
+#include "engine/run/warnings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace elbowsim {
+
+namespace {
+
+// Seconds each recorded row stands for: from its time to the next row's
+// (the last row stands for nothing), and their sum.
+std::vector<double> row_spans(const Recording& recording) {
+  const std::size_t rows = recording.rows();
+  std::vector<double> spans(rows, 0.0);
+  const int t = recording.layout.time();
+  for (std::size_t r = 0; r + 1 < rows; ++r) spans[r] = recording.at(r + 1, t) - recording.at(r, t);
+  return spans;
+}
+
+std::string percent(double share) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g %%", 100 * share);
+  return text;
+}
+
+// A length in the unit that reads best: um below 1 mm, mm below 1 m, else m.
+std::string length_text(double metres) {
+  char text[32];
+  if (metres < 1e-3)
+    std::snprintf(text, sizeof text, "%.3g um", 1e6 * metres);
+  else if (metres < 1)
+    std::snprintf(text, sizeof text, "%.3g mm", 1e3 * metres);
+  else
+    std::snprintf(text, sizeof text, "%.3g m", metres);
+  return text;
+}
+
+}  // namespace
+
+std::vector<double> saturation_shares(const Model& model, const Recording& recording) {
+  const TrajectoryLayout& L = recording.layout;
+  if (!model.has_motor() || !L.has_motors() || L.dof() != model.dof) return {};
+  const std::vector<double> spans = row_spans(recording);
+  double total = 0;
+  for (double s : spans) total += s;
+  std::vector<double> shares(static_cast<std::size_t>(model.dof), 0.0);
+  if (!(total > 0)) return shares;
+  // At a limit to a relative 1e-9: motor.cpp clamps to the limit exactly, a
+  // commanded voltage inside it differs by far more than rounding.
+  constexpr double kAt = 1 - 1e-9;
+  for (int j = 0; j < model.dof; ++j) {
+    const double v_max = model.voltage_limit[j], i_max = model.current_limit[j];
+    double held = 0;
+    for (std::size_t r = 0; r < spans.size(); ++r) {
+      const double v = recording.at(r, L.voltage(j));
+      bool limited = std::abs(v) >= kAt * v_max;
+      if (i_max < std::numeric_limits<double>::infinity()) {
+        const double drop = v - model.km[j] * recording.at(r, L.qd(j));
+        limited = limited || std::abs(drop) >= kAt * model.resistance[j] * i_max;
+      }
+      if (limited) held += spans[r];
+    }
+    shares[static_cast<std::size_t>(j)] = held / total;
+  }
+  return shares;
+}
+
+std::vector<std::string> saturation_warnings(const Model& model,
+                                             const std::vector<double>& shares) {
+  std::vector<std::string> out;
+  for (std::size_t j = 0; j < shares.size(); ++j) {
+    if (!(shares[j] > model.warn.saturation_share)) continue;
+    const bool current = model.current_limit[int(j)] < std::numeric_limits<double>::infinity();
+    char limit[96];
+    std::snprintf(
+        limit, sizeof limit,
+        current ? "voltage limit (%.3g V) or current limit (%.3g A)" : "voltage limit (%.3g V)",
+        model.voltage_limit[int(j)], model.current_limit[int(j)]);
+    out.push_back("motor " + std::to_string(j) + " is at its " + limit + " for " +
+                  percent(shares[j]) + " of the run (warnings: saturation_share " +
+                  percent(model.warn.saturation_share) +
+                  "): it cannot give what it is asked, so the arm follows the limit, not the "
+                  "command; a larger gear ratio, torque constant or voltage, or a slower task, "
+                  "would let it");
+  }
+  return out;
+}
+
+std::vector<std::string> lift_off_warnings(const Model& model, const ContactGeometry& geometry,
+                                           const std::vector<ContactEvent>& events,
+                                           const std::vector<int>& planned_resting) {
+  std::vector<std::string> out;
+  for (int k : planned_resting) {
+    int count = 0;
+    double first = 0;
+    for (const ContactEvent& e : events) {
+      if (e.kind != ContactEvent::Kind::release || e.slot < 0 ||
+          e.slot >= static_cast<int>(geometry.slots.size()))
+        continue;
+      const int primitive = geometry.slots[static_cast<std::size_t>(e.slot)].primitive;
+      if (geometry.primitives[static_cast<std::size_t>(primitive)].elbow != k) continue;
+      if (count++ == 0) first = e.t;
+    }
+    if (count == 0) continue;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "elbow '%s', which the task keeps on the table, lifted off at t = %.4g s%s: the "
+                  "plan assumed it resting (its force and the hand's path are not what was "
+                  "planned while it is up)",
+                  model.elbows[static_cast<std::size_t>(k)].name.c_str(), first,
+                  count > 1 ? (" (" + std::to_string(count) + " times in all)").c_str() : "");
+    out.emplace_back(text);
+  }
+  return out;
+}
+
+std::vector<std::string> hand_error_warnings(const Model& model, const Recording& recording) {
+  const int column = recording.layout.hand_error();
+  if (column < 0 || recording.rows() == 0) return {};
+  std::size_t worst = 0;
+  for (std::size_t r = 1; r < recording.rows(); ++r)
+    if (recording.at(r, column) > recording.at(worst, column)) worst = r;
+  const double largest = recording.at(worst, column);
+  if (!(largest > model.warn.hand_error)) return {};
+  char when[48];
+  std::snprintf(when, sizeof when, "%.4g s", recording.at(worst, recording.layout.time()));
+  return {"the hand was " + length_text(largest) + " from its desired point at t = " + when +
+          ", above warnings: hand_error (" + length_text(model.warn.hand_error) +
+          "): the arm did not do the task it was given"};
+}
+
+std::vector<std::string> motor_rating_warnings(const Model& model, const Metrics& metrics) {
+  std::vector<std::string> out;
+  const Metric* rms = metrics.find("current_rms");
+  if (!model.has_motor() || !rms) return out;
+  for (int j = 0; j < model.dof; ++j) {
+    const double rated = model.motors[static_cast<std::size_t>(j)].rated_current;
+    const double i = rms->values[static_cast<std::size_t>(j)];
+    if (!(i > rated)) continue;
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "motor %d carries %.3g A RMS, %.2g times its rated continuous current %.3g A "
+                  "(motors: rated_current): a real motor of this rating would overheat",
+                  j, i, i / rated, rated);
+    out.emplace_back(text);
+  }
+  return out;
+}
+
+std::vector<std::string> stiffness_warnings(const Model& model) {
+  std::vector<std::string> out;
+  if (!model.has_current_state() || is_adaptive(model.options.integrator) || model.dof == 0 ||
+      model.inductance.size() != model.dof || model.resistance.size() != model.dof)
+    return out;  // (an unfinalized model has no motor constants yet)
+  int fastest = 0;
+  for (int j = 1; j < model.dof; ++j)
+    if (model.inductance[j] / model.resistance[j] <
+        model.inductance[fastest] / model.resistance[fastest])
+      fastest = j;
+  const double tau = model.inductance[fastest] / model.resistance[fastest];
+  if (!(tau < 0.1 * model.options.step)) return out;
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "motor %d's electrical time constant L/R = %.3g s is under a tenth of the step "
+                "%.3g s: the %s integrator stays stable there but its currents and angles are only "
+                "first-order accurate (engine/MODEL.md, Integration); for accurate currents use "
+                "simulation.integrator: ros34pw2 (or motor: quasi_static)",
+                fastest, tau, model.options.step, to_string(model.options.integrator));
+  out.emplace_back(text);
+  return out;
+}
+
+std::vector<std::string> first_link_elbow_warnings(const Model& model) {
+  std::vector<std::string> out;
+  if (!model.effects.contact) return out;
+  for (const Elbow& e : model.elbows) {
+    if (e.link != 0) continue;
+    std::string text =
+        "elbow '" + e.name +
+        "' is on link 0, whose points move with joint 0 alone: while it rests on the "
+        "table joint 0 is held still (the arm moves with joints 1 and up)";
+    if (model.effects.friction)
+      text +=
+          "; its normal and friction rows of M* are then dependent (rank 1), so only the "
+          "force's moment about joint 0 is determined and the minimum-norm split between "
+          "normal and friction force is used";
+    out.push_back(std::move(text));
+  }
+  return out;
+}
+
+std::vector<std::string> model_warnings(const Model& model) {
+  std::vector<std::string> out = stiffness_warnings(model);
+  for (std::string& w : first_link_elbow_warnings(model)) out.push_back(std::move(w));
+  return out;
+}
+
+}  // namespace elbowsim
