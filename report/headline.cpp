@@ -153,8 +153,11 @@ std::string headline_sentence(const RunData& run) {
     parts.push_back("the motors took " + quantity(number(run, "energy_final.electrical_in"), "J") +
                     " of electrical energy and lost " +
                     quantity(number(run, "energy_final.joule"), "J") + " as heat in their windings");
-  if (const Json* rest = at(run, "metrics.rest_fraction"); rest && rest->is_object())
-    parts.push_back("the elbow rested " + rest_text(*rest));
+  if (never_rests(run))
+    parts.push_back("no elbow rested on the table");
+  else if (const Json* rest = at(run, "metrics.rest_fraction"); rest && rest->is_object())
+    parts.push_back(std::string(rest->size() > 1 ? "the elbows rested " : "the elbow rested ") +
+                    rest_text(*rest));
   for (std::size_t k = 0; k < parts.size(); ++k)
     text += (k == 0 ? ": " : k + 1 == parts.size() ? " and " : ", ") + parts[k];
   return text + ".";

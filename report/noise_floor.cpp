@@ -130,15 +130,16 @@ NoiseFloor noise_floor(const std::string& path, const std::vector<RunData>& runs
   if (kind == MetricKind::setting || kind == MetricKind::timing || exact_kind(path))
     return {0, path == "wall_seconds" ? "timing: ratios within 1.25 are noise" : "exact"};
   if (path == "contact.max_abs_C" || starts_with(path, "metrics.elbow_drift_max"))
-    return {1e-9, "1 nm (drift that should be 0)"};
-  if (path == "contact.max_abs_Jc_qd") return {1e-9, "1 nm/s (drift that should be 0)"};
-  if (path == "balance_residual_relative") return {1e-3, "1e-3 (a residual that should be 0)"};
-  if (starts_with(path, "metrics.rest_fraction")) return {0.01, "0.01 of the run"};
+    return {1e-9, "absolute (drift that should be 0)"};
+  if (path == "contact.max_abs_Jc_qd") return {1e-9, "absolute (drift that should be 0)"};
+  if (path == "balance_residual_relative") return {1e-3, "absolute (a residual that should be 0)"};
+  if (starts_with(path, "metrics.rest_fraction")) return {0.01, "absolute (a share of the run)"};
   if (const double change = step_change(path, runs); change >= 0)
     return {kStepFloorFactor * change, "twice the change at half the step (--check-step)"};
   if (is_energy(path)) {
     const double scale = energy_scale(runs);
-    if (scale > 0) return {kRelativeFloor * scale, relative_basis("the energy that flowed", scale, "J")};
+    if (scale > 0)
+      return {kEnergyFloor * scale, "0.1 % of the energy that flowed (" + quantity(scale, "J") + ")"};
   }
   if (path == "final_time" || path == "metrics.time_in_contact") {
     const double scale = duration_scale(runs);

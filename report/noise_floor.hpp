@@ -7,9 +7,10 @@
 //     (--check-step: summary.json step_check), as the accuracy floor;
 //   - else 1 % of the quantity's scale: the largest magnitude of that
 //     quantity (all joints, all elbows, all hand-error measures) in any of
-//     the runs, and for energies the energy that flowed (the sources of the
-//     energy account, report/energy_flow.hpp), so that a kinetic energy of
-//     1e-19 J in a run that moved joules reads "same";
+//     the runs; for energies 0.1 % of the energy that flowed (the sources of
+//     the energy account, report/energy_flow.hpp; 20 x the 5e-5 by which the
+//     experiment's energies move at half the step), so that a kinetic energy
+//     of 1e-19 J in a run that moved joules reads "same";
 //   - quantities that should be zero have an absolute floor: constraint
 //     drift 1 nm (1 nm/s), a relative balance residual 1e-3, a rest
 //     fraction 0.01.
@@ -28,6 +29,7 @@
 namespace elbowsim::report {
 
 constexpr double kRelativeFloor = 0.01;  // of the quantity's scale
+constexpr double kEnergyFloor = 1e-3;    // of the energy that flowed
 constexpr double kStepFloorFactor = 2;   // x the change at half the step
 constexpr double kTimingNoise = 1.25;    // wall-time ratio taken as noise
 

@@ -132,8 +132,8 @@ TEST_CASE("verdict: computed from the numbers") {
     CHECK(c.verdict[1] == "on: 75 % smaller RMS hand error than off (1e-08 m vs 4e-08 m).");
     CHECK(c.verdict[2].find("no confidence interval") != std::string::npos);
   }
-  SUBCASE("within the noise floor (1 % of the energy that flowed) is the same") {
-    const auto c = r::compare_runs({run_with("a", 10.0), run_with("b", 10.09)});
+  SUBCASE("within the noise floor (0.1 % of the energy that flowed) is the same") {
+    const auto c = r::compare_runs({run_with("a", 10.0), run_with("b", 10.009)});
     CHECK(c.verdict[0].find("the same electrical energy within its noise floor") !=
           std::string::npos);
     const auto d = r::compare_runs({run_with("a", 10.0), run_with("b", 10.2)});

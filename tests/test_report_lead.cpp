@@ -170,7 +170,7 @@ TEST_CASE("noise floor: a difference of noise is the same, a real one is not") {
     return c.metrics.front();
   };
   CHECK(row("energy_final.kinetic_links").same);
-  CHECK(row("energy_final.kinetic_links").floor.value > 1e-3);  // 1 % of 16 J that flowed
+  CHECK(row("energy_final.kinetic_links").floor.value > 1e-3);  // 0.1 % of the 16 J that flowed
   CHECK_FALSE(row("energy_final.electrical_in").same);
   CHECK(row("wall_seconds").kind == r::MetricKind::timing);
   CHECK(row("wall_seconds").same);  // 7 %: timing noise, not a result
