@@ -81,11 +81,13 @@ std::string relative_text(const ComparedMetric& m, std::size_t run) {
   const double a = ref.get<double>(), b = v.get<double>();
   const bool same = same_within({ref, v}, m.kind, m.floor, m.path);
   switch (m.kind) {
-    case MetricKind::setting: return same ? "same" : "differs";
+    case MetricKind::setting:
+      return same ? "same" : "differs";
     case MetricKind::timing:
       if (same) return m.path == "wall_seconds" ? "same (timing noise)" : "same";
       return a != 0 ? ratio(a, b) + " (timing)" : "differs (timing)";
-    default: break;
+    default:
+      break;
   }
   if (same) return "same";
   if (std::abs(a) > m.floor.value && m.relative[run]) {
@@ -171,7 +173,8 @@ std::string headline_table(const std::vector<RunData>& runs, const Comparison& c
   for (const HeadlineItem& item : headline_items(pointers)) {
     t += "<tr data-metric=\"" + html::escape(item.path) + "\"><th scope=\"row\">" +
          html::escape(item.label) + "</th>";
-    for (const RunData& run : runs) t += "<td class=\"value\">" + html::escape(headline_value(run, item)) + "</td>";
+    for (const RunData& run : runs)
+      t += "<td class=\"value\">" + html::escape(headline_value(run, item)) + "</td>";
     for (std::size_t r = 1; r < runs.size(); ++r) {
       const std::string text = headline_difference(c, item.path, r);
       t += cell(text, text.rfind("same", 0) == 0 ? "num same" : "num differs");
@@ -214,7 +217,9 @@ std::string figures_of(const FigureSet& figures, const std::string& group) {
 }
 
 std::string section(const std::string& id, const std::string& title, const std::string& body) {
-  return body.empty() ? "" : "<section id=\"" + id + "\">\n<h2>" + title + "</h2>\n" + body + "</section>\n";
+  return body.empty()
+             ? ""
+             : "<section id=\"" + id + "\">\n<h2>" + title + "</h2>\n" + body + "</section>\n";
 }
 
 // How differences are judged, under the verdict.
@@ -233,11 +238,13 @@ std::string page(const std::vector<RunData>& runs, const Comparison& c, const Fi
   std::string names;
   for (const std::string& label : c.labels) names += (names.empty() ? "" : " vs ") + label;
   std::string p = html::page_begin("elbowsim comparison: " + comparison_title(runs));
-  const std::string scenario = runs.front().has_summary() ? runs.front().summary.value("scenario", "") : "";
+  const std::string scenario =
+      runs.front().has_summary() ? runs.front().summary.value("scenario", "") : "";
   p += "<header>\n<h1>Comparison: " + html::escape(names) + "</h1>\n<p class=\"meta\">" +
        (scenario.empty() ? "" : "Scenario " + html::escape(scenario) + "; ") +
        std::to_string(runs.size()) + " recorded runs; differences are to " +
-       html::escape(c.labels[0]) + ", and a difference below its noise floor is shown as "
+       html::escape(c.labels[0]) +
+       ", and a difference below its noise floor is shown as "
        "<em>same</em>. Numbers in <a href=\"" +
        html::escape(fs::relative(json, out).generic_string()) + "\">" +
        html::escape(fs::relative(json, out).generic_string()) + "</a>.</p>\n</header>\n";
@@ -249,7 +256,8 @@ std::string page(const std::vector<RunData>& runs, const Comparison& c, const Fi
   if (!figures_of(figures, "hand_path").empty()) nav += " · <a href=\"#hand-path\">Hand paths</a>";
   if (!figures_of(figures, "energy").empty()) nav += " · <a href=\"#energy\">Energy</a>";
   if (video) nav += " · <a href=\"#video\">Video</a>";
-  p += "<nav class=\"meta\">" + nav + " · <a href=\"#plots\">More plots</a> · <a href=\"#runs-section\">Runs</a>"
+  p += "<nav class=\"meta\">" + nav +
+       " · <a href=\"#plots\">More plots</a> · <a href=\"#runs-section\">Runs</a>"
        " · <a href=\"#metrics-section\">All metrics</a></nav>\n";
   p += section("hand-path", "Hand paths", figures_of(figures, "hand_path"));
   p += section("energy", "Where the energy went", figures_of(figures, "energy"));
@@ -268,7 +276,8 @@ std::string page(const std::vector<RunData>& runs, const Comparison& c, const Fi
        metrics_table(c, MetricKind::numerics, "comparison-numerics") +
        "<h3>Timing and cost: measurements of the computer, not results</h3>\n<p class=\"meta\">One "
        "measurement each on a shared machine; wall-time ratios within 1.25 are noise.</p>\n" +
-       metrics_table(c, MetricKind::timing, "comparison-timing") + "<h3>Settings and initial state</h3>\n" +
+       metrics_table(c, MetricKind::timing, "comparison-timing") +
+       "<h3>Settings and initial state</h3>\n" +
        metrics_table(c, MetricKind::setting, "comparison-settings");
   return p + "</section>\n" + html::page_end();
 }

@@ -25,8 +25,8 @@ struct ComparedMetric {
   // where not a number on both sides or the reference is 0 (and the value not).
   std::vector<std::optional<double>> relative;
   MetricKind kind = MetricKind::result;
-  NoiseFloor floor;   // report/noise_floor.hpp
-  bool same = true;   // every run within the floor of the first
+  NoiseFloor floor;  // report/noise_floor.hpp
+  bool same = true;  // every run within the floor of the first
 };
 
 struct Comparison {

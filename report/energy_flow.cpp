@@ -16,17 +16,26 @@ constexpr double kNegligible = 1e-9;
 
 double number(const Json& node, const char* key) {
   return node.is_object() && node.contains(key) && node[key].is_number() ? node[key].get<double>()
-                                                                          : 0.0;
+                                                                         : 0.0;
 }
 
 // A few words for a bar chart's category.
 std::string short_label(const std::string& key, bool into) {
-  static const std::pair<const char*, const char*> names[] = {
-      {"drawn", "drawn"},         {"regenerated", "regenerated"}, {"electrical_in", "input work"},
-      {"potential", "PE"},        {"kinetic", "KE"},              {"magnetic", "magnetic"},
-      {"joule", "Joule"},         {"viscous", "viscous"},         {"friction", "elbow friction"},
-      {"impact_loss", "impacts"}, {"joint_friction", "joint fr."}, {"gear_loss", "gears"},
-      {"normal_work", "table"},   {"projection", "projection"},   {"external", "hand force"}};
+  static const std::pair<const char*, const char*> names[] = {{"drawn", "drawn"},
+                                                              {"regenerated", "regenerated"},
+                                                              {"electrical_in", "input work"},
+                                                              {"potential", "PE"},
+                                                              {"kinetic", "KE"},
+                                                              {"magnetic", "magnetic"},
+                                                              {"joule", "Joule"},
+                                                              {"viscous", "viscous"},
+                                                              {"friction", "elbow friction"},
+                                                              {"impact_loss", "impacts"},
+                                                              {"joint_friction", "joint fr."},
+                                                              {"gear_loss", "gears"},
+                                                              {"normal_work", "table"},
+                                                              {"projection", "projection"},
+                                                              {"external", "hand force"}};
   for (const auto& [k, name] : names)
     if (key == k) {
       const bool stored = key == "potential" || key == "kinetic" || key == "magnetic";
@@ -120,8 +129,9 @@ std::optional<EnergyFlow> energy_flow(const Json& summary) {
     loss(flow, "friction", "elbow friction (sliding)", number(f, "friction"));
     loss(flow, "impact_loss", "impacts (landings)", number(f, "impact_loss"));
   }
-  for (const auto& [key, label] : {std::pair<const char*, const char*>{"joint_friction", "joint friction"},
-                                   {"gear_loss", "gear loss"}})
+  for (const auto& [key, label] :
+       {std::pair<const char*, const char*>{"joint_friction", "joint friction"},
+        {"gear_loss", "gear loss"}})
     if (number(f, key) != 0) loss(flow, key, label, number(f, key));
   flow.residual = summary.value("balance_residual", 0.0);
   const double scale = std::max(sum(flow.in), sum(flow.out));
@@ -184,13 +194,15 @@ std::vector<std::string> energy_flow_notes(const EnergyFlow& flow) {
                     "the arm gives up becomes current, which heats the windings like any other.");
   }
   if (flow.total_in > 0)
-    notes.push_back("Residual " + quantity(flow.residual, "J") + " (" +
-                    percent(std::abs(flow.residual) / flow.total_in) +
-                    " of the energy in): what the account leaves unexplained, the integration "
-                    "error; exact integration would make it 0 (docs/model.md, \"Energy balance\").");
+    notes.push_back(
+        "Residual " + quantity(flow.residual, "J") + " (" +
+        percent(std::abs(flow.residual) / flow.total_in) +
+        " of the energy in): what the account leaves unexplained, the integration "
+        "error; exact integration would make it 0 (docs/model.md, \"Energy balance\").");
   if (flow.term("external") > 0)
-    notes.push_back("The work of the hand force is not recorded on its own: it is what the "
-                    "recorded terms leave over beyond summary.json's balance_residual.");
+    notes.push_back(
+        "The work of the hand force is not recorded on its own: it is what the "
+        "recorded terms leave over beyond summary.json's balance_residual.");
   return notes;
 }
 

@@ -18,9 +18,9 @@
 namespace elbowsim::report {
 
 struct EnergyTerm {
-  std::string key;    // "drawn", "potential", "joule", ... (the summary's energy key)
-  std::string label;  // "drawn from the supply", "potential energy given up", ...
-  double value = 0;   // [J] >= 0
+  std::string key;          // "drawn", "potential", "joule", ... (the summary's energy key)
+  std::string label;        // "drawn from the supply", "potential energy given up", ...
+  double value = 0;         // [J] >= 0
   std::string short_label;  // "drawn", "PE given up": a bar chart's category
 };
 

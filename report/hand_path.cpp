@@ -40,7 +40,8 @@ double largest_error(const std::vector<const Recording*>& recordings, const Task
     const TrajectoryLayout& L = rec->layout;
     if (!L.has_desired_hand()) continue;
     const auto a = column(*rec, L.hand(plane.a)), b = column(*rec, L.hand(plane.b));
-    const auto da = column(*rec, L.hand_desired(plane.a)), db = column(*rec, L.hand_desired(plane.b));
+    const auto da = column(*rec, L.hand_desired(plane.a)),
+               db = column(*rec, L.hand_desired(plane.b));
     for (std::size_t k = 0; k < a.size(); ++k) {
       const double e = std::hypot(a[k] - da[k], b[k] - db[k]);
       if (std::isfinite(e)) worst = std::max(worst, e);
@@ -159,8 +160,8 @@ HandPathFigures hand_path_figures(const std::vector<const RunData*>& runs,
   HandPathFigures out;
   out.k = error_magnification(recordings, plane);
   out.path = plane_plot(plane, "Hand path in the " + plane.name + " plane — " + title_suffix);
-  plot::LinePlot magnified = plane_plot(
-      plane, "Hand path, error × " + magnification_text(out.k) + " — " + title_suffix);
+  plot::LinePlot magnified =
+      plane_plot(plane, "Hand path, error × " + magnification_text(out.k) + " — " + title_suffix);
   // Actual paths first, the desired ones dashed on top (where they coincide
   // the actual line shows between the dashes), start dots last.
   std::vector<plot::Series> actual, desired, dots, magnified_actual, magnified_dots;
@@ -200,10 +201,13 @@ HandPathFigures hand_path_figures(const std::vector<const RunData*>& runs,
                      plane_note;
   if (any_desired) {
     out.magnified_caption =
-        "The same paths with the tracking error magnified: each sample drawn at desired + k·(actual "
-        "− desired) with k = " + magnification_text(out.k) +
+        "The same paths with the tracking error magnified: each sample drawn at desired + "
+        "k·(actual "
+        "− desired) with k = " +
+        magnification_text(out.k) +
         ", so that the error's shape and where along the path it grows can be seen (an error of "
-        "10 µm is drawn " + quantity(10e-6 * out.k, "m") + " long). " + plane_note;
+        "10 µm is drawn " +
+        quantity(10e-6 * out.k, "m") + " long). " + plane_note;
     out.magnified = std::move(magnified);
   }
   return out;

@@ -26,8 +26,7 @@ TaskPlane task_plane(const std::vector<const Recording*>& recordings);
 // 1, 2 or 5 x 10^n, so that the largest in-plane error of the runs, times k,
 // is at most a tenth of the path's extent; 1 when the errors already show (or
 // there is no desired path).
-double error_magnification(const std::vector<const Recording*>& recordings,
-                           const TaskPlane& plane);
+double error_magnification(const std::vector<const Recording*>& recordings, const TaskPlane& plane);
 
 struct HandPathFigures {
   plot::LinePlot path;                      // desired (dashed) and actual, equal scales

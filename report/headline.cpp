@@ -152,7 +152,8 @@ std::string headline_sentence(const RunData& run) {
   if (has(run, "energy_final.electrical_in") && number(run, "energy_final.drawn") > 0)
     parts.push_back("the motors took " + quantity(number(run, "energy_final.electrical_in"), "J") +
                     " of electrical energy and lost " +
-                    quantity(number(run, "energy_final.joule"), "J") + " as heat in their windings");
+                    quantity(number(run, "energy_final.joule"), "J") +
+                    " as heat in their windings");
   if (never_rests(run))
     parts.push_back("no elbow rested on the table");
   else if (const Json* rest = at(run, "metrics.rest_fraction"); rest && rest->is_object())
@@ -173,9 +174,10 @@ std::string accuracy_check(const RunData& run) {
   if (!check->value("valid_at_half_step", true)) return text + " the run is NOT VALID";
   const Json& m = check->value("metrics", Json::object());
   std::vector<std::string> changes;
-  for (const auto& [name, label] : {std::pair<const char*, const char*>{"hand_error_rms", "the RMS hand error"},
-                                    {"energy_in", "the electrical energy in"},
-                                    {"joule", "the Joule loss"}})
+  for (const auto& [name, label] :
+       {std::pair<const char*, const char*>{"hand_error_rms", "the RMS hand error"},
+        {"energy_in", "the electrical energy in"},
+        {"joule", "the Joule loss"}})
     if (m.contains(name) && m[name].contains("relative_change"))
       changes.push_back(std::string(label) + (changes.empty() ? " changes by " : " by ") +
                         percent(m[name]["relative_change"].get<double>()));

@@ -111,7 +111,8 @@ std::string notice(const std::string& css_class, const std::string& heading,
     out += "</ul>\n";
   }
   if (items.size() > shown) {
-    out += "<details><summary>and " + std::to_string(items.size() - shown) + " more</summary>\n<ul>\n";
+    out +=
+        "<details><summary>and " + std::to_string(items.size() - shown) + " more</summary>\n<ul>\n";
     for (std::size_t k = shown; k < items.size(); ++k) out += "<li>" + escape(items[k]) + "</li>\n";
     out += "</ul>\n</details>\n";
   }

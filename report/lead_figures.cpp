@@ -94,7 +94,8 @@ void add_lead_figures(const RunData& run, const fs::path& folder, FigureSet& set
     set.skipped.push_back("energy_flow: no energy_final in summary.json");
     return;
   }
-  const plot::Waterfall chart = energy_waterfall(*flow, "Where the energy went — " + run_title(run));
+  const plot::Waterfall chart =
+      energy_waterfall(*flow, "Where the energy went — " + run_title(run));
   add(chart, folder, "energy_flow",
       "The energy account of the run, from summary.json: what came in (green; the bar "
       "ends at the energy in), then where it went (red: losses and stored energy gained; blue: "

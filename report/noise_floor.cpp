@@ -100,17 +100,21 @@ std::string relative_basis(const char* what, double scale, const std::string& un
 
 const char* to_string(MetricKind kind) {
   switch (kind) {
-    case MetricKind::result: return "result";
-    case MetricKind::numerics: return "numerics";
-    case MetricKind::timing: return "timing";
-    case MetricKind::setting: return "setting";
+    case MetricKind::result:
+      return "result";
+    case MetricKind::numerics:
+      return "numerics";
+    case MetricKind::timing:
+      return "timing";
+    case MetricKind::setting:
+      return "setting";
   }
   return "result";
 }
 
 MetricKind metric_kind(const std::string& path) {
-  for (const char* p : {"settings.", "model.", "control_loop.", "energy_initial.", "step_check.step",
-                        "step_check.half_step"})
+  for (const char* p : {"settings.", "model.", "control_loop.", "energy_initial.",
+                        "step_check.step", "step_check.half_step"})
     if (starts_with(path, p)) return MetricKind::setting;
   if (path == "contact.elbows") return MetricKind::setting;
   if (path == "wall_seconds" || path == "steps" || starts_with(path, "integrator_work.") ||
@@ -139,7 +143,8 @@ NoiseFloor noise_floor(const std::string& path, const std::vector<RunData>& runs
   if (is_energy(path)) {
     const double scale = energy_scale(runs);
     if (scale > 0)
-      return {kEnergyFloor * scale, "0.1 % of the energy that flowed (" + quantity(scale, "J") + ")"};
+      return {kEnergyFloor * scale,
+              "0.1 % of the energy that flowed (" + quantity(scale, "J") + ")"};
   }
   if (path == "final_time" || path == "metrics.time_in_contact") {
     const double scale = duration_scale(runs);

@@ -167,7 +167,8 @@ Planned energy(const RunData& run) {
   const auto drawn = column(rec, rec.layout.energy(Energy::drawn));
   if (!drawn.empty()) {
     p.series.push_back(series("E_drawn", t, drawn));
-    p.series.push_back(series("E_regenerated", t, column(rec, rec.layout.energy(Energy::regenerated))));
+    p.series.push_back(
+        series("E_regenerated", t, column(rec, rec.layout.energy(Energy::regenerated))));
   }
   // Potential energy given up since t = 0: the other source of the Joule loss.
   auto given_up = column(rec, rec.layout.energy(Energy::potential));
@@ -181,11 +182,12 @@ Planned energy(const RunData& run) {
     check.width = 1.2;
     p.series.push_back(std::move(check));
   }
-  return {"energy", std::move(p),
-          "Electrical energy into the motors (net, and split into drawn and regenerated), the Joule "
-          "loss in their windings and the potential energy the arm gave up, as the engine "
-          "accounted them over time; dashed: the power samples integrated, a cross-check of E_in.",
-          ""};
+  return {
+      "energy", std::move(p),
+      "Electrical energy into the motors (net, and split into drawn and regenerated), the Joule "
+      "loss in their windings and the potential energy the arm gave up, as the engine "
+      "accounted them over time; dashed: the power samples integrated, a cross-check of E_in.",
+      ""};
 }
 
 Planned contact_forces(const RunData& run) {

@@ -141,9 +141,9 @@ std::string notices(const RunData& run) {
   if (run.has_summary() && s.contains("warnings"))
     for (const auto& w : s["warnings"]) warnings.push_back(w.get<std::string>());
   if (!warnings.empty())
-    out += html::notice("warnings",
-                        std::to_string(warnings.size()) + " warning(s): read them before the numbers",
-                        warnings, "warnings", kWarningsShown);
+    out += html::notice(
+        "warnings", std::to_string(warnings.size()) + " warning(s): read them before the numbers",
+        warnings, "warnings", kWarningsShown);
   if (!run.problems.empty())
     out += html::notice("problems", "Missing or unreadable files", run.problems, "problems");
   return out;
@@ -152,7 +152,8 @@ std::string notices(const RunData& run) {
 // The first screen: validity, one sentence, the headline numbers with units.
 std::string headline_section(const RunData& run) {
   std::string out = "<section id=\"headline\">\n<h2>What this run shows</h2>\n<p class=\"lead\">" +
-                    html::escape(headline_sentence(run)) + "</p>\n<table class=\"headline\" id=\"headline-table\">\n";
+                    html::escape(headline_sentence(run)) +
+                    "</p>\n<table class=\"headline\" id=\"headline-table\">\n";
   const std::string status = validity(run);
   out += "<tr data-metric=\"valid\"><th scope=\"row\">status</th><td class=\"value " +
          std::string(status == "valid" ? "status-valid" : "status-invalid") + "\">" +
@@ -184,8 +185,8 @@ std::string energy_section(const RunData& run, const FigureSet& figures) {
   const std::string body = figures_of(figures, "energy");
   const auto flow = energy_flow(run.summary);
   if (body.empty() || !flow) return "";
-  std::string out = "<section id=\"energy\">\n<h2>Where the energy went</h2>\n" + body +
-                    "<ul class=\"notes\">\n";
+  std::string out =
+      "<section id=\"energy\">\n<h2>Where the energy went</h2>\n" + body + "<ul class=\"notes\">\n";
   for (const std::string& note : energy_flow_notes(*flow))
     out += "<li>" + html::escape(note) + "</li>\n";
   return out + "</ul>\n</section>\n";
@@ -226,8 +227,9 @@ std::string contents(const RunData& run, const FigureSet& figures) {
   if (!figures_of(figures, "hand_path").empty()) links += " · <a href=\"#hand-path\">Hand path</a>";
   if (!figures_of(figures, "energy").empty()) links += " · <a href=\"#energy\">Energy</a>";
   if (run.has_video) links += " · <a href=\"#video\">Video</a>";
-  links += " · <a href=\"#plots\">More plots</a> · <a href=\"#run\">Run settings</a>"
-           " · <a href=\"#summary-metrics\">All metrics</a>";
+  links +=
+      " · <a href=\"#plots\">More plots</a> · <a href=\"#run\">Run settings</a>"
+      " · <a href=\"#summary-metrics\">All metrics</a>";
   if (!run.events.empty()) links += " · <a href=\"#events\">Contact events</a>";
   return "<nav class=\"meta\">" + links + " · <a href=\"#files\">Files</a></nav>\n";
 }

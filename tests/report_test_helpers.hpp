@@ -3,9 +3,6 @@
 #pragma once
 
 #include <doctest/doctest.h>
-
-#include "support/process.hpp"
-#include "support/scratch.hpp"
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -16,6 +13,8 @@
 #include <string>
 
 #include "report/plot/plot.hpp"
+#include "support/process.hpp"
+#include "support/scratch.hpp"
 
 namespace elbowsim::testing {
 

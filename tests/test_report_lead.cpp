@@ -58,10 +58,10 @@ Json summary_of(const fs::path& folder) { return Json::parse(t::slurp(folder / "
 TEST_CASE("run report: the first section states the headline numbers, warnings above them") {
   const auto dir = t::scratch("report_lead", "headline");
   // A rating far below the current the joint needs: a warning in summary.json.
-  const auto out = t::run_elbowsim("run " + kScenes + "elbow_experiment.yaml --out " +
-                                   dir.string() +
-                                   " --no-render --set simulation.duration=0.5"
-                                   " --set 'motors.joints[2].rated_current=0.01'");
+  const auto out =
+      t::run_elbowsim("run " + kScenes + "elbow_experiment.yaml --out " + dir.string() +
+                      " --no-render --set simulation.duration=0.5"
+                      " --set 'motors.joints[2].rated_current=0.01'");
   REQUIRE(out.exit_code == 0);
   const fs::path run = dir / "elbow_on";
   const std::string html = t::slurp(run / "report.html");
@@ -101,7 +101,8 @@ TEST_CASE("run report: the first section states the headline numbers, warnings a
   CHECK(lead.find("accuracy check") != std::string::npos);
 
   // The lead figures: the hand path in x–z (and magnified), the energy waterfall.
-  for (const char* png : {"plots/hand_path.png", "plots/hand_path_error.png", "plots/energy_flow.png"})
+  for (const char* png :
+       {"plots/hand_path.png", "plots/hand_path_error.png", "plots/energy_flow.png"})
     CHECK(section(html, png == std::string("plots/energy_flow.png") ? "energy" : "hand-path")
               .find(png) != std::string::npos);
   t::check_images(run, html, 12);
@@ -113,7 +114,8 @@ TEST_CASE("run report: the first section states the headline numbers, warnings a
   const std::string energy = section(html, "energy");
   CHECK(energy.find("E_in = drawn − regenerated") != std::string::npos);
   CHECK((energy.find("exceeds the electrical energy in") != std::string::npos) ==
-        (s["energy_final"]["joule"].get<double>() > s["energy_final"]["electrical_in"].get<double>()));
+        (s["energy_final"]["joule"].get<double>() >
+         s["energy_final"]["electrical_in"].get<double>()));
 }
 
 TEST_CASE("compare: two identical runs show every metric as the same, timing as timing") {
@@ -127,8 +129,8 @@ TEST_CASE("compare: two identical runs show every metric as the same, timing as 
               .exit_code == 0);
   const std::string html = t::slurp(dir / "ab" / "report.html");
   std::size_t rows = 0;
-  for (const char* id : {"comparison-metrics", "comparison-numerics", "comparison-settings",
-                         "headline-table"})
+  for (const char* id :
+       {"comparison-metrics", "comparison-numerics", "comparison-settings", "headline-table"})
     for (const std::string& cell : difference_cells(html, id)) {
       INFO(id << ": " << cell);
       CHECK(cell == "same");
@@ -157,8 +159,12 @@ TEST_CASE("noise floor: a difference of noise is the same, a real one is not") {
                     {"wall_seconds", label == "a" ? 1.0 : 1.07},
                     {"energy_initial", {{"potential", 1.8}}},
                     {"energy_final",
-                     {{"electrical_in", drawn - 0.05}, {"joule", drawn}, {"kinetic_links", kinetic},
-                      {"potential", 1.6}, {"drawn", drawn}, {"regenerated", 0.05}}},
+                     {{"electrical_in", drawn - 0.05},
+                      {"joule", drawn},
+                      {"kinetic_links", kinetic},
+                      {"potential", 1.6},
+                      {"drawn", drawn},
+                      {"regenerated", 0.05}}},
                     {"balance_residual", 0.0}};
     return data;
   };
@@ -191,8 +197,14 @@ TEST_CASE("noise floor: a difference of noise is the same, a real one is not") {
 TEST_CASE("energy flow: every joule booked; Joule above the energy in is explained") {
   Json s = {{"energy_initial", {{"potential", 1.8}, {"magnetic", 0.0}}},
             {"energy_final",
-             {{"electrical_in", 1.8}, {"drawn", 1.85}, {"regenerated", 0.05}, {"joule", 2.0},
-              {"viscous", 0.02}, {"potential", 1.6}, {"magnetic", 0.0}, {"friction", 0.0},
+             {{"electrical_in", 1.8},
+              {"drawn", 1.85},
+              {"regenerated", 0.05},
+              {"joule", 2.0},
+              {"viscous", 0.02},
+              {"potential", 1.6},
+              {"magnetic", 0.0},
+              {"friction", 0.0},
               {"impact_loss", 0.0}}},
             {"contact", {{"enabled", true}}},
             {"balance_residual", -0.02}};
@@ -225,11 +237,13 @@ TEST_CASE("rerun with --no-render: no video left behind, none named; compare/ li
   REQUIRE(fs::exists(run / "video.mp4"));
   REQUIRE(fs::exists(compare / "video.mp4"));
   CHECK(t::slurp(run / "manifest.json").find("\"video.mp4\"") != std::string::npos);
-  CHECK(t::sources(t::slurp(run / "report.html"), "video") == std::vector<std::string>{"video.mp4"});
+  CHECK(t::sources(t::slurp(run / "report.html"), "video") ==
+        std::vector<std::string>{"video.mp4"});
   // The compare report embeds the side-by-side video this run made.
   const std::string with_video = t::slurp(compare / "report.html");
   CHECK(t::sources(with_video, "video") == std::vector<std::string>{"video.mp4"});
-  CHECK(with_video.find("<section id=\"video\">") < with_video.find("<section id=\"runs-section\">"));
+  CHECK(with_video.find("<section id=\"video\">") <
+        with_video.find("<section id=\"runs-section\">"));
   // Frames an earlier run wrote (output.frames) are stale too.
   fs::create_directories(run / "frames");
   std::ofstream(run / "frames" / "frame_00000.png") << "a frame of an earlier run";

@@ -152,7 +152,8 @@ int render_command(const RenderArguments& args) {
   }
   // A scenario that asked for neither gets a video: that is what render is for.
   const bool video = scenario.output.video || !scenario.output.frames;
-  const int code = render_with(scenario, recording, folder, settings, {folder, video, scenario.output.frames});
+  const int code =
+      render_with(scenario, recording, folder, settings, {folder, video, scenario.output.frames});
   if (code != exit_ok) return code;
   try {
     record_rendered(folder, video, scenario.output.frames);  // the report may now embed it

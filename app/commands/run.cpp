@@ -8,20 +8,20 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands/commands.hpp"
+#include "app/commands/interrupt.hpp"
 #include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
-#include "app/commands/interrupt.hpp"
+#include "app/output/events_csv.hpp"
 #include "app/output/folder_lock.hpp"
 #include "app/output/run_folder.hpp"
 #include "app/output/run_manifest.hpp"
-#include "report/compare_report.hpp"
-#include "app/output/events_csv.hpp"
 #include "app/output/summary_json.hpp"
 #include "app/output/trajectory_csv.hpp"
 #include "app/scenario/scenario.hpp"
 #include "engine/control/inverse_kinematics.hpp"
 #include "engine/run/recorder.hpp"
 #include "engine/run/simulator.hpp"
+#include "report/compare_report.hpp"
 
 namespace elbowsim {
 
@@ -46,7 +46,8 @@ void write_outputs(const Scenario& scenario, const RunResult& result,
   // All or nothing: a full disk leaves the folder's earlier files as they were.
   FileBatch files;
   std::vector<std::string> written;  // the manifest (app/output/run_manifest.hpp)
-  const auto write = [&](const char* name, bool wanted, const std::function<void(std::ostream&)>& f) {
+  const auto write = [&](const char* name, bool wanted,
+                         const std::function<void(std::ostream&)>& f) {
     if (!wanted) return files.remove_at_commit(folder / name);  // none of an earlier run's left
     files.add(folder / name, f);
     written.push_back(name);

@@ -38,7 +38,8 @@ void add_to_manifest(const std::filesystem::path& folder, const std::vector<std:
   if (!listed) return;
   for (const std::string& f : files)
     if (std::find(listed->begin(), listed->end(), f) == listed->end()) listed->push_back(f);
-  write_atomically(folder / kManifestFile, [&](std::ostream& out) { out << manifest_text(*listed); });
+  write_atomically(folder / kManifestFile,
+                   [&](std::ostream& out) { out << manifest_text(*listed); });
 }
 
 void record_rendered(const std::filesystem::path& folder, bool video, bool frames) {

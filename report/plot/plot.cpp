@@ -220,8 +220,8 @@ void draw_bars(cairo_t* cr, const BarChart& chart, const Box& area, const Mappin
       set_color(cr, palette(static_cast<int>(g)));
       cairo_rectangle(cr, left + 1, std::min(y0, y1), bar - 2, std::max(std::abs(y1 - y0), 1.0));
       cairo_fill(cr);
-      draw_text(cr, left + bar / 2, values[c] >= 0 ? y1 - 4 : y1 + 13, value_label(values[c], chart.value_digits),
-                Align::center);
+      draw_text(cr, left + bar / 2, values[c] >= 0 ? y1 - 4 : y1 + 13,
+                value_label(values[c], chart.value_digits), Align::center);
     }
   }
 }

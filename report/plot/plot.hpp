@@ -95,7 +95,7 @@ struct BarChart {
 // printed beside it; a total step is a bar from 0 to the running total.
 struct WaterfallStep {
   std::string label;
-  double value = 0;  // added (> 0) or taken (< 0); ignored for a total
+  double value = 0;            // added (> 0) or taken (< 0); ignored for a total
   std::optional<Color> color;  // default: green for added, red for taken, grey for a total
   bool total = false;
   std::string note;  // printed after the value ("(47 %)")

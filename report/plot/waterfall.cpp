@@ -12,7 +12,7 @@ using namespace canvas;
 
 namespace {
 
-constexpr double kRow = 30, kBar = 20;  // [px] row pitch, bar thickness
+constexpr double kRow = 30, kBar = 20;     // [px] row pitch, bar thickness
 constexpr double kTop = 52, kBottom = 58;  // [px] title above, x axis below
 const Color kAdded{0.349, 0.631, 0.310}, kTaken{0.882, 0.341, 0.349}, kTotal{0.45, 0.45, 0.45};
 
@@ -116,8 +116,8 @@ void write_png(const Waterfall& chart, const std::filesystem::path& png) {
   double value_room = 0;
   const auto bars = spans(chart);
   for (std::size_t k = 0; k < bars.size(); ++k)
-    value_room = std::max(value_room, text_width(cr, value_text(chart.steps[k], xa.unit,
-                                                                bars[k].second)));
+    value_room =
+        std::max(value_room, text_width(cr, value_text(chart.steps[k], xa.unit, bars[k].second)));
   const double data_width = area.width() - std::min(value_room + 12, 0.45 * area.width());
   xa.max = probe.lo + (probe.hi - probe.lo) * area.width() / data_width;
   xa.min = probe.lo;
