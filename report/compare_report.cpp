@@ -181,6 +181,15 @@ std::string headline_table(const std::vector<RunData>& runs, const Comparison& c
     }
     t += "</tr>\n";
   }
+  // The step-halving check, where any run has one: how far to trust the differences above.
+  bool checked = false;
+  for (const RunData& run : runs) checked = checked || run.summary.contains("step_check");
+  if (checked) {
+    t += "<tr data-metric=\"step_check\"><th scope=\"row\">accuracy check</th>";
+    for (const RunData& run : runs) t += cell(accuracy_check(run));
+    for (std::size_t r = 1; r < runs.size(); ++r) t += "<td></td>";
+    t += "</tr>\n";
+  }
   return t + "</table>\n";
 }
 
