@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <sstream>
 
+#include "report/headline.hpp"
 #include "report/html.hpp"
+#include "report/quantity.hpp"
 
 namespace elbowsim::report {
 
@@ -62,42 +64,130 @@ std::string runs_table(const std::vector<RunData>& runs, const fs::path& out) {
   return t + "</table>\n";
 }
 
-// "+12.3 %", "same"; for flags and missing values "same", "differs" or "—".
-std::string relative_text(const ComparedMetric& m, std::size_t run) {
-  const std::optional<double>& r = m.relative[run];
-  if (!r)
-    return m.values[run].is_null() || m.values[0].is_null() ? "—"
-           : m.values[run] == m.values[0]                   ? "same"
-                                                            : "differs";
-  if (*r == 0) return "same";
+std::string ratio(double a, double b) {
   char text[32];
-  std::snprintf(text, sizeof text, "%+.3g %%", 100 * *r);
+  std::snprintf(text, sizeof text, "×%.3g", b / a);
   return text;
 }
 
-bool differs(const ComparedMetric& m) {
-  for (const auto& v : m.values)
-    if (v != m.values[0]) return true;
-  return false;
+// Run `run` against the first: "same" within the noise floor; else "+12.3 %",
+// or the difference itself where the first run's value is within the floor
+// of 0; settings "differs"; timings a ratio, never a percentage.
+std::string relative_text(const ComparedMetric& m, std::size_t run) {
+  const auto& v = m.values[run];
+  const auto& ref = m.values[0];
+  if (v.is_null() || ref.is_null()) return v.is_null() && ref.is_null() ? "same" : "—";
+  if (!v.is_number() || !ref.is_number()) return v == ref ? "same" : "differs";
+  const double a = ref.get<double>(), b = v.get<double>();
+  const bool same = same_within({ref, v}, m.kind, m.floor, m.path);
+  switch (m.kind) {
+    case MetricKind::setting:
+      return same ? "same" : "differs";
+    case MetricKind::timing:
+      if (same) return m.path == "wall_seconds" ? "same (timing noise)" : "same";
+      return a != 0 ? ratio(a, b) + " (timing)" : "differs (timing)";
+    default:
+      break;
+  }
+  if (same) return "same";
+  if (std::abs(a) > m.floor.value && m.relative[run]) {
+    // Up to doubling as a percentage; beyond, as a factor ("×8.72").
+    if (*m.relative[run] >= 1 && a > 0) return ratio(a, b);
+    char text[32];
+    std::snprintf(text, sizeof text, "%+.3g %%", 100 * *m.relative[run]);
+    return text;
+  }
+  char text[48];
+  std::snprintf(text, sizeof text, "%+.3g", b - a);
+  return m.unit.empty() ? std::string(text) : std::string(text) + " " + m.unit;
 }
 
-// Every metric: value per run, then the relative difference of each other run to the first.
-std::string metrics_table(const Comparison& c) {
-  std::string t = "<table id=\"comparison-metrics\">\n<tr><th>metric</th><th>unit</th>";
+std::string floor_text(const ComparedMetric& m) {
+  if (m.kind == MetricKind::setting || m.floor.basis == "exact") return "exact";
+  if (m.path == "wall_seconds") return m.floor.basis;
+  return quantity(m.floor.value, m.unit) + ": " + m.floor.basis;
+}
+
+// The metrics of one kind: value per run, each other run against the first,
+// and the noise floor the difference was judged by.
+std::string metrics_table(const Comparison& c, MetricKind kind, const std::string& id) {
+  std::string t = "<table id=\"" + id + "\">\n<tr><th>metric</th><th>unit</th>";
   for (const std::string& label : c.labels) t += "<th>" + html::escape(label) + "</th>";
   for (std::size_t r = 1; r < c.labels.size(); ++r)
     t += "<th>" + html::escape(c.labels[r]) + " vs " + html::escape(c.labels[0]) + "</th>";
-  t += "</tr>\n";
+  t += "<th>noise floor</th></tr>\n";
+  std::size_t rows = 0;
   for (const ComparedMetric& m : c.metrics) {
-    t += std::string(differs(m) ? "<tr class=\"differs\">" : "<tr>") + "<td><code>" +
+    if (m.kind != kind) continue;
+    ++rows;
+    t += std::string(m.same ? "<tr>" : "<tr class=\"differs\">") + "<td><code>" +
          html::escape(m.path) + "</code></td>" + cell(m.unit);
     for (std::size_t r = 0; r < m.values.size(); ++r)
       t += "<td class=\"num\" data-run=\"" + html::escape(c.labels[r]) + "\" data-value=\"" +
            html::exact_value(m.values[r]) + "\">" +
            html::escape(m.values[r].is_null() ? "—" : html::display_value(m.values[r])) + "</td>";
-    for (std::size_t r = 1; r < m.values.size(); ++r)
-      t += cell(relative_text(m, r),
-                m.relative[r] && std::abs(*m.relative[r]) >= 0.005 ? "num differs" : "num");
+    for (std::size_t r = 1; r < m.values.size(); ++r) {
+      const std::string text = relative_text(m, r);
+      t += cell(text, text.rfind("same", 0) == 0 ? "num same" : "num differs");
+    }
+    t += cell(floor_text(m), "meta") + "</tr>\n";
+  }
+  return rows ? t + "</table>\n" : "";
+}
+
+const ComparedMetric* row_of(const Comparison& c, const std::string& path) {
+  for (const ComparedMetric& m : c.metrics)
+    if (m.path == path) return &m;
+  return nullptr;
+}
+
+// A headline item's difference: of its own path, or (per joint, per elbow)
+// "same" when all its entries are the same, else "differs".
+std::string headline_difference(const Comparison& c, const std::string& path, std::size_t run) {
+  if (const ComparedMetric* m = row_of(c, path)) return relative_text(*m, run);
+  bool any = false, all_same = true;
+  for (const ComparedMetric& m : c.metrics)
+    if (m.path.rfind(path + ".", 0) == 0) {
+      any = true;
+      all_same = all_same && relative_text(m, run) == "same";
+    }
+  return !any ? "—" : all_same ? "same" : "differs";
+}
+
+// The first screen after the verdict: each run's headline numbers side by side.
+std::string headline_table(const std::vector<RunData>& runs, const Comparison& c) {
+  std::vector<const RunData*> pointers;
+  for (const RunData& run : runs) pointers.push_back(&run);
+  std::string t = "<table class=\"headline\" id=\"headline-table\">\n<tr><th></th>";
+  for (const RunData& run : runs) t += "<th>" + html::escape(run.label) + "</th>";
+  for (std::size_t r = 1; r < runs.size(); ++r)
+    t += "<th>" + html::escape(runs[r].label) + " vs " + html::escape(runs[0].label) + "</th>";
+  t += "</tr>\n<tr data-metric=\"valid\"><th scope=\"row\">status</th>";
+  for (const RunData& run : runs) {
+    const std::string status = validity(run);
+    t += "<td class=\"" + std::string(status == "valid" ? "status-valid" : "status-invalid") +
+         "\">" + html::escape(status) + "</td>";
+  }
+  for (std::size_t r = 1; r < runs.size(); ++r) t += "<td></td>";
+  t += "</tr>\n";
+  for (const HeadlineItem& item : headline_items(pointers)) {
+    t += "<tr data-metric=\"" + html::escape(item.path) + "\"><th scope=\"row\">" +
+         html::escape(item.label) + "</th>";
+    for (const RunData& run : runs)
+      t += "<td class=\"value\">" + html::escape(headline_value(run, item)) + "</td>";
+    for (std::size_t r = 1; r < runs.size(); ++r) {
+      const std::string text = headline_difference(c, item.path, r);
+      t += cell(text, text.rfind("same", 0) == 0 ? "num same" : "num differs");
+    }
+    t += "</tr>\n";
+  }
+  // The step-halving check, where any run has one: how far to trust the differences above.
+  bool checked = false;
+  for (const RunData& run : runs) checked = checked || run.summary.contains("step_check");
+  if (checked) {
+    t += "<tr data-metric=\"step_check\"><th scope=\"row\">accuracy check</th>";
+    for (const RunData& run : runs) t += cell(accuracy_check(run));
+    for (std::size_t r = 1; r < runs.size(); ++r) t += "<td></td>";
     t += "</tr>\n";
   }
   return t + "</table>\n";
@@ -128,23 +218,76 @@ std::string notices(const std::vector<RunData>& runs) {
   return out;
 }
 
+std::string figures_of(const FigureSet& figures, const std::string& group) {
+  std::string out;
+  for (const Figure& f : figures.figures)
+    if (f.group == group) out += html::figure(f);
+  return out;
+}
+
+std::string section(const std::string& id, const std::string& title, const std::string& body) {
+  return body.empty()
+             ? ""
+             : "<section id=\"" + id + "\">\n<h2>" + title + "</h2>\n" + body + "</section>\n";
+}
+
+// How differences are judged, under the verdict.
+std::string confidence(const Comparison& c) {
+  for (const std::string& sentence : c.verdict)
+    if (sentence.find("confidence interval") != std::string::npos ||
+        sentence.find("No verdict") != std::string::npos)
+      return "";
+  return "Confidence: one run each, so none: a single pair of runs gives no interval. "
+         "elbowsim montecarlo runs the uncertain plant many times and gives the paired ratio "
+         "with its 95 % interval.";
+}
+
 std::string page(const std::vector<RunData>& runs, const Comparison& c, const FigureSet& figures,
-                 const fs::path& out, const fs::path& json) {
+                 const fs::path& out, const fs::path& json, bool video) {
   std::string names;
   for (const std::string& label : c.labels) names += (names.empty() ? "" : " vs ") + label;
-  std::string p = html::page_begin("elbowsim comparison: " + names);
+  std::string p = html::page_begin("elbowsim comparison: " + comparison_title(runs));
+  const std::string scenario =
+      runs.front().has_summary() ? runs.front().summary.value("scenario", "") : "";
   p += "<header>\n<h1>Comparison: " + html::escape(names) + "</h1>\n<p class=\"meta\">" +
-       std::to_string(runs.size()) + " recorded runs; relative differences are to " +
-       html::escape(c.labels[0]) + ". Numbers in <a href=\"" +
+       (scenario.empty() ? "" : "Scenario " + html::escape(scenario) + "; ") +
+       std::to_string(runs.size()) + " recorded runs; differences are to " +
+       html::escape(c.labels[0]) +
+       ", and a difference below its noise floor is shown as "
+       "<em>same</em>. Numbers in <a href=\"" +
        html::escape(fs::relative(json, out).generic_string()) + "\">" +
        html::escape(fs::relative(json, out).generic_string()) + "</a>.</p>\n</header>\n";
-  p += html::notice("verdict", "Verdict", c.verdict, "verdict") + notices(runs);
-  p += "<section id=\"runs-section\">\n<h2>Runs</h2>\n" + runs_table(runs, out) + "</section>\n";
-  p += "<section id=\"metrics-section\">\n<h2>Metrics</h2>\n" + metrics_table(c) + "</section>\n";
-  p += "<section id=\"plots\">\n<h2>Plots</h2>\n";
-  for (const Figure& f : figures.figures) p += html::figure(f);
+  std::vector<std::string> verdict = c.verdict;
+  if (const std::string conf = confidence(c); !conf.empty()) verdict.push_back(conf);
+  p += html::notice("verdict", "Verdict", verdict, "verdict") + notices(runs);
+  p += section("headline", "The runs side by side", headline_table(runs, c));
+  std::string nav = "<a href=\"#headline\">Side by side</a>";
+  if (!figures_of(figures, "hand_path").empty()) nav += " · <a href=\"#hand-path\">Hand paths</a>";
+  if (!figures_of(figures, "energy").empty()) nav += " · <a href=\"#energy\">Energy</a>";
+  if (video) nav += " · <a href=\"#video\">Video</a>";
+  p += "<nav class=\"meta\">" + nav +
+       " · <a href=\"#plots\">More plots</a> · <a href=\"#runs-section\">Runs</a>"
+       " · <a href=\"#metrics-section\">All metrics</a></nav>\n";
+  p += section("hand-path", "Hand paths", figures_of(figures, "hand_path"));
+  p += section("energy", "Where the energy went", figures_of(figures, "energy"));
+  if (video)
+    p += "<section id=\"video\">\n<h2>Video</h2>\n<video src=\"video.mp4\" controls "
+         "preload=\"metadata\" width=\"960\">video.mp4</video>\n<p class=\"meta\">The runs side by "
+         "side, each panel labelled with its run.</p>\n</section>\n";
+  std::string more = figures_of(figures, "");
   for (const std::string& s : figures.skipped)
-    p += "<p class=\"meta\">Not plotted: " + html::escape(s) + "</p>\n";
+    more += "<p class=\"meta\">Not plotted: " + html::escape(s) + "</p>\n";
+  p += section("plots", "More plots", more);
+  p += "<section id=\"runs-section\">\n<h2>Runs</h2>\n" + runs_table(runs, out) + "</section>\n";
+  p += "<section id=\"metrics-section\">\n<h2>All metrics</h2>\n<h3>Results</h3>\n" +
+       metrics_table(c, MetricKind::result, "comparison-metrics") +
+       "<h3>Numerics: how well the integration went</h3>\n" +
+       metrics_table(c, MetricKind::numerics, "comparison-numerics") +
+       "<h3>Timing and cost: measurements of the computer, not results</h3>\n<p class=\"meta\">One "
+       "measurement each on a shared machine; wall-time ratios within 1.25 are noise.</p>\n" +
+       metrics_table(c, MetricKind::timing, "comparison-timing") +
+       "<h3>Settings and initial state</h3>\n" +
+       metrics_table(c, MetricKind::setting, "comparison-settings");
   return p + "</section>\n" + html::page_end();
 }
 
@@ -161,7 +304,7 @@ std::pair<fs::path, fs::path> write_comparison_tables(const Comparison& comparis
 }
 
 ComparisonFiles write_comparison_report(const std::vector<RunData>& runs, const fs::path& out,
-                                        const ComparisonTables& tables) {
+                                        const ComparisonTables& tables, bool video) {
   fs::create_directories(out);
   ComparisonTables where = tables;
   if (where.folder.empty()) where.folder = out;
@@ -170,7 +313,7 @@ ComparisonFiles write_comparison_report(const std::vector<RunData>& runs, const 
   std::tie(files.json, files.csv) = write_comparison_tables(files.comparison, where);
   files.figures = write_comparison_plots(runs, out);
   files.html = out / "report.html";
-  html::write_file(files.html, page(runs, files.comparison, files.figures, out, files.json));
+  html::write_file(files.html, page(runs, files.comparison, files.figures, out, files.json, video));
   return files;
 }
 

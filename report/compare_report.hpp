@@ -1,6 +1,9 @@
-// The comparison report of several recorded runs: a verdict computed from
-// the numbers, the runs side by side (settings, failures), every metric with
-// its relative difference to the first run, overlay plots and energy totals.
+// The comparison report of several recorded runs. It leads with the answer:
+// the verdict computed from the numbers (with its confidence: none from one
+// run each), the headline numbers side by side, the hand paths overlaid and
+// the energy accounts; then the side-by-side video, overlays, the runs'
+// settings and every metric, grouped as results, numerics, timing and
+// settings, with differences below the noise floor shown as "same".
 #pragma once
 
 #include <filesystem>
@@ -33,9 +36,11 @@ std::pair<std::filesystem::path, std::filesystem::path> write_comparison_tables(
 
 // The comparison of `runs` (labels already unique): comparison.json and
 // comparison.csv into tables.folder, and the report (report.html, plots/)
-// into `out`. Throws std::runtime_error naming the file that cannot be written.
+// into `out`. `video`: out/video.mp4 (the runs side by side) was made by this
+// run, and the report embeds it; no other video is embedded. Throws
+// std::runtime_error naming the file that cannot be written.
 ComparisonFiles write_comparison_report(const std::vector<RunData>& runs,
                                         const std::filesystem::path& out,
-                                        const ComparisonTables& tables = {});
+                                        const ComparisonTables& tables = {}, bool video = false);
 
 }  // namespace elbowsim::report

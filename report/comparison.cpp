@@ -30,16 +30,19 @@ std::optional<double> relative_difference(const nlohmann::ordered_json& value,
 }
 
 // Numbers only: flags (completed, contact.enabled, ...) are not metrics to compare.
-void add_rows(const std::vector<std::vector<Metric>>& per_run, std::vector<ComparedMetric>& out) {
+void add_rows(const std::vector<RunData>& runs, const std::vector<std::vector<Metric>>& per_run,
+              std::vector<ComparedMetric>& out) {
   for (const Metric& m : union_of(per_run)) {
     if (m.value.is_boolean()) continue;
-    ComparedMetric row{m.path, m.unit, {}, {}};
+    ComparedMetric row{m.path, m.unit, {}, {}, metric_kind(m.path), {}, true};
     for (const auto& metrics : per_run) {
       const Metric* found = find_metric(metrics, m.path);
       row.values.push_back(found ? found->value : nlohmann::ordered_json());
     }
     for (const auto& value : row.values)
       row.relative.push_back(relative_difference(value, row.values[0]));
+    row.floor = noise_floor(m.path, runs, per_run);
+    row.same = same_within(row.values, row.kind, row.floor, m.path);
     out.push_back(std::move(row));
   }
 }
@@ -84,8 +87,10 @@ std::vector<std::string> smaller_is_better(const Comparison& table, const std::s
     const std::string& lb = table.labels[best];
     const std::string& lo = table.labels[r];
     const double p = o != 0 ? 100 * (o - b) / std::abs(o) : 0;
-    if (o == b || (o != 0 && p < 0.5))
-      sentences.push_back(lb + " and " + lo + ": the same " + what + " within 0.5 %" + both + ".");
+    if (std::abs(o - b) <= row->floor.value)
+      sentences.push_back(lb + " and " + lo + ": the same " + what + " within its noise floor (" +
+                          quantity(row->floor.value, row->unit) + ", " + row->floor.basis + ")" +
+                          both + ".");
     else if (o == 0 || o < 0)
       sentences.push_back(lb + ": " + less + " " + what + " than " + lo + both + ".");
     else
@@ -206,7 +211,7 @@ Comparison compare_runs(const std::vector<RunData>& runs) {
     const bool ran = c.completed.back() || (run.has_summary() && run.summary.value("steps", 0L) > 0);
     per_run.push_back(ran ? run_metrics(run) : std::vector<Metric>());
   }
-  add_rows(per_run, c.metrics);
+  add_rows(runs, per_run, c.metrics);
   c.verdict = verdict(runs, c);
   return c;
 }
@@ -226,11 +231,14 @@ nlohmann::ordered_json comparison_json(const Comparison& c) {
   j["verdict"] = c.verdict;
   j["metrics"] = Json::array();
   for (const ComparedMetric& m : c.metrics) {
-    Json row = {{"path", m.path}, {"unit", m.unit}};
+    Json row = {{"path", m.path}, {"unit", m.unit}, {"kind", to_string(m.kind)}};
     for (std::size_t r = 0; r < c.labels.size(); ++r) {
       row["values"][c.labels[r]] = m.values[r];
       row["relative"][c.labels[r]] = m.relative[r] ? Json(*m.relative[r]) : Json();
     }
+    row["floor"] = m.floor.value;
+    row["floor_basis"] = m.floor.basis;
+    row["same"] = m.same;
     j["metrics"].push_back(std::move(row));
   }
   return j;

@@ -1,6 +1,7 @@
 // Comparing recorded runs: every number of their summaries side by side with
-// its relative difference to the first run, and verdict sentences computed
-// from the numbers ("elbow_on: 38 % less electrical energy than elbow_off").
+// its relative difference to the first run and whether it differs beyond its
+// noise floor (noise_floor.hpp), and verdict sentences computed from the
+// numbers ("elbow_on: 38 % less electrical energy than elbow_off").
 // The one writer of comparison.json and comparison.csv (`compare`, variants)
 // and of sweep.csv (`sweep`).
 #pragma once
@@ -11,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "report/noise_floor.hpp"
 #include "report/run_data.hpp"
 
 namespace elbowsim::report {
@@ -22,6 +24,9 @@ struct ComparedMetric {
   // [runs] (value - reference) / |reference| with run 0 the reference; empty
   // where not a number on both sides or the reference is 0 (and the value not).
   std::vector<std::optional<double>> relative;
+  MetricKind kind = MetricKind::result;
+  NoiseFloor floor;  // report/noise_floor.hpp
+  bool same = true;  // every run within the floor of the first
 };
 
 struct Comparison {
@@ -48,8 +53,9 @@ bool is_valid(const RunData& run);
 std::vector<std::string> verdict(const std::vector<RunData>& runs, const Comparison& table);
 
 // comparison.json: runs (labels), reference (the first), folder, completed
-// and failure per run, verdict, and metrics: a list of {path, unit, values:
-// {run: x}, relative: {run: (x - x_ref)/|x_ref|}}, null where undefined.
+// and failure per run, verdict, and metrics: a list of {path, unit, kind,
+// values: {run: x}, relative: {run: (x - x_ref)/|x_ref|}, floor, floor_basis,
+// same}, null where undefined.
 nlohmann::ordered_json comparison_json(const Comparison& comparison);
 
 // comparison.csv: one row per run: its label (under `first_header`),

@@ -34,6 +34,14 @@ figcaption { color: #444; font-size: 0.92em; }
 nav { margin: 0.8em 0; }
 video { max-width: 100%; border: 1px solid #ccc; }
 pre { background: #f6f6f6; padding: 0.8em; overflow-x: auto; font-size: 0.85em; }
+.lead { font-size: 1.12em; margin: 0.4em 0 0.6em; }
+table.headline { font-size: 1em; min-width: 60%; }
+table.headline th[scope=row] { font-weight: normal; white-space: nowrap; }
+table.headline td.value { font-weight: bold; }
+td.same { color: #777; }
+.status-valid { color: #2d7a3e; font-weight: bold; }
+.status-invalid { color: #b03a2e; font-weight: bold; }
+ul.notes li { margin: 0.25em 0; }
 )";
 
 }  // namespace
@@ -92,13 +100,21 @@ std::string page_begin(const std::string& title) {
 std::string page_end() { return "</body>\n</html>\n"; }
 
 std::string notice(const std::string& css_class, const std::string& heading,
-                   const std::vector<std::string>& items, const std::string& id) {
+                   const std::vector<std::string>& items, const std::string& id,
+                   std::size_t shown) {
   std::string out = "<div class=\"" + css_class + "\"" + (id.empty() ? "" : " id=\"" + id + "\"") +
                     " role=\"alert\">\n<strong>" + escape(heading) + "</strong>\n";
   if (!items.empty()) {
     out += "<ul>\n";
-    for (const std::string& item : items) out += "<li>" + escape(item) + "</li>\n";
+    for (std::size_t k = 0; k < items.size() && k < shown; ++k)
+      out += "<li>" + escape(items[k]) + "</li>\n";
     out += "</ul>\n";
+  }
+  if (items.size() > shown) {
+    out +=
+        "<details><summary>and " + std::to_string(items.size() - shown) + " more</summary>\n<ul>\n";
+    for (std::size_t k = shown; k < items.size(); ++k) out += "<li>" + escape(items[k]) + "</li>\n";
+    out += "</ul>\n</details>\n";
   }
   return out + "</div>\n";
 }

@@ -27,9 +27,11 @@ std::string page_begin(const std::string& title);
 std::string page_end();
 
 // A boxed notice (class "failure", "warnings", "problems" or "verdict") with
-// a heading and items; `id` (unique in the page) when not empty.
+// a heading and items; `id` (unique in the page) when not empty. Items after
+// the first `shown` are folded into a <details> ("and 12 more").
 std::string notice(const std::string& css_class, const std::string& heading,
-                   const std::vector<std::string>& items, const std::string& id = "");
+                   const std::vector<std::string>& items, const std::string& id = "",
+                   std::size_t shown = 1000);
 
 // A two-column table of label / value rows (values are escaped).
 std::string info_table(const std::vector<std::pair<std::string, std::string>>& rows);

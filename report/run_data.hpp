@@ -1,5 +1,6 @@
 // A recorded run as the report sees it: the contents of one run folder
-// (summary.json, trajectory.csv, events.csv, scenario.yaml, video.mp4), read
+// (summary.json, trajectory.csv, events.csv, scenario.yaml, video.mp4 when
+// the folder's manifest.json says this run made it), read
 // by the command line (app/output/run_folder) and handed over as plain data.
 // The report never simulates and never reaches into the engine.
 #pragma once
@@ -35,7 +36,8 @@ struct RunData {
   // empty when it could not be rebuilt.
   std::vector<std::pair<std::string, std::string>> model_rows;
   std::vector<std::string> problems;  // files missing or unreadable: shown in the report
-  bool has_video = false;             // video.mp4 is in the folder
+  bool has_video = false;             // video.mp4 is there, made by the run (its manifest lists it)
+  std::vector<std::string> files;     // the run's data files and video present in the folder
 
   bool has_summary() const { return summary.is_object(); }
   bool has_trajectory() const { return trajectory.rows() > 0; }

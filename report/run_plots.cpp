@@ -8,6 +8,8 @@
 #include <utility>
 
 #include "report/columns.hpp"
+#include "report/headline.hpp"
+#include "report/lead_figures.hpp"
 #include "report/plot/plot.hpp"
 
 namespace elbowsim::report {
@@ -42,15 +44,9 @@ Series series(std::string label, std::vector<double> x, std::vector<double> y) {
   return s;
 }
 
-std::string run_name(const RunData& run) {
-  return run.has_summary() && run.summary.value("scenario", "") != ""
-             ? run.summary["scenario"].get<std::string>()
-             : run.label;
-}
-
 LinePlot time_plot(const RunData& run, const std::string& title, Axis y) {
   LinePlot p;
-  p.title = title + " — " + run_name(run);
+  p.title = title + " — " + run_title(run);
   p.y = std::move(y);
   return p;
 }
@@ -166,8 +162,18 @@ Planned energy(const RunData& run) {
   const auto e_in = column(rec, rec.layout.energy(Energy::in));
   LinePlot p = time_plot(run, "Cumulative energy", plot::linear_axis("energy", "J"));
   const auto t = column(rec, rec.layout.time());
-  p.series.push_back(series("E_in (electrical in)", t, e_in));
+  p.series.push_back(series("E_in (electrical in, net)", t, e_in));
   p.series.push_back(series("E_joule (Joule loss)", t, column(rec, rec.layout.energy(Energy::joule))));
+  const auto drawn = column(rec, rec.layout.energy(Energy::drawn));
+  if (!drawn.empty()) {
+    p.series.push_back(series("E_drawn", t, drawn));
+    p.series.push_back(
+        series("E_regenerated", t, column(rec, rec.layout.energy(Energy::regenerated))));
+  }
+  // Potential energy given up since t = 0: the other source of the Joule loss.
+  auto given_up = column(rec, rec.layout.energy(Energy::potential));
+  for (std::size_t k = given_up.size(); k-- > 0;) given_up[k] = given_up[0] - given_up[k];
+  p.series.push_back(series("PE given up (PE(0) − PE)", t, given_up));
   const auto power = electrical_power(rec);
   if (!power.empty()) {
     Series check = series("∫ Σ v·i dt (from samples)", t, running_integral(t, power));
@@ -176,10 +182,12 @@ Planned energy(const RunData& run) {
     check.width = 1.2;
     p.series.push_back(std::move(check));
   }
-  return {"energy", std::move(p),
-          "Electrical energy into the motors and the Joule loss in their windings, as the engine "
-          "accounted them; dashed: the power samples integrated, a cross-check.",
-          ""};
+  return {
+      "energy", std::move(p),
+      "Electrical energy into the motors (net, and split into drawn and regenerated), the Joule "
+      "loss in their windings and the potential energy the arm gave up, as the engine "
+      "accounted them over time; dashed: the power samples integrated, a cross-check of E_in.",
+      ""};
 }
 
 Planned contact_forces(const RunData& run) {
@@ -278,12 +286,16 @@ FigureSet draw(std::vector<Planned> planned, const fs::path& folder) {
 }  // namespace
 
 FigureSet write_run_plots(const RunData& run, const fs::path& report_folder) {
+  FigureSet set;
+  add_lead_figures(run, report_folder, set);
   if (!run.has_trajectory()) {
-    FigureSet set;
-    set.skipped.push_back("all plots: no trajectory.csv samples in this run folder");
+    set.skipped.push_back("time plots: no trajectory.csv samples in this run folder");
     return set;
   }
-  return draw(plan_run(run), report_folder);
+  FigureSet rest = draw(plan_run(run), report_folder);
+  set.figures.insert(set.figures.end(), rest.figures.begin(), rest.figures.end());
+  set.skipped.insert(set.skipped.end(), rest.skipped.begin(), rest.skipped.end());
+  return set;
 }
 
 // ---- comparison -----------------------------------------------------------
@@ -301,7 +313,7 @@ Planned overlay(const std::vector<RunData>& runs, const std::string& name, const
   const bool magnitude = y.scale == plot::Scale::log;
   if (columns.empty()) return skip(name, "no run has these columns");
   LinePlot p;
-  p.title = title;
+  p.title = title + " — " + comparison_title(runs);
   p.y = std::move(y);
   for (std::size_t r = 0; r < runs.size(); ++r) {
     const Recording& rec = runs[r].trajectory;
@@ -333,37 +345,19 @@ std::vector<ColumnOf> all_currents(const std::vector<RunData>& runs) {
   return out;
 }
 
-plot::BarChart totals(const std::vector<RunData>& runs) {
-  plot::BarChart chart;
-  chart.title = "Energy totals per run";
-  chart.y = plot::linear_axis("energy", "J");
-  chart.empty_message = "no data: no run has energy_final in summary.json";
-  plot::BarGroup e_in{"electrical energy in (E_in)", {}}, joule{"Joule loss", {}};
-  for (const RunData& run : runs) {
-    chart.categories.push_back(run.label);
-    const auto number = [&](const char* key) {
-      const auto path = nlohmann::ordered_json::json_pointer(std::string("/energy_final/") + key);
-      return run.has_summary() && run.summary.contains(path) && run.summary[path].is_number()
-                 ? run.summary[path].get<double>()
-                 : kNaN;
-    };
-    e_in.values.push_back(number("electrical_in"));
-    joule.values.push_back(number("joule"));
-  }
-  chart.groups = {e_in, joule};
-  return chart;
-}
-
 }  // namespace
 
 FigureSet write_comparison_plots(const std::vector<RunData>& runs, const fs::path& report_folder) {
+  FigureSet set;
+  add_comparison_lead_figures(runs, report_folder, set);
   std::vector<Planned> planned;
   planned.push_back(overlay(runs, "energy", "Cumulative energy", plot::linear_axis("energy", "J"),
                             {[](const TrajectoryLayout& L) { return L.energy(Energy::in); },
                              [](const TrajectoryLayout& L) { return L.energy(Energy::joule); }},
                             "Electrical energy in (solid) and Joule loss (dashed), per run."));
   std::vector<const Recording*> recordings;
-  for (const RunData& run : runs) recordings.push_back(&run.trajectory);
+  for (const RunData& run : runs)
+    if (run.has_trajectory()) recordings.push_back(&run.trajectory);
   std::vector<ColumnOf> hand;
   for (int axis : hand_axes(recordings))
     hand.push_back([axis](const TrajectoryLayout& L) { return L.hand(axis); });
@@ -382,13 +376,9 @@ FigureSet write_comparison_plots(const std::vector<RunData>& runs, const fs::pat
     planned.push_back(overlay(runs, "hand_error", "Hand error", plot::log_axis("|hand error|", "m"),
                               {[](const TrajectoryLayout& L) { return L.hand_error(); }},
                               "Distance from the hand to its desired path (log axis)."));
-  FigureSet set = draw(std::move(planned), report_folder);
-  const plot::BarChart bars = totals(runs);
-  plot::write_png(bars, report_folder / "plots/totals.png");
-  set.figures.push_back({"plots/totals.png", bars.title,
-                         "Electrical energy in and Joule loss at the end of each run "
-                         "(summary.json energy_final).",
-                         bars.width, bars.height});
+  FigureSet rest = draw(std::move(planned), report_folder);
+  set.figures.insert(set.figures.end(), rest.figures.begin(), rest.figures.end());
+  set.skipped.insert(set.skipped.end(), rest.skipped.begin(), rest.skipped.end());
   return set;
 }
 

@@ -15,6 +15,7 @@ struct Figure {
   std::string title;
   std::string caption;        // what it shows, one sentence
   int width = 0, height = 0;  // [px]
+  std::string group = "";     // the report section it leads: "hand_path", "energy"; "" the rest
 };
 
 struct FigureSet {
@@ -22,15 +23,17 @@ struct FigureSet {
   std::vector<std::string> skipped;  // figures this run cannot have, and why
 };
 
-// Joint angles; hand position (and hand error when recorded); motor currents,
+// The lead figures (lead_figures.hpp: hand path, error-magnified hand path,
+// energy flow), then joint angles; hand position (and hand error when recorded); motor currents,
 // voltages; joint torques; electrical power and cumulative energy; elbow
 // normal forces with the resting timeline; |d| while resting (log); the
 // energy-balance residual (log). Throws std::runtime_error when a PNG cannot
 // be written.
 FigureSet write_run_plots(const RunData& run, const std::filesystem::path& report_folder);
 
-// Overlays of the runs (cumulative energy, hand position, currents, hand
-// error) and bar charts of their totals (electrical energy in, Joule loss).
+// The lead figures of the runs (their hand paths overlaid, the energy
+// account per run), then overlays (cumulative energy, hand position,
+// currents, hand error) and a bar chart of their totals (electrical energy in, Joule loss).
 FigureSet write_comparison_plots(const std::vector<RunData>& runs,
                                  const std::filesystem::path& report_folder);
 

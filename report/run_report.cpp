@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "report/energy_flow.hpp"
+#include "report/headline.hpp"
 #include "report/html.hpp"
 #include "report/metrics.hpp"
 
@@ -14,6 +16,7 @@ namespace fs = std::filesystem;
 using Rows = std::vector<std::pair<std::string, std::string>>;
 
 constexpr std::size_t kMaxEventRows = 200;
+constexpr std::size_t kWarningsShown = 6;  // more fold away, so the headline stays on screen
 
 std::string number(double v, const char* unit = "") {
   char text[48];
@@ -106,8 +109,7 @@ Rows run_rows(const RunData& run) {
 }
 
 std::string header(const RunData& run) {
-  const std::string name = run.has_summary() ? run.summary.value("scenario", run.label) : run.label;
-  std::string out = "<header>\n<h1>" + html::escape(name) + "</h1>\n";
+  std::string out = "<header>\n<h1>" + html::escape(run_title(run)) + "</h1>\n";
   if (run.has_summary() && !run.summary.value("description", "").empty())
     out += "<p class=\"description\">" +
            html::escape(run.summary["description"].get<std::string>()) + "</p>\n";
@@ -139,16 +141,59 @@ std::string notices(const RunData& run) {
   if (run.has_summary() && s.contains("warnings"))
     for (const auto& w : s["warnings"]) warnings.push_back(w.get<std::string>());
   if (!warnings.empty())
-    out += html::notice("warnings", std::to_string(warnings.size()) + " warning(s)", warnings,
-                        "warnings");
+    out += html::notice(
+        "warnings", std::to_string(warnings.size()) + " warning(s): read them before the numbers",
+        warnings, "warnings", kWarningsShown);
   if (!run.problems.empty())
     out += html::notice("problems", "Missing or unreadable files", run.problems, "problems");
   return out;
 }
 
+// The first screen: validity, one sentence, the headline numbers with units.
+std::string headline_section(const RunData& run) {
+  std::string out = "<section id=\"headline\">\n<h2>What this run shows</h2>\n<p class=\"lead\">" +
+                    html::escape(headline_sentence(run)) +
+                    "</p>\n<table class=\"headline\" id=\"headline-table\">\n";
+  const std::string status = validity(run);
+  out += "<tr data-metric=\"valid\"><th scope=\"row\">status</th><td class=\"value " +
+         std::string(status == "valid" ? "status-valid" : "status-invalid") + "\">" +
+         html::escape(status) + "</td></tr>\n";
+  for (const HeadlineItem& item : headline_items({&run}))
+    out += "<tr data-metric=\"" + html::escape(item.path) + "\"><th scope=\"row\">" +
+           html::escape(item.label) + "</th><td class=\"value\">" +
+           html::escape(headline_value(run, item)) + "</td></tr>\n";
+  out += "<tr data-metric=\"step_check\"><th scope=\"row\">accuracy check</th><td>" +
+         html::escape(accuracy_check(run)) + "</td></tr>\n";
+  return out + "</table>\n</section>\n";
+}
+
+// Figures of one group (the lead figures), or of none (the rest).
+std::string figures_of(const FigureSet& figures, const std::string& group) {
+  std::string out;
+  for (const Figure& f : figures.figures)
+    if (f.group == group) out += html::figure(f);
+  return out;
+}
+
+std::string hand_path_section(const FigureSet& figures) {
+  const std::string body = figures_of(figures, "hand_path");
+  if (body.empty()) return "";
+  return "<section id=\"hand-path\">\n<h2>Hand path</h2>\n" + body + "</section>\n";
+}
+
+std::string energy_section(const RunData& run, const FigureSet& figures) {
+  const std::string body = figures_of(figures, "energy");
+  const auto flow = energy_flow(run.summary);
+  if (body.empty() || !flow) return "";
+  std::string out =
+      "<section id=\"energy\">\n<h2>Where the energy went</h2>\n" + body + "<ul class=\"notes\">\n";
+  for (const std::string& note : energy_flow_notes(*flow))
+    out += "<li>" + html::escape(note) + "</li>\n";
+  return out + "</ul>\n</section>\n";
+}
+
 std::string plots_section(const FigureSet& figures) {
-  std::string out = "<section id=\"plots\">\n<h2>Plots</h2>\n";
-  for (const Figure& f : figures.figures) out += html::figure(f);
+  std::string out = "<section id=\"plots\">\n<h2>More plots</h2>\n" + figures_of(figures, "");
   if (!figures.skipped.empty()) {
     out += "<p class=\"meta\">Not plotted for this run:</p>\n<ul class=\"meta\">\n";
     for (const std::string& s : figures.skipped) out += "<li>" + html::escape(s) + "</li>\n";
@@ -177,20 +222,22 @@ std::string events_section(const RunData& run) {
   return out + "</section>\n";
 }
 
-std::string contents(const RunData& run) {
-  std::string links = "<a href=\"#run\">Run</a>";
+std::string contents(const RunData& run, const FigureSet& figures) {
+  std::string links = "<a href=\"#headline\">Headline</a>";
+  if (!figures_of(figures, "hand_path").empty()) links += " · <a href=\"#hand-path\">Hand path</a>";
+  if (!figures_of(figures, "energy").empty()) links += " · <a href=\"#energy\">Energy</a>";
   if (run.has_video) links += " · <a href=\"#video\">Video</a>";
-  links += " · <a href=\"#plots\">Plots</a> · <a href=\"#summary-metrics\">Metrics</a>";
+  links +=
+      " · <a href=\"#plots\">More plots</a> · <a href=\"#run\">Run settings</a>"
+      " · <a href=\"#summary-metrics\">All metrics</a>";
   if (!run.events.empty()) links += " · <a href=\"#events\">Contact events</a>";
   return "<nav class=\"meta\">" + links + " · <a href=\"#files\">Files</a></nav>\n";
 }
 
 std::string files_section(const RunData& run) {
   std::string out = "<section id=\"files\">\n<h2>Files</h2>\n<ul>\n";
-  for (const char* name :
-       {"trajectory.csv", "summary.json", "events.csv", "scenario.yaml", "video.mp4"})
-    if (fs::exists(run.folder / name))
-      out += "<li><a href=\"" + std::string(name) + "\">" + name + "</a></li>\n";
+  for (const std::string& name : run.files)
+    out += "<li><a href=\"" + html::escape(name) + "\">" + html::escape(name) + "</a></li>\n";
   out += "</ul>\n";
   if (!run.scenario_yaml.empty())
     out += "<details>\n<summary>The scenario as run (scenario.yaml)</summary>\n<pre>" +
@@ -201,16 +248,17 @@ std::string files_section(const RunData& run) {
 }  // namespace
 
 std::string run_report_html(const RunData& run, const FigureSet& figures) {
-  const std::string name = run.has_summary() ? run.summary.value("scenario", run.label) : run.label;
-  std::string page = html::page_begin("elbowsim report: " + name) + header(run) + notices(run);
-  page += contents(run);
-  page += "<section id=\"run\">\n<h2>Run</h2>\n" + html::info_table(run_rows(run)) + "</section>\n";
+  std::string page = html::page_begin("elbowsim report: " + run_title(run)) + header(run) +
+                     notices(run) + headline_section(run) + contents(run, figures);
+  page += hand_path_section(figures) + energy_section(run, figures);
   if (run.has_video)
     page +=
         "<section id=\"video\">\n<h2>Video</h2>\n<video src=\"video.mp4\" controls "
         "preload=\"metadata\" width=\"960\">video.mp4</video>\n</section>\n";
   page += plots_section(figures);
-  page += "<section id=\"summary-metrics\">\n<h2>Metrics (summary.json)</h2>\n";
+  page += "<section id=\"run\">\n<h2>Run settings</h2>\n" + html::info_table(run_rows(run)) +
+          "</section>\n";
+  page += "<section id=\"summary-metrics\">\n<h2>All metrics (summary.json)</h2>\n";
   page += run.has_summary()
               ? "<p class=\"meta\">In summary.json's order, named as <code>--expect</code> "
                 "names them.</p>\n" +

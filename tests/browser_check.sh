@@ -87,16 +87,23 @@ short="--no-render --set simulation.duration=1"
 "$elbowsim" run "$source_dir/scenarios/elbow_rest.yaml" --out "$runs/elbow-on" $short >/dev/null
 "$elbowsim" run "$source_dir/scenarios/elbow_rest.yaml" --out "$runs/elbow-off" $short \
   --set 'inputs.voltage[0].offset=4.86' >/dev/null
+videos=0
 if command -v ffmpeg >/dev/null; then
-  ffmpeg -loglevel error -f lavfi -i testsrc=size=320x240:rate=10 -t 1 -pix_fmt yuv420p \
-    "$runs/elbow-on/video.mp4"
+  # As a user would: render the saved run (small and short), which lists the
+  # video in the folder's manifest, then rebuild the report, which embeds it.
+  "$elbowsim" render "$runs/elbow-on" --size 320x240 --fps 10 >/dev/null
   "$elbowsim" report "$runs/elbow-on" >/dev/null
+  videos=1
 else
   echo "note: no ffmpeg, the <video> element is not checked"
 fi
 "$elbowsim" compare "$runs/elbow-on" "$runs/elbow-off" --out "$runs/compare" >/dev/null
 
 expect_pass run_report "$runs/elbow-on/report.html"
+if [[ $(check_page "$runs/elbow-on/report.html") != *" videos=$videos "* ]]; then
+  echo "run_report: expected $videos video(s) in the page"
+  failures=$((failures + 1))
+fi
 expect_pass compare_report "$runs/compare/report.html"
 
 # Negative control: the check must notice a missing image.

@@ -3,18 +3,18 @@
 #pragma once
 
 #include <doctest/doctest.h>
-
-#include "support/process.hpp"
-#include "support/scratch.hpp"
 #include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 
 #include "report/plot/plot.hpp"
+#include "support/process.hpp"
+#include "support/scratch.hpp"
 
 namespace elbowsim::testing {
 
@@ -65,6 +65,41 @@ inline void check_plot_png(const std::filesystem::path& png, int width, int heig
   CHECK(luminance_variance(image) > 50);
   CHECK(dark_pixels(image, 0, height / 4, 40, 3 * height / 4) > 20);              // y label
   CHECK(dark_pixels(image, width / 4, height - 50, 3 * width / 4, height) > 40);  // x ticks, label
+}
+
+// Every src="..." of <img> and <video>, relative to the page.
+inline std::vector<std::string> sources(const std::string& html, const std::string& tag) {
+  static const std::regex src("<(img|video)[^>]* src=\"([^\"]*)\"");
+  std::vector<std::string> out;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), src); it != std::sregex_iterator();
+       ++it)
+    if ((*it)[1] == tag) out.push_back((*it)[2]);
+  return out;
+}
+
+// Every <video src> and local <a href> names a file that is there.
+inline void check_links(const std::filesystem::path& folder, const std::string& html) {
+  for (const std::string& src : sources(html, "video"))
+    CHECK_MESSAGE(std::filesystem::exists(folder / src), src);
+  static const std::regex href("<a href=\"([^\"#][^\"]*)\"");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), href); it != std::sregex_iterator();
+       ++it)
+    CHECK_MESSAGE(std::filesystem::exists(folder / (*it)[1].str()), (*it)[1].str());
+}
+
+// Every <img> names a PNG in the folder that decodes, at its declared size, not blank.
+inline void check_images(const std::filesystem::path& folder, const std::string& html,
+                         std::size_t at_least) {
+  const auto images = sources(html, "img");
+  CHECK(images.size() >= at_least);
+  for (const std::string& src : images) {
+    INFO(src);
+    REQUIRE(std::filesystem::exists(folder / src));
+    std::smatch m;
+    REQUIRE(std::regex_search(
+        html, m, std::regex("src=\"" + src + "\"[^>]* width=\"(\\d+)\" height=\"(\\d+)\"")));
+    check_plot_png(folder / src, std::stoi(m[1]), std::stoi(m[2]));
+  }
 }
 
 using elbowsim::testing::Outcome;

@@ -8,6 +8,7 @@
 
 #include "app/commands/commands.hpp"
 #include "app/output/run_folder.hpp"
+#include "app/output/run_manifest.hpp"
 #include "app/output/trajectory_csv.hpp"
 #include "app/scenario/scenario.hpp"
 #include "render/render_job.hpp"
@@ -151,8 +152,16 @@ int render_command(const RenderArguments& args) {
   }
   // A scenario that asked for neither gets a video: that is what render is for.
   const bool video = scenario.output.video || !scenario.output.frames;
-  return render_with(scenario, recording, folder, settings,
-                     {folder, video, scenario.output.frames});
+  const int code =
+      render_with(scenario, recording, folder, settings, {folder, video, scenario.output.frames});
+  if (code != exit_ok) return code;
+  try {
+    record_rendered(folder, video, scenario.output.frames);  // the report may now embed it
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_io;
+  }
+  return exit_ok;
 }
 
 }  // namespace elbowsim

@@ -6,6 +6,7 @@
 
 #include "app/commands/commands.hpp"
 #include "app/output/run_folder.hpp"
+#include "app/output/run_manifest.hpp"
 #include "report/expect.hpp"
 #include "report/run_report.hpp"
 
@@ -60,6 +61,7 @@ int write_report(const std::filesystem::path& folder, report::RunData& run) {
   }
   try {
     const report::ReportFiles files = report::write_run_report(run);
+    add_to_manifest(folder, {"report.html", "plots/"});
     std::cout << "report: " << files.html.string() << " (" << files.figures.figures.size()
               << " plots)\n";
     return exit_ok;

@@ -3,23 +3,25 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "app/commands/commands.hpp"
+#include "app/commands/interrupt.hpp"
 #include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
-#include "app/commands/interrupt.hpp"
+#include "app/output/events_csv.hpp"
 #include "app/output/folder_lock.hpp"
 #include "app/output/run_folder.hpp"
-#include "report/compare_report.hpp"
-#include "app/output/events_csv.hpp"
+#include "app/output/run_manifest.hpp"
 #include "app/output/summary_json.hpp"
 #include "app/output/trajectory_csv.hpp"
 #include "app/scenario/scenario.hpp"
 #include "engine/control/inverse_kinematics.hpp"
 #include "engine/run/recorder.hpp"
 #include "engine/run/simulator.hpp"
+#include "report/compare_report.hpp"
 
 namespace elbowsim {
 
@@ -43,19 +45,25 @@ void write_outputs(const Scenario& scenario, const RunResult& result,
                    const nlohmann::ordered_json& summary, const std::filesystem::path& folder) {
   // All or nothing: a full disk leaves the folder's earlier files as they were.
   FileBatch files;
-  files.add(folder / "scenario.yaml", [&](std::ostream& out) { out << scenario.resolved_yaml; });
-  // A run that never started (its plan failed) has no columns: no table, and
-  // none of an earlier run left beside this run's summary.
-  if (scenario.output.trajectory && !result.trajectory.columns().empty())
-    files.add(folder / "trajectory.csv",
-              [&](std::ostream& out) { write_trajectory_csv(out, result.trajectory); });
-  else
-    files.remove_at_commit(folder / "trajectory.csv");
-  if (scenario.model.effects.contact)
-    files.add(folder / "events.csv",
-              [&](std::ostream& out) { write_events_csv(out, scenario.model, result.events); });
-  if (scenario.output.summary)
-    files.add(folder / "summary.json", [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+  std::vector<std::string> written;  // the manifest (app/output/run_manifest.hpp)
+  const auto write = [&](const char* name, bool wanted,
+                         const std::function<void(std::ostream&)>& f) {
+    if (!wanted) return files.remove_at_commit(folder / name);  // none of an earlier run's left
+    files.add(folder / name, f);
+    written.push_back(name);
+  };
+  write("scenario.yaml", true, [&](std::ostream& out) { out << scenario.resolved_yaml; });
+  // A run that never started (its plan failed) has no columns: no table.
+  write("trajectory.csv", scenario.output.trajectory && !result.trajectory.columns().empty(),
+        [&](std::ostream& out) { write_trajectory_csv(out, result.trajectory); });
+  write("events.csv", scenario.model.effects.contact,
+        [&](std::ostream& out) { write_events_csv(out, scenario.model, result.events); });
+  write("summary.json", scenario.output.summary,
+        [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+  // What an earlier run derived from its data (video, frames, report) goes
+  // in the same commit: this run's are added to the manifest as they are made.
+  for (const std::string& name : derived_artefacts()) files.remove_at_commit(folder / name);
+  files.add(folder / kManifestFile, [&](std::ostream& out) { out << manifest_text(written); });
   files.commit();
 }
 
@@ -141,7 +149,15 @@ RunOutcome run_one(const Scenario& scenario, const std::filesystem::path& folder
   // also when the run stopped early).
   const bool render = recorded && args.render && (scenario.output.video || scenario.output.frames);
   const int rendered = render ? render_outputs(scenario, result.trajectory, folder) : exit_ok;
-  // The report after everything else: it reads the folder back, video included.
+  try {
+    if (render) record_rendered(folder, scenario.output.video, scenario.output.frames);
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    outcome.code = exit_io;
+    return outcome;
+  }
+  // The report after everything else: it reads the folder back, and embeds
+  // the video only when the manifest lists it (made by this run).
   const int reported = recorded && args.report ? report_outputs(folder) : exit_ok;
   outcome.code = !result.valid ? exit_run_failed : rendered != exit_ok ? rendered : reported;
   return outcome;
@@ -156,15 +172,21 @@ int compare_variants(const RunArguments& args, const std::vector<Scenario>& vari
     std::vector<report::RunData> loaded;
     for (const Scenario& v : variants) loaded.push_back(load_run_folder(folder / v.variant));
     const report::ComparisonTables tables{folder, "variant"};
+    // compare/ holds only what this run makes: an earlier run's side-by-side
+    // video or report goes first (a --no-render run must not show an old video).
+    const std::filesystem::path compare = folder / "compare";
+    for (const std::string& name : derived_artefacts()) std::filesystem::remove_all(compare / name);
     if (!args.report) {
       report::write_comparison_tables(report::compare_runs(loaded), tables);
     } else {
+      bool video = false;
       if (args.render && variants.front().output.video) {
         std::vector<std::filesystem::path> folders;
         for (const Scenario& v : variants) folders.push_back(folder / v.variant);
-        if (render_side_by_side(folders, folder / "compare") != exit_ok) return exit_io;
+        if (render_side_by_side(folders, compare) != exit_ok) return exit_io;
+        video = std::filesystem::exists(compare / "video.mp4");
       }
-      const auto files = report::write_comparison_report(loaded, folder / "compare", tables);
+      const auto files = report::write_comparison_report(loaded, compare, tables, video);
       std::cout << "comparison report: " << files.html.string() << '\n';
     }
   } catch (const std::exception& e) {

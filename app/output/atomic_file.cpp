@@ -67,7 +67,7 @@ void FileBatch::remove_at_commit(const std::filesystem::path& path) { entries_.p
 void FileBatch::commit() {
   for (Entry& e : entries_) {
     if (e.temporary.empty())
-      std::filesystem::remove(e.path);
+      std::filesystem::remove_all(e.path);  // a file, or a folder (frames/, plots/)
     else
       std::filesystem::rename(e.temporary, e.path);
     e.temporary.clear();

@@ -29,7 +29,7 @@ class FileBatch {
   ~FileBatch();  // removes temporaries not committed
 
   void add(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
-  // Removes `path` at commit (a file an earlier run left that this one has not).
+  // Removes `path` at commit (a file or folder an earlier run left that this one has not).
   void remove_at_commit(const std::filesystem::path& path);
   void commit();
 

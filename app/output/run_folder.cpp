@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "app/output/run_manifest.hpp"
 #include "app/output/trajectory_csv.hpp"
 #include "app/scenario/scenario.hpp"
 
@@ -147,7 +148,20 @@ report::RunData load_run_folder(const fs::path& folder) {
   if (fs::exists(folder / "events.csv"))
     attempt(folder / "events.csv", [&] { run.events = read_events(folder / "events.csv"); });
   attempt(folder / "scenario.yaml", [&] { read_scenario(folder / "scenario.yaml", run); });
-  run.has_video = fs::exists(folder / "video.mp4");
+  // Only what the run that wrote the folder made: a video left by an earlier
+  // run (or put there by hand) is not this run's (run_manifest.hpp).
+  std::optional<std::vector<std::string>> manifest;
+  try {
+    manifest = read_manifest(folder);
+  } catch (const std::exception& e) {
+    run.problems.push_back(std::string(kManifestFile) + ": " + e.what());
+    manifest = std::vector<std::string>{};
+  }
+  for (const char* name :
+       {"trajectory.csv", "summary.json", "events.csv", "scenario.yaml", "video.mp4"})
+    if (written_by_run(manifest, folder, name)) run.files.push_back(name);
+  if (manifest) run.files.push_back(kManifestFile);
+  run.has_video = written_by_run(manifest, folder, "video.mp4");
   if (const std::string why = inconsistency(run); !why.empty())
     throw InconsistentRunFolder(folder.string() + ": " + why);
   return run;

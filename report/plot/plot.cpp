@@ -1,283 +1,18 @@
 #include "report/plot/plot.hpp"
 
-#include <cairo.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
-#include <memory>
 #include <stdexcept>
 #include <utility>
 
-#include "report/plot/ticks.hpp"
+#include "report/plot/canvas.hpp"
 
 namespace elbowsim::plot {
 
+using namespace canvas;
+
 namespace {
-
-constexpr const char* kFont = "DejaVu Sans";
-constexpr double kPad = 14;         // [px] outer margin
-constexpr double kLaneHeight = 12;  // [px] one timeline strip
-constexpr double kLaneGap = 6;      // [px] between strips
-const Color kText{0.1, 0.1, 0.1}, kFrame{0.35, 0.35, 0.35};
-
-// ---- drawing primitives ---------------------------------------------------
-
-struct Canvas {
-  Canvas(int width, int height)
-      : surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height)),
-        cr(cairo_create(surface)) {
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_paint(cr);
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
-  }
-  ~Canvas() {
-    cairo_destroy(cr);
-    cairo_surface_destroy(surface);
-  }
-  Canvas(const Canvas&) = delete;
-  Canvas& operator=(const Canvas&) = delete;
-  cairo_surface_t* surface;
-  cairo_t* cr;
-};
-
-struct Box {
-  double left, top, right, bottom;
-  double width() const { return right - left; }
-  double height() const { return bottom - top; }
-};
-
-enum class Align { left, center, right };
-
-void set_color(cairo_t* cr, const Color& c, double alpha = 1) {
-  cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
-}
-
-void set_font(cairo_t* cr, double size, bool bold = false) {
-  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL,
-                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, size);
-}
-
-double text_width(cairo_t* cr, const std::string& text) {
-  cairo_text_extents_t extents;
-  cairo_text_extents(cr, text.c_str(), &extents);
-  return extents.x_advance;
-}
-
-// Text with its baseline at y, aligned on x.
-void draw_text(cairo_t* cr, double x, double y, const std::string& text, Align align,
-               const Color& color = kText) {
-  const double w = text_width(cr, text);
-  cairo_move_to(cr, align == Align::left ? x : align == Align::center ? x - w / 2 : x - w, y);
-  set_color(cr, color);
-  cairo_show_text(cr, text.c_str());
-}
-
-// Text turned a quarter left, centred on (x, y): the y-axis label.
-void draw_vertical_text(cairo_t* cr, double x, double y, const std::string& text) {
-  cairo_save(cr);
-  cairo_translate(cr, x, y);
-  cairo_rotate(cr, -M_PI / 2);
-  draw_text(cr, 0, 0, text, Align::center);
-  cairo_restore(cr);
-}
-
-// Dash patterns scale with the line width (1.6 px: 6 on, 4 off, ...).
-void set_dash(cairo_t* cr, Dash dash, double width) {
-  const double u = width / 1.6;
-  const double dashed[] = {6 * u, 4 * u}, dotted[] = {1.5 * u, 3 * u},
-               dash_dot[] = {7 * u, 3 * u, 1.5 * u, 3 * u};
-  if (dash == Dash::dashed)
-    cairo_set_dash(cr, dashed, 2, 0);
-  else if (dash == Dash::dotted)
-    cairo_set_dash(cr, dotted, 2, 0);
-  else if (dash == Dash::dash_dot)
-    cairo_set_dash(cr, dash_dot, 4, 0);
-  else
-    cairo_set_dash(cr, nullptr, 0, 0);
-}
-
-void write_surface(cairo_surface_t* surface, const std::filesystem::path& png) {
-  cairo_surface_flush(surface);
-  // Written under a temporary name and renamed: never a half-written PNG.
-  const std::filesystem::path partial = png.string() + ".tmp";
-  const cairo_status_t status = cairo_surface_write_to_png(surface, partial.c_str());
-  if (status != CAIRO_STATUS_SUCCESS)
-    throw std::runtime_error(png.string() +
-                             ": cannot write PNG: " + cairo_status_to_string(status));
-  std::error_code error;
-  std::filesystem::rename(partial, png, error);
-  if (error) throw std::runtime_error(png.string() + ": " + error.message());
-}
-
-std::string axis_title(const Axis& axis) {
-  return axis.unit.empty() ? axis.label : axis.label + " [" + axis.unit + "]";
-}
-
-// ---- legend ---------------------------------------------------------------
-
-struct LegendEntry {
-  std::string label;
-  Color color;
-  Dash dash = Dash::solid;
-  bool markers = false;
-  bool bar = false;  // a filled square instead of a line sample
-};
-
-constexpr double kLegendRow = 18, kSample = 26;
-
-double entry_width(cairo_t* cr, const LegendEntry& e) {
-  return kSample + 6 + text_width(cr, e.label) + 18;
-}
-
-// Entries flow left to right and wrap; returns the height used.
-double legend(cairo_t* cr, const std::vector<LegendEntry>& entries, double left, double right,
-              double top, bool draw) {
-  if (entries.empty()) return 0;
-  set_font(cr, 12);
-  double x = left, y = top;
-  for (const LegendEntry& e : entries) {
-    const double w = entry_width(cr, e);
-    if (x > left && x + w > right) x = left, y += kLegendRow;
-    if (draw) {
-      const double mid = y + kLegendRow / 2;
-      set_color(cr, e.color);
-      if (e.bar) {
-        cairo_rectangle(cr, x + 8, mid - 5, 10, 10);
-        cairo_fill(cr);
-      } else {
-        cairo_set_line_width(cr, 2.2);
-        set_dash(cr, e.dash, 2.2);
-        cairo_move_to(cr, x, mid);
-        cairo_line_to(cr, x + kSample, mid);
-        cairo_stroke(cr);
-        set_dash(cr, Dash::solid, 1);
-        if (e.markers) cairo_arc(cr, x + kSample / 2, mid, 3.2, 0, 2 * M_PI), cairo_fill(cr);
-      }
-      draw_text(cr, x + kSample + 6, mid + 4.5, e.label, Align::left);
-    }
-    x += w;
-  }
-  return y + kLegendRow - top;
-}
-
-// Title and legend: returns the y where the plot area may start.
-double header(cairo_t* cr, const std::string& title, const std::vector<LegendEntry>& entries,
-              int width, bool draw) {
-  set_font(cr, 17, true);
-  if (draw) draw_text(cr, width / 2.0, kPad + 15, title, Align::center);
-  const double top = kPad + 26;
-  return top + legend(cr, entries, kPad + 40, width - kPad, top, draw) + 8;
-}
-
-// ---- axes -----------------------------------------------------------------
-
-struct Range {
-  double lo = std::numeric_limits<double>::infinity();
-  double hi = -std::numeric_limits<double>::infinity();
-  void add(double v) { lo = std::min(lo, v), hi = std::max(hi, v); }
-  bool empty() const { return lo > hi; }
-};
-
-bool drawable(double v, Scale scale) {
-  return std::isfinite(v) && (scale == Scale::linear || v > 0);
-}
-
-// Linear axes: 4 % of the data range on each free side, so that a line at its
-// extreme does not run along the frame; a side at or beyond zero does not
-// cross it. (Log axes snap to whole decades instead.)
-Range padded(Range r, const Axis& axis) {
-  if (axis.tight || axis.scale == Scale::log || r.empty() || !(r.hi > r.lo)) return r;
-  const double pad = 0.04 * (r.hi - r.lo);
-  Range out = r;
-  if (!axis.min) out.lo = r.lo >= 0 ? std::max(0.0, r.lo - pad) : r.lo - pad;
-  if (!axis.max) out.hi = r.hi <= 0 ? std::min(0.0, r.hi + pad) : r.hi + pad;
-  return out;
-}
-
-// The limits an axis shows for data in `data` (fixed limits win).
-Ticks axis_ticks(const Axis& axis, Range data, int target) {
-  if (axis.min) data.lo = *axis.min;
-  if (axis.max) data.hi = *axis.max;
-  if (axis.include_zero && axis.scale == Scale::linear) data.add(0);
-  data = padded(data, axis);
-  if (axis.scale == Scale::log) return log_ticks(data.lo, data.hi);
-  const bool fixed = axis.min && axis.max;
-  return linear_ticks(data.lo, data.hi, target, !(axis.tight || fixed));
-}
-
-// Data value -> pixel along one axis.
-struct Mapping {
-  Ticks ticks;
-  Scale scale;
-  double from, to;  // pixels of ticks.lo and ticks.hi
-  double operator()(double v) const {
-    const auto f = [this](double u) { return scale == Scale::log ? std::log10(u) : u; };
-    return from + (f(v) - f(ticks.lo)) / (f(ticks.hi) - f(ticks.lo)) * (to - from);
-  }
-};
-
-double widest(cairo_t* cr, const std::vector<std::string>& labels) {
-  double w = 0;
-  for (const std::string& s : labels) w = std::max(w, text_width(cr, s));
-  return w;
-}
-
-// Grid lines, frame, tick marks and labels, axis titles.
-void draw_axes(cairo_t* cr, const Box& area, const Mapping& x, const Mapping* y, const Axis& xa,
-               const Axis& ya, double x_labels_top, int height) {
-  cairo_set_line_width(cr, 1);
-  const auto vline = [&](double v, double shade) {
-    const double px = std::round(x(v)) + 0.5;
-    cairo_set_source_rgb(cr, shade, shade, shade);
-    cairo_move_to(cr, px, area.top), cairo_line_to(cr, px, area.bottom), cairo_stroke(cr);
-  };
-  const auto hline = [&](double v, double shade) {
-    const double py = std::round((*y)(v)) + 0.5;
-    cairo_set_source_rgb(cr, shade, shade, shade);
-    cairo_move_to(cr, area.left, py), cairo_line_to(cr, area.right, py), cairo_stroke(cr);
-  };
-  for (double v : x.ticks.minor) vline(v, 0.95);
-  for (double v : x.ticks.major) vline(v, 0.87);
-  if (y) {
-    for (double v : y->ticks.minor) hline(v, 0.95);
-    for (double v : y->ticks.major) hline(v, 0.87);
-  }
-  set_color(cr, kFrame);
-  cairo_rectangle(cr, area.left + 0.5, area.top + 0.5, area.width() - 1, area.height() - 1);
-  cairo_stroke(cr);
-  set_font(cr, 12);
-  for (std::size_t k = 0; k < x.ticks.major.size(); ++k) {
-    const double px = std::round(x(x.ticks.major[k])) + 0.5;
-    set_color(cr, kFrame);
-    cairo_move_to(cr, px, area.bottom), cairo_line_to(cr, px, area.bottom + 4), cairo_stroke(cr);
-    draw_text(cr, px, x_labels_top + 13, x.ticks.labels[k], Align::center);
-  }
-  if (y) {
-    for (std::size_t k = 0; k < y->ticks.major.size(); ++k) {
-      const double py = std::round((*y)(y->ticks.major[k])) + 0.5;
-      set_color(cr, kFrame);
-      cairo_move_to(cr, area.left - 4, py), cairo_line_to(cr, area.left, py), cairo_stroke(cr);
-      draw_text(cr, area.left - 7, py + 4.5, y->ticks.labels[k], Align::right);
-    }
-  }
-  set_font(cr, 13);
-  draw_text(cr, (area.left + area.right) / 2, height - kPad, axis_title(xa), Align::center);
-  draw_vertical_text(cr, kPad + 11, (area.top + area.bottom) / 2, axis_title(ya));
-}
-
-void draw_message(cairo_t* cr, const Box& area, const std::string& message) {
-  set_color(cr, kFrame);
-  cairo_set_line_width(cr, 1);
-  cairo_rectangle(cr, area.left + 0.5, area.top + 0.5, area.width() - 1, area.height() - 1);
-  cairo_stroke(cr);
-  set_font(cr, 16);
-  draw_text(cr, (area.left + area.right) / 2, (area.top + area.bottom) / 2, message, Align::center,
-            {0.45, 0.45, 0.45});
-}
 
 // ---- line plots -----------------------------------------------------------
 
@@ -356,6 +91,26 @@ bool data_ranges(const LinePlot& plot, Range& xr, Range& yr) {
   return !yr.empty();
 }
 
+// Room for the y tick labels and lane labels: where the plot area starts.
+double left_margin(cairo_t* cr, const LinePlot& plot, const Ticks& yt) {
+  set_font(cr, 12);
+  double label_room = widest(cr, yt.labels);
+  set_font(cr, 11);
+  for (const Lane& lane : plot.lanes) label_room = std::max(label_room, text_width(cr, lane.label));
+  return kPad + 22 + label_room + 8;
+}
+
+// Fixed limits on both axes, around the data's centre, at one scale (data
+// units per pixel) that shows all of it with 6 % to spare.
+void equal_scale(const Range& xr, const Range& yr, const Box& area, Axis& xa, Axis& ya) {
+  const double span_x = std::max(xr.hi - xr.lo, 1e-12), span_y = std::max(yr.hi - yr.lo, 1e-12);
+  const double per_pixel = 1.06 * std::max(span_x / area.width(), span_y / area.height());
+  const double cx = (xr.lo + xr.hi) / 2, cy = (yr.lo + yr.hi) / 2;
+  xa.min = cx - per_pixel * area.width() / 2, xa.max = cx + per_pixel * area.width() / 2;
+  ya.min = cy - per_pixel * area.height() / 2, ya.max = cy + per_pixel * area.height() / 2;
+  xa.tight = ya.tight = true;
+}
+
 }  // namespace
 
 Axis linear_axis(std::string label, std::string unit) {
@@ -404,16 +159,22 @@ void write_png(const LinePlot& plot, const std::filesystem::path& png) {
     return write_surface(canvas.surface, png);
   }
   // The y ticks fix the left margin (their labels' width), then x gets the rest.
-  const Ticks yt = axis_ticks(plot.y, yr, std::max(2, static_cast<int>(area.height() / 55)));
-  set_font(cr, 12);
-  double label_room = widest(cr, yt.labels);
-  set_font(cr, 11);
-  for (const Lane& lane : plot.lanes) label_room = std::max(label_room, text_width(cr, lane.label));
-  area.left = kPad + 22 + label_room + 8;
-  const Ticks xt = axis_ticks(plot.x, xr, std::max(2, static_cast<int>(area.width() / 100)));
-  const Mapping x{xt, plot.x.scale, area.left, area.right};
-  const Mapping y{yt, plot.y.scale, area.bottom, area.top};
-  draw_axes(cr, area, x, &y, plot.x, plot.y, x_labels_top, plot.height);
+  Axis xa = plot.x, ya = plot.y;
+  Ticks yt = axis_ticks(ya, yr, std::max(2, static_cast<int>(area.height() / 55)));
+  area.left = left_margin(cr, plot, yt);
+  if (plot.equal_aspect) {
+    // Twice: the first pass's y labels set the margin the second pass fills.
+    for (int pass = 0; pass < 2; ++pass) {
+      equal_scale(xr, yr, area, xa, ya);
+      yt = axis_ticks(ya, yr, std::max(2, static_cast<int>(area.height() / 55)));
+      area.left = left_margin(cr, plot, yt);
+    }
+    equal_scale(xr, yr, area, xa, ya);
+  }
+  const Ticks xt = axis_ticks(xa, xr, std::max(2, static_cast<int>(area.width() / 100)));
+  const Mapping x{xt, xa.scale, area.left, area.right};
+  const Mapping y{yt, ya.scale, area.bottom, area.top};
+  draw_axes(cr, area, x, &y, xa, ya, x_labels_top, plot.height);
   // Clipped a marker's radius outside the frame: points on the limits stay whole.
   cairo_save(cr);
   cairo_rectangle(cr, area.left - 4, area.top - 4, area.width() + 8, area.height() + 8);
@@ -435,9 +196,9 @@ Range bar_range(const BarChart& chart) {
   return r;
 }
 
-std::string value_label(double v) {
+std::string value_label(double v, int digits) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.4g", v);
+  std::snprintf(text, sizeof text, "%.*g", digits, v);
   return text;
 }
 
@@ -459,8 +220,8 @@ void draw_bars(cairo_t* cr, const BarChart& chart, const Box& area, const Mappin
       set_color(cr, palette(static_cast<int>(g)));
       cairo_rectangle(cr, left + 1, std::min(y0, y1), bar - 2, std::max(std::abs(y1 - y0), 1.0));
       cairo_fill(cr);
-      draw_text(cr, left + bar / 2, values[c] >= 0 ? y1 - 4 : y1 + 13, value_label(values[c]),
-                Align::center);
+      draw_text(cr, left + bar / 2, values[c] >= 0 ? y1 - 4 : y1 + 13,
+                value_label(values[c], chart.value_digits), Align::center);
     }
   }
 }

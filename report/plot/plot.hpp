@@ -1,7 +1,8 @@
 // Plots drawn with cairo and written as PNG: line plots (linear or log axes,
-// NaN gaps, optional timeline lanes under the x axis), grouped bar charts and
-// work-precision diagrams. A figure is plain data; write_png draws it. Cairo
-// is included in plot.cpp only.
+// NaN gaps, optional timeline lanes under the x axis, equal aspect for paths),
+// grouped bar charts, waterfalls (waterfall.cpp) and work-precision diagrams.
+// A figure is plain data; write_png draws it. Cairo is included in
+// report/plot/ only (canvas.hpp: the primitives the figures share).
 //
 // PNGs are written by cairo's own writer (cairo_surface_write_to_png, itself
 // libpng) so that the report does not depend on the renderer's png_writer.
@@ -68,6 +69,9 @@ struct LinePlot {
   // Shown in the plot area when no series has a drawable point.
   std::string empty_message = "no data";
   int width = 900, height = 480;  // [px]
+  // Both axes linear and at the same scale (m per pixel), for a path in a
+  // plane: the limits widen around the data until they are.
+  bool equal_aspect = false;
 };
 
 // Bars grouped by category: each group is one legend entry with one value per
@@ -82,8 +86,32 @@ struct BarChart {
   std::vector<BarGroup> groups;
   Axis y;  // linear, always reaching 0
   std::string empty_message = "no data";
+  int value_digits = 4;  // significant digits of the value printed over each bar
   int width = 900, height = 480;
 };
+
+// An account drawn as a horizontal waterfall (energy in, then out): each step
+// a bar from the running total to the running total + value, its value
+// printed beside it; a total step is a bar from 0 to the running total.
+struct WaterfallStep {
+  std::string label;
+  double value = 0;            // added (> 0) or taken (< 0); ignored for a total
+  std::optional<Color> color;  // default: green for added, red for taken, grey for a total
+  bool total = false;
+  std::string note;  // printed after the value ("(47 %)")
+  std::string text;  // printed instead of the value when not empty ("54.2 mJ")
+};
+struct Waterfall {
+  std::string title;
+  Axis x;  // the account's quantity and unit ("energy", "J"); linear
+  std::vector<WaterfallStep> steps;
+  std::string empty_message = "no data";
+  int width = 900;
+  int height = 0;  // [px]; 0: waterfall_height(steps)
+};
+
+// The height a waterfall of `steps` rows is drawn at.
+int waterfall_height(std::size_t steps);
 
 // Work-precision: one method's error against CPU time, one point per setting
 // (step size, tolerance), in the order given.
@@ -112,5 +140,6 @@ Image read_png(const std::filesystem::path& png);
 // file when it cannot be written.
 void write_png(const LinePlot& plot, const std::filesystem::path& png);
 void write_png(const BarChart& chart, const std::filesystem::path& png);
+void write_png(const Waterfall& chart, const std::filesystem::path& png);
 
 }  // namespace elbowsim::plot

@@ -1,0 +1,190 @@
+#include "report/headline.hpp"
+
+#include <cmath>
+
+#include "report/energy_flow.hpp"
+#include "report/quantity.hpp"
+
+namespace elbowsim::report {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+const Json* at(const RunData& run, const std::string& path) {
+  if (!run.has_summary()) return nullptr;
+  std::string pointer = "/" + path;
+  for (char& c : pointer)
+    if (c == '.') c = '/';
+  const Json::json_pointer p(pointer);
+  return run.summary.contains(p) ? &run.summary[p] : nullptr;
+}
+
+double number(const RunData& run, const std::string& path) {
+  const Json* v = at(run, path);
+  return v && v->is_number() ? v->get<double>() : NAN;
+}
+
+bool has(const RunData& run, const std::string& path) { return at(run, path) != nullptr; }
+
+// A list (per joint) or object (per elbow) of numbers, each with its unit.
+std::string each(const Json& values, const std::string& unit) {
+  std::string out;
+  for (const auto& [key, v] : values.items())
+    out += (out.empty() ? "" : ", ") + (v.is_number() ? quantity(v.get<double>(), unit) : "—");
+  return out;
+}
+
+std::string energy_in_text(const RunData& run) {
+  std::string text = quantity(number(run, "energy_final.electrical_in"), "J");
+  const double drawn = number(run, "energy_final.drawn");
+  const double regenerated = number(run, "energy_final.regenerated");
+  if (drawn > 0 || regenerated > 0)
+    text += " (drawn " + quantity(drawn, "J") + ", regenerated " + quantity(regenerated, "J") + ")";
+  return text;
+}
+
+std::string residual_text(const RunData& run) {
+  const double residual = number(run, "balance_residual");
+  const auto flow = energy_flow(run.summary);
+  std::string text = quantity(residual, "J");
+  if (flow && flow->total_in > 0)
+    text += " (" + percent(std::abs(residual) / flow->total_in) + " of the energy in)";
+  return text;
+}
+
+bool never_rests(const RunData& run) {
+  const Json* rest = at(run, "metrics.rest_fraction");
+  if (!rest || !rest->is_object()) return false;
+  for (const auto& [elbow, v] : rest->items())
+    if (!v.is_number() || v.get<double>() > 0) return false;
+  return true;
+}
+
+std::string force_text(const RunData& run) {
+  if (never_rests(run)) return "— (no elbow rests)";
+  return quantity(number(run, "metrics.elbow_force_min"), "N") + " to " +
+         quantity(number(run, "metrics.elbow_force_max"), "N") + " (mean " +
+         quantity(number(run, "metrics.elbow_force_mean"), "N") + ", while resting)";
+}
+
+// "100 % of the run"; with several elbows "left 40 %, right 100 % of the run".
+std::string rest_text(const Json& fractions) {
+  std::string out;
+  for (const auto& [elbow, v] : fractions.items())
+    out += (out.empty() ? "" : ", ") + (fractions.size() > 1 ? elbow + " " : "") +
+           (v.is_number() ? percent(v.get<double>()) : std::string("—"));
+  return out + " of the run";
+}
+
+}  // namespace
+
+std::string run_title(const RunData& run) {
+  const std::string scenario = run.has_summary() ? run.summary.value("scenario", "") : "";
+  if (scenario.empty()) return run.label;
+  return scenario == run.label || run.label.empty() ? scenario : scenario + " · " + run.label;
+}
+
+std::string comparison_title(const std::vector<RunData>& runs) {
+  std::string names;
+  for (const RunData& run : runs) names += (names.empty() ? "" : " vs ") + run.label;
+  const std::string scenario =
+      !runs.empty() && runs.front().has_summary() ? runs.front().summary.value("scenario", "") : "";
+  return scenario.empty() ? names : scenario + " · " + names;
+}
+
+std::string validity(const RunData& run) {
+  if (!run.has_summary()) return "unknown (no summary.json)";
+  const Json& s = run.summary;
+  const std::string failure = s.value("failure", std::string("(no reason recorded)"));
+  if (!s.value("completed", false))
+    return "STOPPED EARLY at t = " + quantity(s.value("final_time", 0.0), "s") + ": " + failure;
+  if (!s.value("valid", true)) return "NOT VALID: " + failure;
+  return "valid";
+}
+
+std::vector<HeadlineItem> headline_items(const std::vector<const RunData*>& runs) {
+  const std::vector<HeadlineItem> all = {
+      {"hand error, RMS", "metrics.hand_error_rms", "m"},
+      {"hand error, max", "metrics.hand_error_max", "m"},
+      {"electrical energy in", "energy_final.electrical_in", "J"},
+      {"Joule loss", "energy_final.joule", "J"},
+      {"peak electrical power", "metrics.power_peak", "W"},
+      {"motor current, RMS per joint", "metrics.current_rms", "A"},
+      {"motor current, peak per joint", "metrics.current_peak", "A"},
+      {"elbow resting", "metrics.rest_fraction", ""},
+      {"elbow normal force", "metrics.elbow_force_max", "N"},
+      {"energy balance residual", "balance_residual", "J"},
+  };
+  std::vector<HeadlineItem> out;
+  for (const HeadlineItem& item : all)
+    for (const RunData* run : runs)
+      if (has(*run, item.path)) {
+        out.push_back(item);
+        break;
+      }
+  return out;
+}
+
+std::string headline_value(const RunData& run, const HeadlineItem& item) {
+  const Json* v = at(run, item.path);
+  if (!v || v->is_null()) return "—";
+  if (item.path == "energy_final.electrical_in") return energy_in_text(run);
+  if (item.path == "balance_residual") return residual_text(run);
+  if (item.path == "metrics.elbow_force_max") return force_text(run);
+  if (item.path == "metrics.rest_fraction") return rest_text(*v);
+  if (v->is_array() || v->is_object()) return each(*v, item.unit);
+  return v->is_number() ? quantity(v->get<double>(), item.unit) : v->dump();
+}
+
+std::string headline_sentence(const RunData& run) {
+  if (!run.has_summary()) return "This run folder has no summary.json: its numbers are unknown.";
+  const Json& s = run.summary;
+  const std::string status = validity(run);
+  std::string text = status == "valid" ? "A valid run" : "A run that is " + status + ";";
+  text += " of " + quantity(s.value("final_time", 0.0), "s") + " simulated";
+  if (status != "valid") return text + ". Its numbers below cover what it computed.";
+  std::vector<std::string> parts;
+  if (has(run, "metrics.hand_error_rms"))
+    parts.push_back("the hand kept to its path within " +
+                    quantity(number(run, "metrics.hand_error_rms"), "m") + " RMS (" +
+                    quantity(number(run, "metrics.hand_error_max"), "m") + " at most)");
+  if (has(run, "energy_final.electrical_in") && number(run, "energy_final.drawn") > 0)
+    parts.push_back("the motors took " + quantity(number(run, "energy_final.electrical_in"), "J") +
+                    " of electrical energy and lost " +
+                    quantity(number(run, "energy_final.joule"), "J") +
+                    " as heat in their windings");
+  if (never_rests(run))
+    parts.push_back("no elbow rested on the table");
+  else if (const Json* rest = at(run, "metrics.rest_fraction"); rest && rest->is_object())
+    parts.push_back(std::string(rest->size() > 1 ? "the elbows rested " : "the elbow rested ") +
+                    rest_text(*rest));
+  for (std::size_t k = 0; k < parts.size(); ++k)
+    text += (k == 0 ? ": " : k + 1 == parts.size() ? " and " : ", ") + parts[k];
+  return text + ".";
+}
+
+std::string accuracy_check(const RunData& run) {
+  const Json* check = at(run, "step_check");
+  if (!check || !check->is_object())
+    return "not measured (elbowsim run --check-step reruns at half the step and gives the "
+           "accuracy floor)";
+  if (check->contains("error")) return "failed: " + (*check)["error"].get<std::string>();
+  std::string text = "at half the step (" + quantity(check->value("half_step", 0.0), "s") + ")";
+  if (!check->value("valid_at_half_step", true)) return text + " the run is NOT VALID";
+  const Json& m = check->value("metrics", Json::object());
+  std::vector<std::string> changes;
+  for (const auto& [name, label] :
+       {std::pair<const char*, const char*>{"hand_error_rms", "the RMS hand error"},
+        {"energy_in", "the electrical energy in"},
+        {"joule", "the Joule loss"}})
+    if (m.contains(name) && m[name].contains("relative_change"))
+      changes.push_back(std::string(label) + (changes.empty() ? " changes by " : " by ") +
+                        percent(m[name]["relative_change"].get<double>()));
+  if (changes.empty()) return text + " no metric was compared";
+  for (std::size_t k = 0; k < changes.size(); ++k)
+    text += (k == 0 ? " " : k + 1 == changes.size() ? " and " : ", ") + changes[k];
+  return text;
+}
+
+}  // namespace elbowsim::report
