@@ -1,6 +1,8 @@
 #include "engine/control/inverse_kinematics.hpp"
 
 #include <Eigen/SVD>
+#include <algorithm>
+#include <limits>
 
 #include "engine/dynamics/kinematics.hpp"
 
@@ -61,25 +63,30 @@ void build_rows(const Model& model, Data& data, const IkProblem& problem, Rows& 
   }
 }
 
-// One step: damped pseudo-inverse of J applied to e, plus `gain` of the
-// posture error projected into the null space of the rows.
-Eigen::VectorXd ik_step(const Rows& rows, const Eigen::VectorXd& to_posture, double gain,
-                        bool damp) {
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(rows.J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+// One iteration's two directions from the thin SVD of the rows J = U S V^T:
+// the damped least-squares step on the error e, sum_i s_i / (s_i^2 + l_i^2)
+// (u_i . e) v_i (l_i > 0 only below 1e-3 of the largest singular value, as
+// near a stretched arm; none when undamped), and the posture error with its
+// row-space part removed: its projection into the exact null space.
+struct IkStep {
+  Eigen::VectorXd rows;     // [n] toward meeting the rows
+  Eigen::VectorXd to_null;  // [n] toward the posture, within the rows' null space
+};
+
+IkStep ik_step(const Rows& rows, const Eigen::VectorXd& to_posture, bool damp) {
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(rows.J, Eigen::ComputeThinU | Eigen::ComputeThinV);
   const Eigen::VectorXd& s = svd.singularValues();
   const double smax = s.size() ? s[0] : 0.0, eps = 1e-3 * smax, lambda_max = 1e-2 * smax;
-  Eigen::VectorXd dq = Eigen::VectorXd::Zero(rows.J.cols());
-  Eigen::MatrixXd range(rows.J.cols(), 0);
+  IkStep step{Eigen::VectorXd::Zero(rows.J.cols()), to_posture};
   for (Eigen::Index i = 0; i < s.size(); ++i) {
     if (s[i] <= 1e-12 * smax) continue;  // a row with no reach (e.g. y of a planar arm)
     double lambda2 = 0;
     if (damp && s[i] < eps) lambda2 = (1 - (s[i] / eps) * (s[i] / eps)) * lambda_max * lambda_max;
-    dq += s[i] / (s[i] * s[i] + lambda2) * svd.matrixU().col(i).dot(rows.e) * svd.matrixV().col(i);
-    range.conservativeResize(Eigen::NoChange, range.cols() + 1);
-    range.rightCols(1) = svd.matrixV().col(i);
+    const auto v = svd.matrixV().col(i);
+    step.rows += s[i] / (s[i] * s[i] + lambda2) * svd.matrixU().col(i).dot(rows.e) * v;
+    step.to_null -= v.dot(to_posture) * v;
   }
-  if (gain > 0) dq += gain * (to_posture - range * (range.transpose() * to_posture));
-  return dq;
+  return step;
 }
 
 void clamp_limits(const IkProblem& problem, Eigen::VectorXd& q) {
@@ -130,34 +137,65 @@ double conditioning(const Eigen::VectorXd& s, int rank) {
   return s[std::min<Eigen::Index>(rank, s.size()) - 1] / s[0];
 }
 
+double arm_size(const Model& model) {
+  double size = model.hand_point.norm();
+  for (const Joint& joint : model.joints) size += joint.origin_position.norm();
+  for (const Elbow& elbow : model.elbows) size = std::max(size, elbow.point.norm());
+  return size > 0 ? size : 1.0;
+}
+
+namespace {
+
+// Phase 1: rows and posture together. The posture step takes the scenario's
+// gain while far from the nearest solution; once it is within 1e-3 rad and
+// shrinking, the gain doubles each iteration up to 1 (in that linear regime
+// the flow's end is a few steps away, and steps that small cannot jump to
+// another branch of the self-motion). It ends when the rows are met to
+// rounding and the posture step vanishes (the stationary point the small
+// steps lead to), or after 200 iterations.
+void follow_posture(const Model& model, Data& data, const IkProblem& problem, IkResult& result,
+                    Rows& rows) {
+  double gain = problem.posture_gain, last_null = std::numeric_limits<double>::infinity();
+  const bool posture = problem.posture.size() == result.q.size() && problem.posture_gain > 0;
+  for (int it = 0; it < 200; ++it, ++result.iterations) {
+    forward_kinematics(model, data, result.q);
+    build_rows(model, data, problem, rows);
+    const Eigen::VectorXd to_posture =
+        posture ? Eigen::VectorXd(problem.posture - result.q) : Eigen::VectorXd::Zero(result.q.size());
+    const IkStep step = ik_step(rows, to_posture, true);
+    const double null = step.to_null.norm();
+    if (rows.e.norm() < 1e-13 && step.rows.norm() < 1e-12 && null < 1e-12) break;
+    gain = null < 1e-3 && null < last_null ? std::min(1.0, 2 * gain) : problem.posture_gain;
+    last_null = null;
+    result.q += step.rows;
+    if (posture) result.q += gain * step.to_null;
+    clamp_limits(problem, result.q);
+  }
+}
+
+}  // namespace
+
 IkResult solve_ik(const Model& model, Data& data, const IkProblem& problem,
                   const Eigen::VectorXd& q0) {
   IkResult result;
   result.q = q0;
   Rows rows;
-  // Phase 1: rows and posture together; phase 2: polish the rows alone.
-  for (int phase = 0; phase < 2; ++phase) {
-    const int max_iterations = phase == 0 ? 100 : 20;
-    for (int it = 0; it < max_iterations; ++it, ++result.iterations) {
-      forward_kinematics(model, data, result.q);
-      build_rows(model, data, problem, rows);
-      const double gain = phase == 0 ? problem.posture_gain : 0.0;
-      const Eigen::VectorXd to_posture = problem.posture.size() == result.q.size()
-                                             ? Eigen::VectorXd(problem.posture - result.q)
-                                             : Eigen::VectorXd::Zero(result.q.size());
-      const Eigen::VectorXd dq = ik_step(rows, to_posture, gain, phase == 0);
-      if (rows.e.norm() < 1e-13 && dq.norm() < 1e-12) break;
-      if (phase == 1) {
-        // The polish inverts every singular value above 1e-12 of the largest:
-        // near a singular pose (a straight chain) a rounding-level error along
-        // a direction of singular value ~1e-11 asks for a step of radians.
-        // Take a step only where it lowers the residual (halving it up to
-        // 10 times); none does: the rows are met as well as they can be.
-        if (!polish(model, data, problem, dq, rows, result.q)) break;
-        continue;
-      }
-      result.q += dq;
-      clamp_limits(problem, result.q);
+  follow_posture(model, data, problem, result, rows);
+  // Phase 2: polish the rows alone, undamped. It inverts every singular value
+  // above 1e-12 of the largest: near a singular pose (a straight chain) a
+  // rounding-level error along a direction of singular value ~1e-11 asks for
+  // a step of radians. Take a step only where it lowers the residual (halving
+  // it up to 10 times); none does: the rows are met as well as they can be
+  // (stationary: the residual's local minimum).
+  result.stationary = false;
+  for (int it = 0; it < 50; ++it, ++result.iterations) {
+    forward_kinematics(model, data, result.q);
+    build_rows(model, data, problem, rows);
+    const IkStep step = ik_step(rows, Eigen::VectorXd::Zero(result.q.size()), false);
+    if (rows.e.norm() < 1e-13 && step.rows.norm() < 1e-12) break;
+    if (!polish(model, data, problem, step.rows, rows, result.q) || step.rows.norm() < 1e-14) {
+      result.stationary = true;
+      break;
     }
   }
   forward_kinematics(model, data, result.q);
@@ -166,6 +204,8 @@ IkResult solve_ik(const Model& model, Data& data, const IkProblem& problem,
   result.hand_residual = rows.e.head(3).norm();
   result.elbow_residual =
       rows.e.size() > 3 ? rows.e.tail(rows.e.size() - 3).cwiseAbs().maxCoeff() : 0.0;
+  result.tolerance = 1e-8 * arm_size(model);
+  result.rows_met = result.hand_residual <= result.tolerance && result.elbow_residual <= result.tolerance;
   return result;
 }
 

@@ -41,6 +41,13 @@ struct IkResult {
   double hand_residual = 0;   // [m] |target - hand|
   double elbow_residual = 0;  // [m] max |C_k - clearance|
   int iterations = 0;
+  double tolerance = 0;     // [m] rows within this are met: 1e-8 x arm_size (10 nm per metre)
+  bool rows_met = false;    // hand and elbow residuals within `tolerance`
+  // The polish could lower the residual no further (a local minimum of the
+  // rows' error): with rows not met, the target is out of reach (of the arm,
+  // or within its joint limits); not stationary and not met: the iterations
+  // ran out while it still fell (did not converge).
+  bool stationary = false;
   // Singular values of the rows at q, largest first (rows that no joint
   // moves, like y of a planar arm, left out). Against a regular pose's rank,
   // one falling to ~0 marks a singular pose (an arm stretched or folded);
@@ -55,11 +62,17 @@ int numerical_rank(const Eigen::VectorXd& singular_values);
 // losing one of the `rank` directions a regular pose has (1: none lost).
 double conditioning(const Eigen::VectorXd& singular_values, int rank);
 
-// Gauss-Newton with a damped least-squares pseudo-inverse from the SVD of
-// the row Jacobian (damping grows as the smallest singular value falls
+// A length scale of the arm [m]: the sum of its joint offsets and the hand
+// point's distance from its link (the longest reach it could have).
+double arm_size(const Model& model);
+
+// Gauss-Newton with a damped least-squares pseudo-inverse from the thin SVD
+// of the row Jacobian (damping grows as the smallest singular value falls
 // below 1e-3 of the largest, as near a stretched arm), plus the posture step
-// projected into the exact null space of the rows; a last few undamped,
-// posture-free iterations polish the rows to ~1e-13 m. Starts from q0.
+// projected into the exact null space of the rows (gain posture_gain while
+// far, up to 1 in the last 1e-3 rad: see follow_posture), until the rows are
+// met to rounding and the posture step vanishes; then undamped, posture-free
+// iterations polish the rows to ~1e-13 m. Starts from q0.
 IkResult solve_ik(const Model& model, Data& data, const IkProblem& problem,
                   const Eigen::VectorXd& q0);
 

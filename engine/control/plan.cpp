@@ -73,25 +73,42 @@ std::vector<Eigen::Vector3d> elbow_centres(const Model& model, const Data& data,
 // its largest: the hand all but cannot move along one direction there.
 constexpr double kNearSingular = 1e-3;
 
-// rank: a regular pose's (the task's start); 0: this pose's own.
-void check(const IkResult& r, double t, const Eigen::Vector3d& target, int rank = 0) {
-  if (r.hand_residual > 1e-6) {
-    std::ostringstream msg;
-    msg << "hand target " << where(t, target) << " is out of reach: missed by " << r.hand_residual
-        << " m";
-    const double near =
-        conditioning(r.singular_values, rank > 0 ? rank : numerical_rank(r.singular_values));
-    if (near < kNearSingular)
-      msg << ", the arm in a singular pose (stretched toward the target, or folded; "
-          << "smallest singular value " << near << " of the largest)";
-    throw PlanError(msg.str());
-  }
-  if (r.elbow_residual > 1e-6) {
-    std::ostringstream msg;
+// The IK result at time t is usable: its rows met within r.tolerance. If not,
+// why: the target out of reach (the residual cannot fall further: of the
+// arm, near a singular pose, or within the joint limits), or the iterations
+// ran out while it still fell. rank: a regular pose's (the task's start); 0:
+// this pose's own.
+void check(const IkResult& r, double t, const Eigen::Vector3d& target, int rank = 0,
+           bool limited = false) {
+  if (r.rows_met) return;
+  std::ostringstream msg;
+  const bool hand = r.hand_residual > r.tolerance;
+  if (hand)
+    msg << "hand target " << where(t, target);
+  else
     msg << "the task's elbows cannot stay in place at t = " << t << " s while the hand is at "
-        << where(t, target) << ": missed by " << r.elbow_residual << " m";
+        << where(t, target);
+  const double missed = hand ? r.hand_residual : r.elbow_residual;
+  if (!r.stationary) {
+    msg << ": the inverse kinematics did not converge (still " << missed << " m off after "
+        << r.iterations << " iterations; tolerance " << r.tolerance << " m)";
     throw PlanError(msg.str());
   }
+  msg << (hand ? " is out of reach" : "") << (limited ? " within the joint limits" : "")
+      << ": missed by " << missed << " m (tolerance " << r.tolerance << " m)";
+  const double near =
+      conditioning(r.singular_values, rank > 0 ? rank : numerical_rank(r.singular_values));
+  if (near < kNearSingular)
+    msg << ", the arm in a singular pose (stretched toward the target, or folded; "
+        << "smallest singular value " << near << " of the largest)";
+  throw PlanError(msg.str());
+}
+
+// Some joint of q sits at one of the problem's joint limits.
+bool at_limit(const IkProblem& problem, const Eigen::VectorXd& q) {
+  const bool low = problem.q_min.size() == q.size() && (q.array() <= problem.q_min.array()).any();
+  const bool high = problem.q_max.size() == q.size() && (q.array() >= problem.q_max.array()).any();
+  return low || high;
 }
 
 // Joint rates and accelerations by central differences of the IK samples.
@@ -202,7 +219,7 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
     const IkProblem problem = problem_at(experiment, start, pins, t);
     const IkResult r = solve_ik(model, data, problem, q);
     if (k == 0) rank = numerical_rank(r.singular_values);
-    check(r, t, problem.hand, rank);
+    check(r, t, problem.hand, rank, at_limit(problem, r.q));
     if (const double c = conditioning(r.singular_values, rank); c < least) least = c, least_at = k;
     forward_kinematics(model, data, r.q);
     check_over_table(model, data, problem, t);
@@ -232,7 +249,7 @@ Eigen::VectorXd start_pose(const Model& model, const Experiment& experiment) {
   const TaskStart start = task_start(model, experiment, data);
   const IkProblem problem = problem_at(experiment, start, {}, 0.0);
   const IkResult r = solve_ik(model, data, problem, start.q);  // make_plan's first sample
-  check(r, 0.0, problem.hand);
+  check(r, 0.0, problem.hand, 0, at_limit(problem, r.q));
   return r.q;
 }
 
