@@ -24,6 +24,7 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
   g.meshes[cone] = upload(unit_cone(32));
   g.meshes[box] = upload(unit_box());
   g.meshes[ring] = upload(unit_torus(48, 8, kRingTube));
+  g.meshes[dot] = upload(unit_sphere(8, 4));
   make_line_buffer(g);
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
@@ -43,7 +44,6 @@ void GlRenderer::begin_frame(const Color& background) {
   glViewport(0, 0, width_, height_);
   glClearColor(background.r, background.g, background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  gl_->shadow_valid = false;
 }
 
 namespace {
@@ -87,7 +87,6 @@ void shadow_pass(GlRenderer::Gl& g, const Scene& scene, const Lighting& lights) 
   glDisable(GL_POLYGON_OFFSET_FILL);
   glCullFace(GL_BACK);
   glBindFramebuffer(GL_FRAMEBUFFER, g.draw_fbo);
-  g.shadow_valid = true;
 }
 
 // The lit program's uniforms for a view from `eye` under `lights`.
@@ -139,42 +138,56 @@ void set_viewport(const Viewport& v, int frame_height) {
 
 }  // namespace
 
-void GlRenderer::draw(const Scene& scene, const Camera& camera, const Viewport& v) {
-  Gl& g = *gl_;
-  const Lighting lights = view_lighting(camera);
-  collect(scene, g.instances);
-  const bool shadows = scene.shadows.enabled && !scene.shadows.bounds.isEmpty();
-  if (shadows) shadow_pass(g, scene, lights);
-  set_viewport(v, height_);
-  use_lit(g, camera, camera.eye, lights, shadows);
-  for (const ShapeInstances& group : g.instances) draw_shapes(g, group);
-  draw_grid(g, scene.grid, (camera.projection() * camera.view()).cast<float>());
+namespace {
+
+void scissor(const Viewport& v, int frame_height) {
+  glScissor(v.x, frame_height - v.y - v.height, v.width, v.height);
 }
 
-void GlRenderer::draw_inset(const Scene& scene, const Inset& inset, const Camera& main,
-                            const Viewport& v) {
-  Gl& g = *gl_;
-  set_viewport(v, height_);
+// The inset into its rectangle: cleared to its background, the scene faded
+// toward it (where the hand is, not what to read), then its paths over
+// everything in order (desired band, traced line, hand), flat. Lights as in
+// the panel's view `main`; the shadow map of the panel's scene.
+void draw_inset(GlRenderer::Gl& g, const Inset& inset, const Camera& main, bool shadows,
+                const Viewport& v, int frame_height) {
+  set_viewport(v, frame_height);
   glEnable(GL_SCISSOR_TEST);
-  glScissor(v.x, height_ - v.y - v.height, v.width, v.height);
+  scissor(v, frame_height);
   glClearColor(inset.background.r, inset.background.g, inset.background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  // The scene, faded toward the background: where the hand is, not what to read.
-  collect(scene, g.instances);
-  const bool shadows = g.shadow_valid && scene.shadows.enabled;
   use_lit(g, inset.camera, inset.camera.eye, view_lighting(main), shadows);
   glUniform1f(glGetUniformLocation(g.lit, "fade"), inset.fade);
   glUniform3f(glGetUniformLocation(g.lit, "fade_color"), inset.background.r, inset.background.g,
               inset.background.b);
   draw_shapes(g, g.instances[arm]);
   draw_shapes(g, g.instances[ground]);
-  // The paths over everything, in order (desired band, traced line, hand), flat.
   glUniform1f(glGetUniformLocation(g.lit, "fade"), 0.0f);
   glUniform1i(glGetUniformLocation(g.lit, "unlit"), 1);
   glDisable(GL_DEPTH_TEST);
   for (const ShapeInstances& layer : inset_instances(inset)) draw_shapes(g, layer);
   glEnable(GL_DEPTH_TEST);
+  // Depth 0 over the inset: the main view's fragments there fail the depth
+  // test before they are shaded.
+  glClearDepth(0.0);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glClearDepth(1.0);
   glDisable(GL_SCISSOR_TEST);
+}
+
+}  // namespace
+
+void GlRenderer::draw(const Scene& scene, const Camera& camera, const Viewport& v,
+                      const InsetView* inset) {
+  Gl& g = *gl_;
+  const Lighting lights = view_lighting(camera);
+  collect(scene, g.instances);
+  const bool shadows = scene.shadows.enabled && !scene.shadows.bounds.isEmpty();
+  if (shadows) shadow_pass(g, scene, lights);
+  if (inset) draw_inset(g, inset->inset, camera, shadows, inset->viewport, height_);
+  set_viewport(v, height_);
+  use_lit(g, camera, camera.eye, lights, shadows);
+  for (const ShapeInstances& group : g.instances) draw_shapes(g, group);
+  draw_grid(g, scene.grid, (camera.projection() * camera.view()).cast<float>());
 }
 
 void GlRenderer::end_frame() {

@@ -20,7 +20,7 @@ struct MeshBuffers {
   GLsizei index_count = 0;
 };
 
-inline constexpr int kShadowMapSize = 2048;  // [texels] per side
+inline constexpr int kShadowMapSize = 1024;  // [texels] per side
 
 struct GlRenderer::Gl {
   GLuint lit = 0, flat = 0, depth = 0;  // programs
@@ -31,7 +31,6 @@ struct GlRenderer::Gl {
   GLuint resolve_fbo = 0, resolve_color = 0;
   std::array<GLuint, 2> pbo{};
   GLuint shadow_fbo = 0, shadow_map = 0;  // made on first use
-  bool shadow_valid = false;              // the map holds the last drawn scene
   Eigen::Matrix4f light_view_projection = Eigen::Matrix4f::Identity();
   float shadow_texel = 0;  // [m] world size of one texel
 };

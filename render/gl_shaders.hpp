@@ -36,8 +36,8 @@ void main() {
 //   h = (l + v)/|l + v|,
 // where s_0, the key light's visibility, comes from the shadow map (1 without
 // shadows) and s_1 = 1. The map is looked up at the point moved 1.5 texels
-// along its normal (no self-shadowing "acne"), with four bilinear depth
-// comparisons half a texel apart: edges soft over about 3 texels. In shadow
+// along its normal (no self-shadowing "acne"), with one bilinear depth
+// comparison (the four nearest texels compared and blended). In shadow
 // the key keeps `shadow_keep` of its light, so shadowed faces keep their form.
 // Then the colour is mixed `fade` of the way toward fade_color (the inset's
 // faded scene); `unlit` 1 gives the base colour as is (the inset's paths).
@@ -65,12 +65,8 @@ float key_visibility(vec3 n) {
   vec4 s = light_view_projection * vec4(world_position + 1.5 * shadow_texel * n, 1.0);
   vec3 uvz = s.xyz / s.w * 0.5 + 0.5;
   if (any(lessThan(uvz, vec3(0.0))) || any(greaterThan(uvz, vec3(1.0)))) return 1.0;
-  vec2 d = vec2(0.5 / float(textureSize(shadow_map, 0).x));
-  float lit = texture(shadow_map, vec3(uvz.xy + vec2(-d.x, -d.y), uvz.z)) +
-              texture(shadow_map, vec3(uvz.xy + vec2(d.x, -d.y), uvz.z)) +
-              texture(shadow_map, vec3(uvz.xy + vec2(-d.x, d.y), uvz.z)) +
-              texture(shadow_map, vec3(uvz.xy + vec2(d.x, d.y), uvz.z));
-  return mix(shadow_keep, 1.0, 0.25 * lit);
+  float lit = texture(shadow_map, uvz);
+  return mix(shadow_keep, 1.0, lit);
 }
 
 void main() {

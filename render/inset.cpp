@@ -61,7 +61,37 @@ Eigen::Vector3d view_up(const Eigen::Vector3d& back) {
   return up.normalized();
 }
 
+// The runs of `path` through the camera's window grown by a fifth on each
+// side: every point inside it, with the points just before and after a run
+// (so that its segments reach the edge).
+std::vector<std::vector<Eigen::Vector3d>> in_window(const std::vector<Eigen::Vector3d>& path,
+                                                    const Camera& c) {
+  const Eigen::Vector3d back = (c.eye - c.target).normalized();
+  const Eigen::Vector3d right = c.up.cross(back).normalized(), up = back.cross(right);
+  const double half_h = 0.7 * c.ortho_height, half_w = half_h * c.aspect;
+  auto inside = [&](std::size_t k) {
+    const Eigen::Vector3d d = path[k] - c.target;
+    return std::abs(d.dot(right)) <= half_w && std::abs(d.dot(up)) <= half_h;
+  };
+  std::vector<std::vector<Eigen::Vector3d>> pieces;
+  bool open = false;
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    const bool keep =
+        inside(k) || (k > 0 && inside(k - 1)) || (k + 1 < path.size() && inside(k + 1));
+    if (keep && !open) pieces.emplace_back();
+    if (keep) pieces.back().push_back(path[k]);
+    open = keep;
+  }
+  return pieces;
+}
+
 }  // namespace
+
+std::size_t InsetPath::points() const {
+  std::size_t n = 0;
+  for (const auto& piece : pieces) n += piece.size();
+  return n;
+}
 
 InsetPlan plan_inset(const std::vector<Eigen::Vector3d>& path, const Eigen::Vector3d& main_back,
                      const InsetSettings& settings) {
@@ -117,8 +147,8 @@ PixelRect inset_rect(int width, int height, const std::vector<Eigen::Vector2d>& 
 }
 
 Inset make_inset(const InsetPlan& plan, const PixelRect& rect, const Camera& main, int panel_height,
-                 const Eigen::Vector3d& hand, std::vector<Eigen::Vector3d> desired,
-                 std::vector<Eigen::Vector3d> traced, const Eigen::AlignedBox3d& depth,
+                 const Eigen::Vector3d& hand, const std::vector<Eigen::Vector3d>& desired,
+                 const std::vector<Eigen::Vector3d>& traced, const Eigen::AlignedBox3d& depth,
                  const InsetStyle& style) {
   Inset inset;
   inset.rect = rect;
@@ -136,8 +166,8 @@ Inset make_inset(const InsetPlan& plan, const PixelRect& rect, const Camera& mai
   fit_clip(c, all);
 
   const double per_metre = rect.height / plan.view_height;  // [px/m] in the inset
-  inset.desired = {std::move(desired), 3.0 / per_metre, style.desired};
-  inset.traced = {std::move(traced), 1.0 / per_metre, style.traced};
+  inset.desired = {in_window(desired, c), 3.0 / per_metre, style.desired};
+  inset.traced = {in_window(traced, c), 1.0 / per_metre, style.traced};
   inset.hand = {hand, 3.5 / per_metre, style.hand};
   inset.magnification = per_metre / main.pixels_per_metre(hand, panel_height);
   inset.scale_bar = plan.scale_bar;

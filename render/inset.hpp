@@ -53,11 +53,21 @@ Eigen::Vector3d inset_target(const InsetPlan& plan, const Eigen::Vector3d& hand)
 // large as keeps it within 45 % of the panel's width and 42 % of its height.
 PixelRect inset_rect(int width, int height, const std::vector<Eigen::Vector2d>& avoid);
 
+// A path as drawn in the inset: only its runs through the window (grown by
+// a fifth on each side), so that drawing costs what is seen, not what was
+// recorded.
+struct InsetPath {
+  std::vector<std::vector<Eigen::Vector3d>> pieces;  // [m] world, each a polyline
+  double radius = 0;                                 // [m] of its tube
+  Color color;
+  std::size_t points() const;  // in all pieces
+};
+
 struct Inset {
   PixelRect rect;            // [px] in the panel, from its top-left corner
   Camera camera;             // orthographic, on the window
-  Polyline desired;          // the whole desired path, a band 6 px wide
-  Polyline traced;           // the hand's path up to now, a line 2 px wide
+  InsetPath desired;         // the desired path, a band 6 px wide
+  InsetPath traced;          // the hand's path up to now, a line 2 px wide
   Sphere hand;               // the hand now, a dot 7 px across
   double magnification = 1;  // inset pixels per metre over the main view's at the hand
   double scale_bar = 0;      // [m]
@@ -77,10 +87,11 @@ struct InsetStyle {
 };
 
 // The inset at one instant: `rect` in a panel `panel_height` px tall whose
-// view is `main`; the window on `hand`; clip planes around `depth` [m].
+// view is `main`; the window on `hand`; clip planes around `depth` [m]; the
+// paths given whole (world positions in order).
 Inset make_inset(const InsetPlan& plan, const PixelRect& rect, const Camera& main, int panel_height,
-                 const Eigen::Vector3d& hand, std::vector<Eigen::Vector3d> desired,
-                 std::vector<Eigen::Vector3d> traced, const Eigen::AlignedBox3d& depth,
+                 const Eigen::Vector3d& hand, const std::vector<Eigen::Vector3d>& desired,
+                 const std::vector<Eigen::Vector3d>& traced, const Eigen::AlignedBox3d& depth,
                  const InsetStyle& style = {});
 
 }  // namespace elbowsim

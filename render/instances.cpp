@@ -23,12 +23,18 @@ void add_sphere(std::vector<float>& out, const Eigen::Vector3d& c, double r, con
   if (r > 0) add_instance(out, r * Eigen::Matrix3d::Identity(), c, color);
 }
 
-void add_path(ShapeInstances& out, const Polyline& path, bool corners) {
+void add_path(ShapeInstances& out, const Polyline& path) {
   const auto& p = path.points;
   for (std::size_t k = 1; k < p.size(); ++k)
     add_along(out[tube], p[k - 1], p[k], path.radius, path.color);
-  if (corners)
-    for (const Eigen::Vector3d& x : p) add_sphere(out[sphere], x, path.radius, path.color);
+}
+
+// Each piece's segments as tubes and its corners as coarse spheres.
+void add_inset_path(ShapeInstances& out, const InsetPath& path) {
+  for (const std::vector<Eigen::Vector3d>& piece : path.pieces) {
+    add_path(out, {piece, path.radius, path.color});
+    for (const Eigen::Vector3d& x : piece) add_sphere(out[dot], x, path.radius, path.color);
+  }
 }
 
 void add_arm(const Scene& s, ShapeInstances& out) {
@@ -81,14 +87,14 @@ void collect(const Scene& s, Instances& out) {
     for (std::vector<float>& v : group) v.clear();
   add_arm(s, out[arm]);
   add_ground(s, out[ground]);
-  add_path(out[paths], s.hand_path, false);
-  add_path(out[paths], s.desired_hand_path, false);
+  add_path(out[paths], s.hand_path);
+  add_path(out[paths], s.desired_hand_path);
 }
 
 std::array<ShapeInstances, 3> inset_instances(const Inset& inset) {
   std::array<ShapeInstances, 3> out;
-  add_path(out[0], inset.desired, true);
-  add_path(out[1], inset.traced, true);
+  add_inset_path(out[0], inset.desired);
+  add_inset_path(out[1], inset.traced);
   add_sphere(out[2][sphere], inset.hand.center, inset.hand.radius, inset.hand.color);
   return out;
 }

@@ -225,8 +225,9 @@ void draw_panel(GlRenderer& renderer, const PanelFrame& f, int scale) {
   auto scaled = [scale](const PixelRect& r) {
     return Viewport{r.x * scale, r.y * scale, r.width * scale, r.height * scale};
   };
-  renderer.draw(f.scene, f.camera, scaled(f.panel));
-  if (f.inset) renderer.draw_inset(f.scene, *f.inset, f.camera, scaled(f.text.inset->rect));
+  if (!f.inset) return renderer.draw(f.scene, f.camera, scaled(f.panel));
+  const GlRenderer::InsetView inset{*f.inset, scaled(f.text.inset->rect)};
+  renderer.draw(f.scene, f.camera, scaled(f.panel), &inset);
 }
 
 std::vector<double> frame_times(double end, double fps) {

@@ -190,8 +190,17 @@ TEST_CASE("render inset: a 4:3 corner away from the arm; the hand and the path w
   CHECK(inset.magnification ==
         doctest::Approx(r.height / plan.view_height / main.pixels_per_metre(hand, 720)));
   CHECK(inset.title.find("hand path \u00d7") == 0);
-  CHECK(inset.desired.points.size() == path.size());
-  CHECK(inset.traced.points.size() == 71);
+  // Only the runs of the paths through the window (grown by a fifth): here
+  // one run each, the traced one ending at the hand.
+  REQUIRE(inset.desired.pieces.size() == 1);
+  REQUIRE(inset.traced.pieces.size() == 1);
+  CHECK(inset.desired.points() < path.size());
+  CHECK(inset.desired.points() > 40);
+  CHECK(approx(inset.traced.pieces[0].back(), hand, 0));
+  for (const Vector3d& p : inset.desired.pieces[0]) {
+    const Eigen::Vector2d px = *inset.camera.project(p, r.width, r.height);
+    CHECK(std::abs(px.x() - 0.5 * r.width) < 0.72 * r.width);  // inside, or the next point out
+  }
   CHECK(inset.desired.radius > inset.traced.radius);  // the band under the line
 }
 
@@ -206,8 +215,8 @@ TEST_CASE("render inset: only with a task's desired path, unless turned off") {
   const Camera main = task.camera(16.0 / 9.0);
   const std::optional<Inset> inset = task.inset(0.5, main, 1280, 720);
   REQUIRE(inset);
-  CHECK(inset->desired.points.size() == with.rows());
-  CHECK(inset->traced.points.size() == 6);  // rows at 0 .. 0.5 s
+  CHECK(inset->desired.points() > 0);
+  CHECK(inset->traced.points() > 0);
   CHECK_FALSE(FrameSource(model, without, settings, "free").inset(0.5, main, 1280, 720));
   settings.inset.show = false;
   CHECK_FALSE(FrameSource(model, with, settings, "off").inset(0.5, main, 1280, 720));
