@@ -61,8 +61,8 @@ Eigen::Vector3d view_up(const Eigen::Vector3d& back) {
   return up.normalized();
 }
 
-// The runs of `path` through the camera's window grown by a fifth on each
-// side: every point inside it, with the points just before and after a run
+// The runs of `path` through the camera's window grown on each side by a
+// fifth of its height: every point inside it, with the points just before and after a run
 // (so that its segments reach the edge).
 std::vector<std::vector<Eigen::Vector3d>> in_window(const std::vector<Eigen::Vector3d>& path,
                                                     const Camera& c) {

@@ -53,8 +53,8 @@ Eigen::Vector3d inset_target(const InsetPlan& plan, const Eigen::Vector3d& hand)
 // large as keeps it within 45 % of the panel's width and 42 % of its height.
 PixelRect inset_rect(int width, int height, const std::vector<Eigen::Vector2d>& avoid);
 
-// A path as drawn in the inset: only its runs through the window (grown by
-// a fifth on each side), so that drawing costs what is seen, not what was
+// A path as drawn in the inset: only its runs through the window (grown on
+// each side by a fifth of its height), so that drawing costs what is seen, not what was
 // recorded.
 struct InsetPath {
   std::vector<std::vector<Eigen::Vector3d>> pieces;  // [m] world, each a polyline

@@ -29,12 +29,21 @@ void add_path(ShapeInstances& out, const Polyline& path) {
     add_along(out[tube], p[k - 1], p[k], path.radius, path.color);
 }
 
-// Each piece's segments as tubes and its corners as coarse spheres.
-void add_inset_path(ShapeInstances& out, const InsetPath& path) {
-  for (const std::vector<Eigen::Vector3d>& piece : path.pieces) {
-    add_path(out, {piece, path.radius, path.color});
-    for (const Eigen::Vector3d& x : piece) add_sphere(out[dot], x, path.radius, path.color);
-  }
+// Each piece's segments as flat ribbons (boxes of width 2 radius and depth
+// radius, broad side toward `back`, each a radius longer at both ends so
+// that bends stay closed): drawn flat, a ribbon looks like a tube at a sixth
+// of its triangles.
+void add_inset_path(ShapeInstances& out, const InsetPath& path, const Eigen::Vector3d& back) {
+  const double r = path.radius;
+  for (const std::vector<Eigen::Vector3d>& p : path.pieces)
+    for (std::size_t k = 1; k < p.size(); ++k) {
+      const Eigen::Vector3d d = p[k] - p[k - 1];
+      const Eigen::Vector3d across = d.cross(back);
+      if (d.norm() < 1e-12 || across.norm() < 1e-12) continue;
+      Eigen::Matrix3d linear;
+      linear << 2 * r * across.normalized(), r * back, d + 2 * r * d.normalized();
+      add_instance(out[box], linear, 0.5 * (p[k - 1] + p[k]), path.color);
+    }
 }
 
 void add_arm(const Scene& s, ShapeInstances& out) {
@@ -93,8 +102,9 @@ void collect(const Scene& s, Instances& out) {
 
 std::array<ShapeInstances, 3> inset_instances(const Inset& inset) {
   std::array<ShapeInstances, 3> out;
-  add_inset_path(out[0], inset.desired);
-  add_inset_path(out[1], inset.traced);
+  const Eigen::Vector3d back = (inset.camera.eye - inset.camera.target).normalized();
+  add_inset_path(out[0], inset.desired, back);
+  add_inset_path(out[1], inset.traced, back);
   add_sphere(out[2][sphere], inset.hand.center, inset.hand.radius, inset.hand.color);
   return out;
 }

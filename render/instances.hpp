@@ -17,9 +17,7 @@ inline constexpr int kInstanceFloats = 16 + 9 + 4;
 // The ring shape's tube radius over its radius (unit_torus).
 inline constexpr double kRingTube = 0.06;
 
-// dot: a coarse sphere for the round corners of the inset's paths (a few
-// pixels across, hundreds of them).
-enum Shape { sphere, cylinder, tube, cone, box, ring, dot, shape_count };
+enum Shape { sphere, cylinder, tube, cone, box, ring, shape_count };
 // arm: the robot, its elbows and force arrows (casts shadows); ground: the
 // table and the contact cues; paths: the hand's paths (only receive).
 enum Group { arm, ground, paths, group_count };
@@ -33,7 +31,7 @@ using Instances = std::array<ShapeInstances, group_count>;
 void collect(const Scene& scene, Instances& out);
 
 // The inset's paths, in drawing order: the desired band, the traced line
-// (each segment a tube, each corner a sphere, so bends stay round), then the hand.
+// (each segment a ribbon facing the inset's camera), then the hand.
 std::array<ShapeInstances, 3> inset_instances(const Inset& inset);
 
 // One instance: model matrix [linear t; 0 1] and normal matrix linear^-T.
