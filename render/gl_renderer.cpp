@@ -146,15 +146,15 @@ void scissor(const Viewport& v, int frame_height) {
 // The inset into its rectangle: cleared to its background, the scene faded
 // toward it (where the hand is, not what to read), then its paths over
 // everything in order (desired band, traced line, hand), flat. Lights as in
-// the panel's view `main`; the shadow map of the panel's scene.
-void draw_inset(GlRenderer::Gl& g, const Inset& inset, const Camera& main, bool shadows,
-                const Viewport& v, int frame_height) {
+// the panel's view `main`; no shadows (faded, they would not show).
+void draw_inset(GlRenderer::Gl& g, const Inset& inset, const Camera& main, const Viewport& v,
+                int frame_height) {
   set_viewport(v, frame_height);
   glEnable(GL_SCISSOR_TEST);
   scissor(v, frame_height);
   glClearColor(inset.background.r, inset.background.g, inset.background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  use_lit(g, inset.camera, inset.camera.eye, view_lighting(main), shadows);
+  use_lit(g, inset.camera, inset.camera.eye, view_lighting(main), false);
   glUniform1f(glGetUniformLocation(g.lit, "fade"), inset.fade);
   glUniform3f(glGetUniformLocation(g.lit, "fade_color"), inset.background.r, inset.background.g,
               inset.background.b);
@@ -182,7 +182,7 @@ void GlRenderer::draw(const Scene& scene, const Camera& camera, const Viewport& 
   collect(scene, g.instances);
   const bool shadows = scene.shadows.enabled && !scene.shadows.bounds.isEmpty();
   if (shadows) shadow_pass(g, scene, lights);
-  if (inset) draw_inset(g, inset->inset, camera, shadows, inset->viewport, height_);
+  if (inset) draw_inset(g, inset->inset, camera, inset->viewport, height_);
   set_viewport(v, height_);
   use_lit(g, camera, camera.eye, lights, shadows);
   for (const ShapeInstances& group : g.instances) draw_shapes(g, group);

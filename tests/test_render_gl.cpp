@@ -151,6 +151,14 @@ TEST_CASE("render video: run writes an H.264 yuv420p mp4 of duration x fps frame
                                   (dir / "video.mp4").string());
     CHECK(reprobe.output == "h264,96,64,yuv420p,6\n");
   }
+  SUBCASE("render --camera with a pose and a field of view, --follow hand") {
+    const Outcome close = cli("render " + dir.string() +
+                              " --size 96x64 --fps 10 --camera eye=0.2,-0.6,0.1,target=0.2,0,0,fov=15"
+                              " --follow hand");
+    INFO(close.output);
+    REQUIRE(close.exit_code == 0);
+    CHECK(close.output.find("video: " + (dir / "video.mp4").string()) != std::string::npos);
+  }
 }
 
 TEST_CASE("render frames: output.frames writes numbered PNGs; --no-render writes none") {
@@ -223,6 +231,14 @@ TEST_CASE("render: a bad run folder is exit 2 with a clear message, and nothing 
   CHECK(size.exit_code == 2);
   CHECK(size.output.find("--size: width and height must be even") != std::string::npos);
   CHECK(cli("render " + ok.string() + " --camera diagonal").exit_code == 2);
+  const Outcome pose = cli("render " + ok.string() + " --camera eye=1,1,target=0,0,0");
+  CHECK(pose.exit_code == 2);
+  CHECK(pose.output.find("error: --camera: eye needs 3 numbers x,y,z [m] (got 2)") !=
+        std::string::npos);
+  const Outcome follow = cli("render " + ok.string() + " --follow elbow");
+  CHECK(follow.exit_code == 2);
+  CHECK(follow.output.find("error: --follow: must be hand or none (got \"elbow\")") !=
+        std::string::npos);
   CHECK(cli("render " + ok.string() + " --fps 0").exit_code == 2);
   CHECK_FALSE(fs::exists(ok / "video.mp4"));
 }
