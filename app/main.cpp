@@ -19,7 +19,7 @@ constexpr const char* kUsage = R"(usage:
   elbowsim validate SCENARIO [--set key=value ...]          load, check, print the model
   elbowsim sweep SCENARIO --key KEY --values V1,V2,... [--out DIR] [run options]
                                                             one run per value of KEY
-  elbowsim render RUN_DIR [--camera PRESET] [--size WxH] [--fps N]
+  elbowsim render RUN_DIR [--camera VIEW] [--follow hand] [--size WxH] [--fps N]
                                                             re-render a saved run (no simulation)
   elbowsim report RUN_DIR [--expect EXPR ...]               rebuild report.html (no simulation)
   elbowsim compare RUN_DIR RUN_DIR ... [--out DIR] [--expect EXPR ...]
@@ -34,7 +34,9 @@ constexpr const char* kUsage = R"(usage:
 Outputs of run (in output.folder, or DIR): scenario.yaml (as run), trajectory.csv,
 summary.json, events.csv (with contacts), video.mp4 (output.video) and frames/
 (output.frames); --no-render skips the last two. render writes RUN_DIR/video.mp4
-(and frames/ if the scenario asks); PRESET: front, side, top, three_quarter.
+(and frames/ if the scenario asks). VIEW: a preset (front, side, top, three_quarter),
+optionally with fov=DEG ("top,fov=25"), or eye=X,Y,Z,target=X,Y,Z[,up=X,Y,Z][,fov=DEG]
+in metres and degrees; --follow hand keeps the hand at the centre of the view.
 run and report write RUN_DIR/report.html and plots/ (--no-report skips them);
 compare writes report.html, comparison.json and plots/ into DIR (default: compare/
 beside the first run). --expect "energy_final.electrical_in < 120" checks a
@@ -62,15 +64,16 @@ cxxopts::Options make_options() {
   options.add_options()("h,help", "show help")("version", "show version")(
       "o,out", "output folder (overrides output.folder)", cxxopts::value<std::string>())(
       "s,set", "override a scenario key: key.path=value (repeatable)",
-      cxxopts::value<std::vector<std::string>>())(
-      "positional", "", cxxopts::value<std::vector<std::string>>())(
-      "no-render", "run: skip output.video and output.frames")(
-      "no-report", "run: skip report.html and plots")(
+      cxxopts::value<std::vector<std::string>>())("positional", "",
+                                                  cxxopts::value<std::vector<std::string>>())(
+      "no-render", "run: skip output.video and output.frames")("no-report",
+                                                               "run: skip report.html and plots")(
       "check-step", "run, sweep: rerun each valid run at half the step; summary.json step_check")(
       "expect", "run, report, compare: a check over summary.json metrics (repeatable)",
       cxxopts::value<std::vector<std::string>>())(
-      "camera", "render: camera preset", cxxopts::value<std::string>())(
-      "size", "render: WIDTHxHEIGHT", cxxopts::value<std::string>())(
+      "camera", "render: camera preset or eye=..,target=..,fov=..", cxxopts::value<std::string>())(
+      "follow", "render: hand (the camera follows the hand) or none",
+      cxxopts::value<std::string>())("size", "render: WIDTHxHEIGHT", cxxopts::value<std::string>())(
       "fps", "render: frames per second", cxxopts::value<std::string>())(
       "key", "sweep: the key path to vary", cxxopts::value<std::string>())(
       "values", "sweep: its values, comma-separated", cxxopts::value<std::string>())(
@@ -138,9 +141,11 @@ int dispatch(const cxxopts::ParseResult& parsed) {
     return sweep_command({run_arguments(parsed, words[1]), parsed["key"].as<std::string>(),
                           parsed["values"].as<std::string>()});
   if (command == "render" && words.size() == 2) {
-    RenderArguments args{words[1], {}, {}, {}};
-    for (auto [key, value] :
-         {std::pair{"camera", &args.camera}, {"size", &args.size}, {"fps", &args.fps}})
+    RenderArguments args{words[1], {}, {}, {}, {}};
+    for (auto [key, value] : {std::pair{"camera", &args.camera},
+                              {"follow", &args.follow},
+                              {"size", &args.size},
+                              {"fps", &args.fps}})
       if (parsed.count(key)) *value = parsed[key].as<std::string>();
     return render_command(args);
   }

@@ -6,8 +6,9 @@
 // measurement is a whole render of 150 frames (5 s at 30 fps).
 //
 // Prototype scene: an 8-link planar arm (8 capsules) swinging over a table,
-// with 3 elbow spheres (two resting with force arrows), the hand path and the
-// ground grid. Protocol: one warm-up render, then 3 timed renders per
+// with 3 elbow spheres (two resting with force arrows, contact cues), the
+// hand path and a desired one (so the hand-path inset is drawn), shadows and
+// the ground grid: the render settings' defaults. Protocol: one warm-up render, then 3 timed renders per
 // configuration; reports the median and where the time went in that run.
 //
 // Run: build/bench/bench_render [runs] [--json FILE]
@@ -47,7 +48,7 @@ Model prototype_arm() {
 
 // 5 s at 1 kHz / 10 (like output.every: 10): the arm waves, elbows rest and lift.
 Recording prototype_recording(const Model& model) {
-  TrajectoryLayout::Groups groups{8, false, false, true, {}};
+  TrajectoryLayout::Groups groups{8, false, true, true, {}};
   for (const Elbow& e : model.elbows) groups.elbows.push_back(e.name);
   Recording rec{TrajectoryLayout(groups)};
   const TrajectoryLayout& L = rec.layout;
@@ -56,8 +57,8 @@ Recording prototype_recording(const Model& model) {
     std::vector<double> row(static_cast<std::size_t>(L.size()), 0.0);
     row[L.time()] = t;
     for (int j = 0; j < 8; ++j) row[L.q(j)] = 0.35 * std::sin(2 * std::numbers::pi * 0.4 * t + 0.7 * j) - 0.05;
-    row[L.hand(0)] = 0.7 + 0.1 * std::sin(t);
-    row[L.hand(2)] = 0.1 + 0.05 * std::cos(2 * t);
+    row[L.hand(0)] = row[L.hand_desired(0)] = 0.7 + 0.1 * std::sin(t);
+    row[L.hand(2)] = row[L.hand_desired(2)] = 0.1 + 0.05 * std::cos(2 * t);
     for (int e = 0; e < 3; ++e) {
       const bool rest = std::sin(2 * t + e) > -0.3;
       row[L.elbow_force(e)] = rest ? 8.0 + 3 * std::sin(3 * t + e) : 0.0;

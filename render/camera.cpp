@@ -69,20 +69,6 @@ void frame_view(Camera& camera, const Basis& b, const Eigen::AlignedBox3d& frame
   camera.eye = centre + distance * b.back;
 }
 
-// Near and far planes around everything in `depth`, seen from eye along -back.
-void fit_clip(Camera& camera, const Eigen::AlignedBox3d& depth) {
-  const Eigen::Vector3d forward = (camera.target - camera.eye).normalized();
-  double lo = 1e300, hi = 0;
-  for (const Eigen::Vector3d& c : corners(depth)) {
-    const double z = (c - camera.eye).dot(forward);
-    lo = std::min(lo, z);
-    hi = std::max(hi, z);
-  }
-  hi = std::max(hi, 0.1);
-  camera.far = 1.05 * hi + 0.05;
-  camera.near = std::clamp(0.9 * lo, camera.far * 1e-4, camera.far * 0.5);
-}
-
 }  // namespace
 
 Eigen::Matrix4d Camera::view() const {
@@ -98,8 +84,16 @@ Eigen::Matrix4d Camera::view() const {
 }
 
 Eigen::Matrix4d Camera::projection() const {
-  const double f = 1.0 / tan_half(fov_deg);
   Eigen::Matrix4d p = Eigen::Matrix4d::Zero();
+  if (ortho_height > 0) {  // x, y scaled into [-1, 1]; depth linear from near to far
+    p(0, 0) = 2 / (ortho_height * aspect);
+    p(1, 1) = 2 / ortho_height;
+    p(2, 2) = -2 / (far - near);
+    p(2, 3) = -(far + near) / (far - near);
+    p(3, 3) = 1;
+    return p;
+  }
+  const double f = 1.0 / tan_half(fov_deg);
   p(0, 0) = f / aspect;
   p(1, 1) = f;
   p(2, 2) = (far + near) / (near - far);
@@ -114,6 +108,33 @@ std::optional<Eigen::Vector2d> Camera::project(const Eigen::Vector3d& p, int wid
   if (clip.w() <= 0) return std::nullopt;
   const double x = clip.x() / clip.w(), y = clip.y() / clip.w();
   return Eigen::Vector2d(0.5 * (x + 1) * width, 0.5 * (1 - y) * height);
+}
+
+double Camera::pixels_per_metre(const Eigen::Vector3d& p, int height) const {
+  if (ortho_height > 0) return height / ortho_height;
+  const double depth = (p - eye).dot((target - eye).normalized());
+  return height / (2 * std::max(depth, 1e-9) * tan_half(fov_deg));
+}
+
+Camera Camera::moved(const Eigen::Vector3d& shift) const {
+  Camera out = *this;
+  out.eye += shift;
+  out.target += shift;
+  return out;
+}
+
+// Near and far planes around everything in `depth`, seen from eye along -back.
+void fit_clip(Camera& camera, const Eigen::AlignedBox3d& depth) {
+  const Eigen::Vector3d forward = (camera.target - camera.eye).normalized();
+  double lo = 1e300, hi = 0;
+  for (const Eigen::Vector3d& c : corners(depth)) {
+    const double z = (c - camera.eye).dot(forward);
+    lo = std::min(lo, z);
+    hi = std::max(hi, z);
+  }
+  hi = std::max(hi, 0.1);
+  camera.far = 1.05 * hi + 0.05;
+  camera.near = std::clamp(0.9 * lo, camera.far * 1e-4, camera.far * 0.5);
 }
 
 Eigen::Vector3d preset_direction(CameraPreset preset) {

@@ -1,6 +1,7 @@
-// A pinhole camera: pose, vertical field of view and clip planes, with the
-// OpenGL view and projection matrices and the same maths as a pixel projector
-// (tests use project() to find where a world point lands in a frame).
+// A pinhole camera (or an orthographic one, for the inset's magnified view):
+// pose, vertical field of view and clip planes, with the OpenGL view and
+// projection matrices and the same maths as a pixel projector (tests use
+// project() to find where a world point lands in a frame).
 #pragma once
 
 #include <Eigen/Geometry>
@@ -17,6 +18,9 @@ struct Camera {
   double fov_deg = 40;                               // vertical field of view [deg]
   double aspect = 16.0 / 9.0;                        // width / height
   double near = 0.05, far = 20;                      // [m] clip distances along the view
+  // [m] > 0: orthographic, showing this height of the world at every depth
+  // (fov_deg unused); 0: perspective.
+  double ortho_height = 0;
 
   // World -> camera (right-handed, looking down -z): the usual lookAt.
   Eigen::Matrix4d view() const;
@@ -26,6 +30,11 @@ struct Camera {
   // down from the top-left corner, in pixel units (the centre of pixel (i, j)
   // is (i + 0.5, j + 0.5)); nullopt when the point is behind the camera.
   std::optional<Eigen::Vector2d> project(const Eigen::Vector3d& p, int width, int height) const;
+  // Pixels per metre, in an image `height` px tall, of a length at `p` that
+  // is square to the view direction.
+  double pixels_per_metre(const Eigen::Vector3d& p, int height) const;
+  // The same camera moved (eye and target) by `shift` [m].
+  Camera moved(const Eigen::Vector3d& shift) const;
 };
 
 // Unit vector from the target toward the eye for a preset.
@@ -38,6 +47,9 @@ Eigen::Vector3d preset_up(CameraPreset preset);
 // space the arm sweeps plus the table) is in view with a 6 % margin. The
 // clip planes enclose `depth` (the frame plus what else is drawn, e.g. the
 // floor grid). `aspect` = width / height of the image or panel.
+// Near and far planes around everything in `depth` [m], seen from the eye.
+void fit_clip(Camera& camera, const Eigen::AlignedBox3d& depth);
+
 Camera make_camera(const CameraSettings& settings, const Eigen::AlignedBox3d& frame,
                    const Eigen::AlignedBox3d& depth, double aspect);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/nice_scale.hpp"
 #include "render/overlay.hpp"
 
 namespace elbowsim {
@@ -17,17 +18,23 @@ double reach(const Model& model) {
   return std::max(r, 0.1);
 }
 
-// The arm at up to 240 recorded samples, plus the hand path and desired path.
+// The arm at up to 240 recorded samples, plus the hand path and desired
+// path; `points` gets the link ends and elbow centres of those samples.
 Eigen::AlignedBox3d swept_bounds(const Model& model, const Playback& playback,
-                                 const SceneOptions& options) {
+                                 const SceneOptions& options,
+                                 std::vector<Eigen::Vector3d>& points) {
   Eigen::AlignedBox3d out;
   Data kinematics(model);
   const std::size_t rows = playback.samples();
   const std::size_t stride = std::max<std::size_t>(1, rows / 240);
-  for (std::size_t r = 0; r < rows; r += stride)
-    out.extend(
-        arm_bounds(build_scene(model, kinematics, playback.at(playback.time(r)), {}, options)));
-  out.extend(arm_bounds(build_scene(model, kinematics, playback.at(playback.end_time()), {}, options)));
+  auto add = [&](double t) {
+    const Scene scene = build_scene(model, kinematics, playback.at(t), {}, options);
+    out.extend(arm_bounds(scene));
+    for (const Capsule& c : scene.links) points.insert(points.end(), {c.a, c.b});
+    for (const ElbowMarker& e : scene.elbows) points.push_back(e.sphere.center);
+  };
+  for (std::size_t r = 0; r < rows; r += stride) add(playback.time(r));
+  add(playback.end_time());
   for (const Eigen::Vector3d& p : playback.hand_path(playback.end_time())) out.extend(p);
   for (const Eigen::Vector3d& p : playback.desired_hand_path()) out.extend(p);
   return out;
@@ -65,15 +72,27 @@ void place_grid(SceneOptions& options, const Eigen::AlignedBox3d& frame, bool ta
 
 }  // namespace
 
+double automatic_force_scale(double max_force, double arm_size) {
+  if (!(max_force > 0) || !(arm_size > 0)) return 0.01;
+  const double newtons_per_cm = nice_ceil(max_force / (100 * 0.25 * arm_size));
+  return 0.01 / newtons_per_cm;
+}
+
 FrameSource::FrameSource(const Model& model, const Recording& recording,
                          const RenderSettings& settings, std::string title)
     : model_(model),
       kinematics_(model),
       playback_(model, recording),
       camera_(settings.camera),
-      title_(std::move(title)) {
-  options_.force_scale = settings.force_scale;
-  frame_ = swept_bounds(model, playback_, options_);
+      title_(std::move(title)),
+      shadows_(settings.shadows) {
+  // The arm alone first (no arrows), to size the arrows; then with them.
+  options_.force_scale = 0;
+  const Eigen::AlignedBox3d arm = swept_bounds(model, playback_, options_, swept_points_);
+  options_.force_scale = settings.force_scale.value_or(
+      automatic_force_scale(playback_.max_force(), arm.sizes().maxCoeff()));
+  swept_points_.clear();
+  frame_ = swept_bounds(model, playback_, options_, swept_points_);
   frame_.extend(nearby_table(model, frame_));
   place_grid(options_, frame_, !model.table.empty());
   depth_ = frame_;
@@ -81,19 +100,50 @@ FrameSource::FrameSource(const Model& model, const Recording& recording,
                                 options_.floor_z));
   depth_.extend(Eigen::Vector3d(options_.grid_area.max().x(), options_.grid_area.max().y(),
                                 options_.floor_z));
+  // With a task, the inset looks at its desired path from the side the main
+  // camera looks from. (Without one there is no path the hand is to write.)
+  const auto& desired = playback_.full_desired_hand_path();
+  if (settings.inset.show && !desired.empty() && !playback_.full_hand_path(0).empty()) {
+    const Camera main = make_camera(camera_, frame_, depth_, 16.0 / 9.0);
+    inset_ = plan_inset(desired, main.eye - main.target, settings.inset);
+  }
 }
 
 Scene FrameSource::scene(double t) const {
-  return build_scene(model_, kinematics_, playback_.at(t), playback_.hand_path(t), options_,
-                     playback_.desired_hand_path());
+  Scene scene = build_scene(model_, kinematics_, playback_.at(t), playback_.hand_path(t), options_,
+                            playback_.desired_hand_path());
+  scene.shadows = {shadows_, frame_};
+  return scene;
 }
 
 std::vector<std::string> FrameSource::overlay(double t) const {
-  return overlay_lines(title_, model_, playback_.at(t), options_.landed_window);
+  std::vector<std::string> lines =
+      overlay_lines(title_, model_, playback_.at(t), options_.landed_window);
+  if (model_.effects.contact && options_.force_scale > 0 && playback_.max_force() > 0)
+    lines.push_back("force arrows: " + short_number(0.01 / options_.force_scale) + " N per cm");
+  return lines;
 }
 
-Camera FrameSource::camera(double aspect) const {
-  return make_camera(camera_, frame_, depth_, aspect);
+Camera FrameSource::camera(double aspect, double t) const {
+  Camera camera = make_camera(camera_, frame_, depth_, aspect);
+  const std::optional<Eigen::Vector3d> hand = playback_.at(t).hand;
+  if (camera_.follow == CameraFollow::none || !hand) return camera;
+  camera = camera.moved(*hand - camera.target);
+  Eigen::AlignedBox3d everything = depth_;
+  everything.extend(frame_);
+  fit_clip(camera, everything);
+  return camera;
+}
+
+std::optional<Inset> FrameSource::inset(double t, const Camera& main, int width, int height) const {
+  const PlaybackState state = playback_.at(t);
+  if (!inset_ || !state.hand) return std::nullopt;
+  const Camera start = camera(double(width) / height, playback_.start_time());
+  std::vector<Eigen::Vector2d> avoid;
+  for (const Eigen::Vector3d& p : swept_points_)
+    if (const auto pixel = start.project(p, width, height)) avoid.push_back(*pixel);
+  return make_inset(*inset_, inset_rect(width, height, avoid), main, height, *state.hand,
+                    playback_.full_desired_hand_path(), playback_.full_hand_path(t), depth_);
 }
 
 }  // namespace elbowsim

@@ -2,7 +2,8 @@
 // objects and reads the frames back. Needs a current context (OsmesaContext).
 //
 // Each frame: begin_frame clears; draw() renders one scene into a viewport
-// (several viewports make side-by-side panels); end_frame resolves the
+// (several viewports make side-by-side panels), first its shadow map when the
+// scene asks for shadows and its inset; end_frame resolves the
 // multisampled buffer into a single-sample one (glBlitFramebuffer) and starts
 // reading it into a pixel-buffer object; fetch() copies a read frame out.
 // Up to two frames may be pending, so frame k can be fetched while frame k+1
@@ -14,6 +15,7 @@
 #include <memory>
 
 #include "render/camera.hpp"
+#include "render/inset.hpp"
 #include "render/scene.hpp"
 
 namespace elbowsim {
@@ -39,7 +41,15 @@ class GlRenderer {
   int samples() const { return samples_; }  // samples per pixel in use
 
   void begin_frame(const Color& background);
-  void draw(const Scene& scene, const Camera& camera, const Viewport& viewport);
+  // One panel: the scene's shadow map (when it asks for shadows), then the
+  // inset when given (see InsetView), then the scene in `camera` into
+  // `viewport`, leaving the inset's pixels alone.
+  struct InsetView {
+    const Inset& inset;
+    Viewport viewport;  // the inset's rectangle, in this renderer's pixels
+  };
+  void draw(const Scene& scene, const Camera& camera, const Viewport& viewport,
+            const InsetView* inset = nullptr);
   // Resolves and starts the read-back; at most two frames may be pending.
   void end_frame();
   // Copies the oldest pending frame into rgba (width * height * 4 bytes, RGBA,

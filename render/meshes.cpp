@@ -109,4 +109,25 @@ Mesh unit_box() {
   return m;
 }
 
+Mesh unit_torus(int slices, int sides, double minor) {
+  Mesh m;
+  for (int i = 0; i <= slices; ++i) {
+    const double phi = 2 * std::numbers::pi * i / slices;  // around z
+    for (int j = 0; j <= sides; ++j) {
+      const double psi = 2 * std::numbers::pi * j / sides;  // around the tube
+      const double nx = std::cos(psi) * std::cos(phi), ny = std::cos(psi) * std::sin(phi),
+                   nz = std::sin(psi);
+      add_vertex(m, std::cos(phi) + minor * nx, std::sin(phi) + minor * ny, minor * nz, nx, ny, nz);
+    }
+  }
+  const int row = sides + 1;
+  for (int i = 0; i < slices; ++i)
+    for (int j = 0; j < sides; ++j) {
+      const std::uint32_t a = i * row + j, b = (i + 1) * row + j, c = b + 1, d = a + 1;
+      add_triangle(m, a, b, c);
+      add_triangle(m, a, c, d);
+    }
+  return m;
+}
+
 }  // namespace elbowsim

@@ -17,8 +17,95 @@ std::string format(const char* pattern, double value) {
 }
 
 const char* state_word(const ElbowSample& e, double t, double window) {
-  if (!e.resting) return "free";
+  if (!e.resting) return t - e.lifted_at <= window ? "lifted" : "free";
   return t - e.landed_at <= window ? "landed" : "resting";
+}
+
+// Composites a cairo ARGB surface (premultiplied, native-endian 32-bit words)
+// over an RGB image at (x0, y0), clipped to the image.
+void composite(cairo_surface_t* surface, std::uint8_t* rgb, int width, int height, int x0, int y0) {
+  cairo_surface_flush(surface);
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  const int w = cairo_image_surface_get_width(surface), h = cairo_image_surface_get_height(surface);
+  for (int y = std::max(0, -y0); y < h && y0 + y < height; ++y) {
+    const auto* src = reinterpret_cast<const std::uint32_t*>(data + std::size_t(y) * stride);
+    for (int x = std::max(0, -x0); x < w && x0 + x < width; ++x) {
+      std::uint8_t* dst =
+          rgb + (std::size_t(y0 + y) * std::size_t(width) + std::size_t(x0 + x)) * 3;
+      const std::uint32_t p = src[x];
+      const unsigned keep = 255 - (p >> 24);
+      dst[0] = std::uint8_t(((p >> 16) & 255) + (dst[0] * keep + 127) / 255);
+      dst[1] = std::uint8_t(((p >> 8) & 255) + (dst[1] * keep + 127) / 255);
+      dst[2] = std::uint8_t((p & 255) + (dst[2] * keep + 127) / 255);
+    }
+  }
+}
+
+cairo_t* text_context(cairo_surface_t* surface, double size) {
+  cairo_t* cr = cairo_create(surface);
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+  return cr;
+}
+
+double text_width(cairo_t* cr, const std::string& text) {
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, text.c_str(), &extents);
+  return extents.x_advance;
+}
+
+// A translucent white ground behind a label or mark.
+void ground(cairo_t* cr, double x, double y, double w, double h) {
+  cairo_set_source_rgba(cr, 1, 1, 1, 0.8);
+  cairo_rectangle(cr, x, y, w, h);
+  cairo_fill(cr);
+}
+
+void text_at(cairo_t* cr, double x, double baseline, const std::string& text) {
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.12);
+  cairo_move_to(cr, x, baseline);
+  cairo_show_text(cr, text.c_str());
+}
+
+// Legend, top right: a short stroke of each path and its name.
+void legend(cairo_t* cr, const InsetOverlay& inset, double size, double pad) {
+  const double swatch = 1.6 * size, line = 1.3 * size;
+  const double w =
+      swatch + 0.4 * size + std::max(text_width(cr, "desired"), text_width(cr, "traced"));
+  const double x = inset.rect.width - pad - w, y = pad;
+  ground(cr, x - 0.3 * size, y - 0.2 * size, w + 0.6 * size, 2 * line + 0.3 * size);
+  const std::pair<const char*, const Color*> items[2] = {{"desired", &inset.desired},
+                                                         {"traced", &inset.traced}};
+  for (int k = 0; k < 2; ++k) {
+    const double mid = y + (k + 0.5) * line;
+    const Color& c = *items[k].second;
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    cairo_set_line_width(cr, k == 0 ? 6 : 2);
+    cairo_move_to(cr, x, mid);
+    cairo_line_to(cr, x + swatch, mid);
+    cairo_stroke(cr);
+    text_at(cr, x + swatch + 0.4 * size, mid + 0.35 * size, items[k].first);
+  }
+}
+
+// Scale bar, bottom left: a bar with end ticks, its length above it.
+void scale_bar(cairo_t* cr, const InsetOverlay& inset, double size, double pad) {
+  const double length = inset.scale_bar_px, tick = 0.4 * size;
+  const double x = pad, y = inset.rect.height - pad - tick;
+  const double label = text_width(cr, inset.scale_label);
+  ground(cr, x - 0.3 * size, y - 1.4 * size, std::max(length, label) + 0.6 * size,
+         1.6 * size + tick);
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.12);
+  cairo_set_line_width(cr, 2);
+  cairo_move_to(cr, x, y);
+  cairo_line_to(cr, x + length, y);
+  cairo_move_to(cr, x + 1, y - tick);
+  cairo_line_to(cr, x + 1, y + tick);
+  cairo_move_to(cr, x + length - 1, y - tick);
+  cairo_line_to(cr, x + length - 1, y + tick);
+  cairo_stroke(cr);
+  text_at(cr, x + 0.5 * (length - label), y - 0.45 * size, inset.scale_label);
 }
 
 }  // namespace
@@ -32,7 +119,10 @@ std::vector<std::string> overlay_lines(const std::string& title, const Model& mo
     const ElbowSample& e = state.elbows[k];
     std::string line = model.elbows[k].name + ": ";
     if (e.resting) line += format("%.2f N ", e.fn);
-    lines.push_back(line + state_word(e, state.t, landed_window));
+    line += state_word(e, state.t, landed_window);
+    if (!e.resting && e.distance)
+      line += format(", %.1f mm above the table", 1e3 * std::max(*e.distance, 0.0));
+    lines.push_back(line);
   }
   return lines;
 }
@@ -78,24 +168,29 @@ int draw_overlay(std::uint8_t* rgb, int width, int height, const PixelRect& regi
     cairo_show_text(cr, lines[k].c_str());
   }
   cairo_destroy(cr);
-  cairo_surface_flush(surface);
-
-  // Composite: premultiplied ARGB (native-endian 32-bit words) over RGB.
-  const unsigned char* data = cairo_image_surface_get_data(surface);
-  const int stride = cairo_image_surface_get_stride(surface);
-  for (int y = 0; y < box_h; ++y) {
-    const auto* src = reinterpret_cast<const std::uint32_t*>(data + std::size_t(y) * stride);
-    std::uint8_t* dst = rgb + (std::size_t(y0 + y) * std::size_t(width) + std::size_t(x0)) * 3;
-    for (int x = 0; x < box_w; ++x, dst += 3) {
-      const std::uint32_t p = src[x];
-      const unsigned a = p >> 24, keep = 255 - a;
-      dst[0] = std::uint8_t(((p >> 16) & 255) + (dst[0] * keep + 127) / 255);
-      dst[1] = std::uint8_t(((p >> 8) & 255) + (dst[1] * keep + 127) / 255);
-      dst[2] = std::uint8_t((p & 255) + (dst[2] * keep + 127) / 255);
-    }
-  }
+  composite(surface, rgb, width, height, x0, y0);
   cairo_surface_destroy(surface);
   return used_width;
+}
+
+void draw_inset_overlay(std::uint8_t* rgb, int width, int height, const InsetOverlay& inset) {
+  const PixelRect& r = inset.rect;
+  if (r.width < 8 || r.height < 8) return;
+  const double size = std::max(6.0, r.height / 18.0), pad = std::ceil(0.5 * size);
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, r.width, r.height);
+  cairo_t* cr = text_context(surface, size);
+  const double title = text_width(cr, inset.title);
+  ground(cr, pad - 0.3 * size, pad - 0.2 * size, title + 0.6 * size, 1.5 * size);
+  text_at(cr, pad, pad + size, inset.title);
+  legend(cr, inset, size, pad);
+  if (inset.scale_bar_px > 0) scale_bar(cr, inset, size, pad);
+  cairo_set_source_rgb(cr, 0.25, 0.26, 0.3);  // the frame, 2 px inside the edge
+  cairo_set_line_width(cr, 2);
+  cairo_rectangle(cr, 1, 1, r.width - 2, r.height - 2);
+  cairo_stroke(cr);
+  cairo_destroy(cr);
+  composite(surface, rgb, width, height, r.x, r.y);
+  cairo_surface_destroy(surface);
 }
 
 }  // namespace elbowsim

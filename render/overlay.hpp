@@ -9,19 +9,18 @@
 #include <vector>
 
 #include "engine/model.hpp"
+#include "render/pixel_rect.hpp"
 #include "render/playback.hpp"
+#include "render/scene.hpp"
 
 namespace elbowsim {
 
 // "<title>", "t = 1.234 s", "E_in = 5.678 J" (when recorded) and per elbow
-// "<name>: 9.52 N resting" (with contact; free elbows show no force).
+// "<name>: 9.52 N resting" (with contact; "landed" for landed_window after a
+// touchdown), or "<name>: free, 20.0 mm above the table" ("lifted" after a
+// lift-off; the height when the distance is recorded).
 std::vector<std::string> overlay_lines(const std::string& title, const Model& model,
                                        const PlaybackState& state, double landed_window = 0.1);
-
-// A rectangle of an image in pixels, from the top-left corner.
-struct PixelRect {
-  int x = 0, y = 0, width = 0, height = 0;
-};
 
 // Draws `lines` in a translucent box at the top-left of `region` of an RGB
 // image (width x height, rows top-down, 3 bytes per pixel). The font size
@@ -31,5 +30,19 @@ struct PixelRect {
 // from narrowing as the numbers change.
 int draw_overlay(std::uint8_t* rgb, int width, int height, const PixelRect& region,
                  const std::vector<std::string>& lines, int min_width = 0);
+
+// The text and marks on an inset (inset.hpp), in output pixels.
+struct InsetOverlay {
+  PixelRect rect;           // the inset, from the image's top-left corner
+  std::string title;        // top left: "hand path ×9"
+  std::string scale_label;  // "1 cm"
+  double scale_bar_px = 0;  // bottom left, this long
+  Color desired, traced;    // legend, top right
+};
+
+// Draws a frame around the inset, its title, a legend of the two paths and
+// the scale bar (each on a translucent white ground) into an RGB image
+// (width x height, rows top-down). Font size: 1/18 of the inset's height.
+void draw_inset_overlay(std::uint8_t* rgb, int width, int height, const InsetOverlay& inset);
 
 }  // namespace elbowsim

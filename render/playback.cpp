@@ -25,11 +25,20 @@ std::size_t finite_rows(const Recording& rec) {
   return rec.rows();
 }
 
-// Times at which a 0/1 column turns from 0 to 1.
-std::vector<double> rising_edges(const std::vector<double>& flag, const std::vector<double>& time) {
+// Times at which a 0/1 column turns from 0 to 1 (rising) or from 1 to 0.
+std::vector<double> edges(const std::vector<double>& flag, const std::vector<double>& time,
+                          bool rising) {
   std::vector<double> out;
   for (std::size_t r = 1; r < flag.size(); ++r)
-    if (flag[r] > 0.5 && flag[r - 1] <= 0.5) out.push_back(time[r]);
+    if ((flag[r] > 0.5) == rising && (flag[r - 1] > 0.5) != rising) out.push_back(time[r]);
+  return out;
+}
+
+// The last of `times` at or before t; -inf if none.
+double last_before(const std::vector<double>& times, double t) {
+  double out = -std::numeric_limits<double>::infinity();
+  for (double x : times)
+    if (x <= t) out = x;
   return out;
 }
 
@@ -49,7 +58,9 @@ Playback::Playback(const Model& model, const Recording& rec) : dof_(model.dof) {
     const int k = L.elbow(e.name);  // -1: contact was off, nothing recorded
     fn_.push_back(column(rec, k < 0 ? -1 : L.elbow_force(k), rows));
     rest_.push_back(column(rec, k < 0 ? -1 : L.elbow_resting(k), rows));
-    landings_.push_back(rising_edges(rest_.back(), time_));
+    distance_.push_back(column(rec, k < 0 ? -1 : L.elbow_distance(k), rows));
+    landings_.push_back(edges(rest_.back(), time_, true));
+    lifts_.push_back(edges(rest_.back(), time_, false));
   }
   energy_in_ = column(rec, L.energy(Energy::in), rows);
   // Hand path: drop samples closer than 1 mm to the last kept one.
@@ -69,6 +80,7 @@ Playback::Playback(const Model& model, const Recording& rec) : dof_(model.dof) {
   if (!d[0].empty() && !d[1].empty() && !d[2].empty()) {
     for (std::size_t r = 0; r < rows; ++r) {
       const Eigen::Vector3d p(d[0][r], d[1][r], d[2][r]);
+      desired_all_.push_back(p);
       if (desired_path_.empty() || (p - desired_path_.back()).norm() >= 1e-3 || r + 1 == rows)
         desired_path_.push_back(p);
     }
@@ -102,8 +114,9 @@ PlaybackState Playback::at(double t) const {
     ElbowSample e;
     if (!fn_[k].empty()) e.fn = lerp(fn_[k], b);
     if (!rest_[k].empty()) e.resting = rest_[k][b.row] > 0.5;
-    for (double landed : landings_[k])
-      if (landed <= s.t) e.landed_at = landed;
+    if (!distance_[k].empty()) e.distance = lerp(distance_[k], b);
+    e.landed_at = last_before(landings_[k], s.t);
+    e.lifted_at = last_before(lifts_[k], s.t);
     s.elbows.push_back(e);
   }
   if (!energy_in_.empty()) s.energy_in = lerp(energy_in_, b);
@@ -126,6 +139,22 @@ std::vector<Eigen::Vector3d> Playback::hand_path(double t) const {
   const Bracket b = bracket(t);
   path.emplace_back(lerp(hand_[0], b), lerp(hand_[1], b), lerp(hand_[2], b));
   return path;
+}
+
+std::vector<Eigen::Vector3d> Playback::full_hand_path(double t) const {
+  std::vector<Eigen::Vector3d> path;
+  if (hand_.empty() || hand_[0].empty()) return path;
+  const Bracket b = bracket(t);
+  for (std::size_t r = 0; r <= b.row; ++r) path.emplace_back(hand_[0][r], hand_[1][r], hand_[2][r]);
+  if (b.alpha > 0) path.emplace_back(lerp(hand_[0], b), lerp(hand_[1], b), lerp(hand_[2], b));
+  return path;
+}
+
+double Playback::max_force() const {
+  double out = 0;
+  for (const std::vector<double>& f : fn_)
+    for (double x : f) out = std::max(out, x);
+  return out;
 }
 
 int frame_count(double duration, double fps) {

@@ -21,6 +21,11 @@ struct ElbowSample {
   // [s] time of the last touchdown (rest 0 -> 1 between samples) at or before t;
   // -inf if none. An elbow resting from t = 0 has not landed.
   double landed_at = -std::numeric_limits<double>::infinity();
+  // [s] time of the last lift-off (rest 1 -> 0) at or before t; -inf if none.
+  double lifted_at = -std::numeric_limits<double>::infinity();
+  // [m] signed distance from the sphere to the table (d_<name>), linear
+  // between samples; unset if not recorded.
+  std::optional<double> distance;
 };
 
 struct PlaybackState {
@@ -34,7 +39,7 @@ struct PlaybackState {
 class Playback {
  public:
   // Needs columns time and q0..q<dof-1>; uses hand_x/y/z, hand_d_x/y/z,
-  // fn_/rest_<elbow> and E_in when present. Rows after the first non-finite value are dropped
+  // fn_/d_/rest_<elbow> and E_in when present. Rows after the first non-finite value are dropped
   // (a diverged run). Throws std::invalid_argument naming a missing column or
   // an empty recording.
   Playback(const Model& model, const Recording& recording);
@@ -52,6 +57,12 @@ class Playback {
   // 1 mm apart, ending with the interpolated position at t. Empty if the hand
   // was not recorded.
   std::vector<Eigen::Vector3d> hand_path(double t) const;
+  // The same with every recorded position (for the magnified inset).
+  std::vector<Eigen::Vector3d> full_hand_path(double t) const;
+  // Every recorded desired hand position (hand_d_*); empty if not recorded.
+  const std::vector<Eigen::Vector3d>& full_desired_hand_path() const { return desired_all_; }
+  // The largest recorded normal force of any elbow [N] (0 if none recorded).
+  double max_force() const;
   // The whole desired hand path (hand_d_x/y/z), independent of t: the first
   // sample, then samples at least 1 mm from the last kept one, and always the
   // last sample. Empty if the recording has no desired hand position.
@@ -71,10 +82,13 @@ class Playback {
   std::vector<std::vector<double>> hand_;      // [3][rows] or empty
   std::vector<std::vector<double>> fn_;        // [elbows][rows] (empty column: not recorded)
   std::vector<std::vector<double>> rest_;      // [elbows][rows]
+  std::vector<std::vector<double>> distance_;  // [elbows][rows] (empty column: not recorded)
   std::vector<std::vector<double>> landings_;  // [elbows] touchdown times
+  std::vector<std::vector<double>> lifts_;     // [elbows] lift-off times
   std::vector<double> energy_in_;              // [rows] or empty
   std::vector<std::size_t> path_rows_;         // rows kept for hand_path
   std::vector<Eigen::Vector3d> desired_path_;  // [m] world, or empty
+  std::vector<Eigen::Vector3d> desired_all_;   // [m] world, every row, or empty
 };
 
 // Number of frames for `duration` [s] at `fps`: one at t = 0 and one every

@@ -33,8 +33,8 @@ double seconds_since(Clock::time_point start) {
 // A frame read back, on its way to the writer thread.
 struct Frame {
   int index = 0;
-  std::vector<std::uint8_t> rgba;                 // render size, rows bottom-up
-  std::vector<std::vector<std::string>> overlay;  // per panel
+  std::vector<std::uint8_t> rgba;  // render size, rows bottom-up
+  std::vector<PanelText> overlay;  // per panel
 };
 
 // A small blocking queue; close() wakes every waiter and makes pop() return
@@ -155,8 +155,10 @@ class Writer {
     to_rgb(frame.rgba.data(), width_, height_, scale_, rgb.data());
     for (int p = 0; p < panels_; ++p) {
       int& box = box_widths_[std::size_t(p)];  // overlay boxes only grow during a render
+      const PanelText& text = frame.overlay[std::size_t(p)];
+      if (text.inset) draw_inset_overlay(rgb.data(), width_, height_, *text.inset);
       box = draw_overlay(rgb.data(), width_, height_, panel_rect(p, panels_, width_, height_),
-                         frame.overlay[std::size_t(p)], box);
+                         text.lines, box);
     }
     compose_seconds += seconds_since(start);
     start = Clock::now();
@@ -198,6 +200,36 @@ struct Outputs {
 
 }  // namespace
 
+PanelFrame prepare_panel(const FrameSource& source, double t, const PixelRect& panel) {
+  PanelFrame f{panel,
+               source.camera(double(panel.width) / panel.height, t),
+               source.scene(t),
+               std::nullopt,
+               {source.overlay(t), std::nullopt}};
+  f.inset = source.inset(t, f.camera, panel.width, panel.height);
+  if (f.inset) {
+    const Inset& inset = *f.inset;
+    const PixelRect r{panel.x + inset.rect.x, panel.y + inset.rect.y, inset.rect.width,
+                      inset.rect.height};
+    f.text.inset = InsetOverlay{r,
+                                inset.title,
+                                inset.scale_label,
+                                inset.scale_bar_px,
+                                inset.desired.color,
+                                inset.traced.color};
+  }
+  return f;
+}
+
+void draw_panel(GlRenderer& renderer, const PanelFrame& f, int scale) {
+  auto scaled = [scale](const PixelRect& r) {
+    return Viewport{r.x * scale, r.y * scale, r.width * scale, r.height * scale};
+  };
+  if (!f.inset) return renderer.draw(f.scene, f.camera, scaled(f.panel));
+  const GlRenderer::InsetView inset{*f.inset, scaled(f.text.inset->rect)};
+  renderer.draw(f.scene, f.camera, scaled(f.panel), &inset);
+}
+
 std::vector<double> frame_times(double end, double fps) {
   std::vector<double> times;
   const int n = frame_count(end, fps);
@@ -234,11 +266,6 @@ RenderStats render_panels(const std::vector<const FrameSource*>& panels,
   stats.gl = context.description();
   GlRenderer renderer(rw, rh, settings.msaa);
   stats.samples = renderer.samples();
-  std::vector<Camera> cameras;
-  for (int p = 0; p < n; ++p) {
-    const PixelRect r = panel_rect(p, n, rw, rh);
-    cameras.push_back(panels[std::size_t(p)]->camera(double(r.width) / r.height));
-  }
 
   std::optional<VideoEncoder> encoder;
   if (out.video) {
@@ -268,17 +295,16 @@ RenderStats render_panels(const std::vector<const FrameSource*>& panels,
     const double t = times[std::size_t(k)];
     Clock::time_point t0 = Clock::now();
     Frame frame{k, {}, {}};
-    std::vector<Scene> scenes;
-    for (const FrameSource* p : panels) {
-      scenes.push_back(p->scene(t));
-      frame.overlay.push_back(p->overlay(t));
-    }
+    std::vector<PanelFrame> prepared;
+    for (int p = 0; p < n; ++p)
+      prepared.push_back(prepare_panel(*panels[std::size_t(p)], t,
+                                       panel_rect(p, n, settings.width, settings.height)));
     stats.scene_seconds += seconds_since(t0);
     t0 = Clock::now();
-    renderer.begin_frame(scenes.front().background);
-    for (int p = 0; p < n; ++p) {
-      const PixelRect r = panel_rect(p, n, rw, rh);
-      renderer.draw(scenes[std::size_t(p)], cameras[std::size_t(p)], {r.x, r.y, r.width, r.height});
+    renderer.begin_frame(prepared.front().scene.background);
+    for (PanelFrame& f : prepared) {
+      draw_panel(renderer, f, scale);
+      frame.overlay.push_back(std::move(f.text));
     }
     stats.draw_seconds += seconds_since(t0);
     t0 = Clock::now();

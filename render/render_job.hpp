@@ -10,10 +10,13 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "render/frame_source.hpp"
+#include "render/gl_renderer.hpp"
+#include "render/overlay.hpp"
 #include "render/render_settings.hpp"
 
 namespace elbowsim {
@@ -53,6 +56,28 @@ struct RenderStats {
 // std::runtime_error on GL, ffmpeg or file failures, leaving nothing behind.
 RenderStats render_panels(const std::vector<const FrameSource*>& panels,
                           const RenderSettings& settings, const RenderRequest& request);
+
+// What the writer thread draws over a panel: the text box and the inset's marks.
+struct PanelText {
+  std::vector<std::string> lines;
+  std::optional<InsetOverlay> inset;  // output pixels of the whole frame
+};
+
+// One panel of one frame, without GL: `source` at time t [s] in `panel`
+// (output pixels of the frame): its camera, scene, inset (rectangle within
+// the panel) and text (the inset's marks placed in the frame).
+struct PanelFrame {
+  PixelRect panel;
+  Camera camera;
+  Scene scene;
+  std::optional<Inset> inset;
+  PanelText text;
+};
+PanelFrame prepare_panel(const FrameSource& source, double t, const PixelRect& panel);
+
+// Draws a prepared panel, scene then inset, into a renderer whose frame is
+// `scale` times the output size.
+void draw_panel(GlRenderer& renderer, const PanelFrame& frame, int scale);
 
 // Frame times [s]: k / fps for k = 0 .. frame_count(end, fps) - 1, the last
 // clamped to `end`.

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 
 namespace elbowsim {
 
@@ -24,6 +25,15 @@ inline const char* to_string(CameraPreset preset) {
   return "?";
 }
 
+// What the camera keeps in view as the run plays: nothing (a fixed camera) or
+// the hand (the target moves with the recorded hand, the view direction and
+// distance stay).
+enum class CameraFollow { none, hand };
+
+inline const char* to_string(CameraFollow follow) {
+  return follow == CameraFollow::hand ? "hand" : "none";
+}
+
 struct CameraSettings {
   // With `explicit_pose` false the camera looks along the preset's direction
   // and frames the space the arm sweeps plus the table; with it true, eye,
@@ -34,6 +44,16 @@ struct CameraSettings {
   Eigen::Vector3d target = Eigen::Vector3d::Zero();       // [m] world
   Eigen::Vector3d up = Eigen::Vector3d::UnitZ();          // world, not parallel to target - eye
   double fov_deg = 40.0;                                  // vertical field of view [deg]
+  CameraFollow follow = CameraFollow::none;
+};
+
+// The picture-in-picture view of the hand's path (render/inset.hpp): shown
+// when the recording has a desired hand path (a task) and `show` is true. Zero
+// lengths are chosen from the path's extent.
+struct InsetSettings {
+  bool show = true;
+  double view_height = 0;  // [m] height of the world window the inset shows; 0: automatic
+  double scale_bar = 0;    // [m] length of its scale bar; 0: a 1-2-5 length, at most 0.3 x width
 };
 
 struct RenderSettings {
@@ -43,7 +63,11 @@ struct RenderSettings {
   double fps = 30.0;          // [1/s] frames per second of simulation time
   int msaa = 4;               // samples per pixel: 1 (off), 2 or 4
   bool supersample = false;   // render 2w x 2h and average 2x2 blocks (for stills)
-  double force_scale = 0.01;  // [m/N] length of a normal-force arrow per newton
+  // [m/N] length of a normal-force arrow per newton (0: no arrows); unset: a
+  // 1-2-5 scale at which the largest recorded force fits in the frame.
+  std::optional<double> force_scale;
+  bool shadows = true;  // shadow mapping from the key light
+  InsetSettings inset;
 };
 
 }  // namespace elbowsim

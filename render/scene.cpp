@@ -18,6 +18,7 @@ constexpr double kBaseThickness = 1.0;  // base plate thickness / r
 constexpr double kArrowRadius = 0.18;   // arrow shaft radius / elbow radius
 constexpr double kPathRadius = 0.002;   // [m] hand path tube radius
 constexpr double kDesiredRadius = 0.0012;  // [m] desired hand path tube radius (thinner)
+constexpr double kDash = 0.004;            // [m] drop line: one dash and one space, about
 
 Eigen::Vector3d world_up(const Model& model) {
   const double g = model.gravity.norm();
@@ -84,7 +85,7 @@ void add_links(const Model& model, const Data& data, Scene& scene, const SceneSt
 }
 
 ElbowState elbow_state(const ElbowSample& e, double t, double window) {
-  if (!e.resting) return ElbowState::free;
+  if (!e.resting) return t - e.lifted_at <= window ? ElbowState::lifted : ElbowState::free;
   return t - e.landed_at <= window ? ElbowState::landed : ElbowState::resting;
 }
 
@@ -96,13 +97,43 @@ Color elbow_color(ElbowState state, const SceneStyle& style) {
       return style.elbow_resting;
     case ElbowState::landed:
       return style.elbow_landed;
+    case ElbowState::lifted:
+      return style.elbow_lifted;
   }
   return style.elbow_free;
 }
 
-// Elbow spheres coloured by state, and at each resting elbow pushed by the
-// table an arrow from the top of the sphere along the table normal, of length
-// fn * force_scale.
+// Dashes from a down to b: k dashes and k - 1 equal spaces, each about kDash / 2.
+std::vector<Eigen::Vector3d> dashes(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const int k = std::max(2, int(std::lround((b - a).norm() / kDash)));
+  const Eigen::Vector3d step = (b - a) / double(2 * k - 1);
+  std::vector<Eigen::Vector3d> out;
+  for (int i = 0; i < k; ++i) out.insert(out.end(), {a + 2 * i * step, a + (2 * i + 1) * step});
+  return out;
+}
+
+// The contact cue of an elbow with a recorded distance within cue_range
+// radii of the table: the ring at its foot, and the drop line while it is off.
+void add_cue(const Model& model, int k, const ElbowSample& sample, ElbowState state,
+             const Eigen::Vector3d& centre, Scene& scene, const SceneOptions& options) {
+  const double radius = model.elbows[std::size_t(k)].radius;
+  if (!sample.distance || *sample.distance > options.cue_range * radius) return;
+  const bool on = state == ElbowState::resting || state == ElbowState::landed;
+  ContactCue cue;
+  cue.elbow = k;
+  cue.normal = table_up(model, centre);
+  cue.gap = on ? 0.0 : std::max(*sample.distance, 0.0);
+  cue.foot = centre - (radius + std::max(*sample.distance, 0.0)) * cue.normal;
+  cue.radius = radius;
+  cue.color = on || state == ElbowState::lifted ? elbow_color(state, options.style)
+                                                : options.style.cue_free;
+  if (!on && cue.gap > 0) cue.dashes = dashes(centre - radius * cue.normal, cue.foot);
+  scene.cues.push_back(std::move(cue));
+}
+
+// Elbow spheres coloured by state, their contact cues, and at each resting
+// elbow pushed by the table an arrow from the top of the sphere along the
+// table normal, of length fn * force_scale.
 void add_elbows(const Model& model, const Data& data, const PlaybackState& state, Scene& scene,
                 const SceneOptions& options) {
   for (std::size_t k = 0; k < model.elbows.size(); ++k) {
@@ -111,8 +142,9 @@ void add_elbows(const Model& model, const Data& data, const PlaybackState& state
     const ElbowState s = elbow_state(sample, state.t, options.landed_window);
     const Eigen::Vector3d centre = point_position(data, elbow.link, elbow.point);
     scene.elbows.push_back({{centre, elbow.radius, elbow_color(s, options.style)}, s});
+    add_cue(model, int(k), sample, s, centre, scene, options);
     const double length = sample.fn * options.force_scale;
-    if (s == ElbowState::free || length <= 0) continue;
+    if (s == ElbowState::free || s == ElbowState::lifted || length <= 0) continue;
     const Eigen::Vector3d n = table_up(model, centre);
     const Eigen::Vector3d tail = centre + elbow.radius * n;
     scene.forces.push_back({tail, tail + length * n, std::max(kArrowRadius * elbow.radius, 0.002),

@@ -67,11 +67,33 @@ struct LineSet {
   Color color;
 };
 
-enum class ElbowState { free, resting, landed };  // landed: resting, touched down recently
+// landed: resting, touched down recently; lifted: free, left the table recently.
+enum class ElbowState { free, resting, landed, lifted };
 
 struct ElbowMarker {
   Sphere sphere;
   ElbowState state = ElbowState::free;
+};
+
+// Where an elbow meets the table, drawn on the table top: a ring around the
+// foot of the sphere (the table point under its centre, along the table's
+// normal) in the elbow's state colour, and for an elbow off the table a
+// dashed drop line from the sphere's lowest point down to the foot.
+struct ContactCue {
+  int elbow = -1;                                     // index into Model::elbows
+  Eigen::Vector3d foot = Eigen::Vector3d::Zero();     // [m] world, on the table top
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // table normal at the foot
+  double radius = 0;                                  // [m] of the ring (centre line)
+  double gap = 0;                                     // [m] sphere to table; 0 when resting
+  Color color;
+  std::vector<Eigen::Vector3d> dashes;  // [m] world, 2 points per dash; empty when resting
+};
+
+// Shadow mapping from the key light (lighting.hpp) over `bounds`: what casts
+// and receives shadows must lie inside it.
+struct Shadows {
+  bool enabled = false;
+  Eigen::AlignedBox3d bounds;  // [m] world
 };
 
 struct SceneStyle {
@@ -83,6 +105,8 @@ struct SceneStyle {
   Color elbow_free{0.80f, 0.80f, 0.80f};
   Color elbow_resting{0.15f, 0.70f, 0.30f};
   Color elbow_landed{0.98f, 0.55f, 0.05f};
+  Color elbow_lifted{0.25f, 0.65f, 0.95f};
+  Color cue_free{0.42f, 0.42f, 0.45f};  // ring and drop line of an elbow off the table
   Color force{0.85f, 0.12f, 0.15f};
   Color hand_path{0.60f, 0.20f, 0.70f};
   // Desired hand path: neutral mid grey (darker than the 0.70 grid, lighter
@@ -93,7 +117,9 @@ struct SceneStyle {
 
 struct SceneOptions {
   double force_scale = 0.01;      // [m/N] arrow length per newton of normal force
-  double landed_window = 0.1;     // [s] an elbow that touched down this recently is "landed"
+  double landed_window = 0.1;     // [s] an elbow that touched down (left) this recently is
+                                  // "landed" ("lifted")
+  double cue_range = 3;           // contact cues for elbows within this many radii of the table
   double floor_z = 0;             // [m] height of the ground grid
   Eigen::AlignedBox2d grid_area;  // [m] x-y extent of the grid; empty: no grid
   double grid_spacing = 0.1;      // [m]
@@ -108,9 +134,11 @@ struct Scene {
   std::vector<Cylinder> joints;     // [dof] housing at each joint origin, along its axis
   std::vector<ElbowMarker> elbows;  // [model elbows]
   std::vector<Arrow> forces;        // one per resting elbow with fn > 0
+  std::vector<ContactCue> cues;     // per elbow near the table, with a recorded distance
   Polyline hand_path;               // traced hand positions up to now
   Polyline desired_hand_path;       // whole desired hand path (hand_d_*); empty if none
   LineSet grid;                     // ground grid at floor_z
+  Shadows shadows;                  // off unless the caller turns them on
 };
 
 // The scene of `state` (joint angles placed with forward_kinematics in

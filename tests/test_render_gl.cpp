@@ -2,9 +2,6 @@
 // the camera's projection, and the video / frames outputs of the command line
 // (run as a process; ffprobe checks the mp4).
 #include <doctest/doctest.h>
-
-#include "support/process.hpp"
-#include "support/scratch.hpp"
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -20,58 +17,19 @@
 #include "render/render_job.hpp"
 #include "render/scene.hpp"
 #include "render/video_encoder.hpp"
+#include "support/process.hpp"
+#include "support/scratch.hpp"
 #include "test_render_fixtures.hpp"
+#include "test_render_pixels.hpp"
 
 using namespace elbowsim;
+using namespace render_pixels;
 using Eigen::Vector3d;
 namespace fs = std::filesystem;
 
 namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
-
-struct Pixel {
-  int r, g, b;
-};
-
-// A frame read back: RGBA rows bottom-up -> pixel (x, y) from the top-left.
-struct Image {
-  int width, height;
-  std::vector<std::uint8_t> rgba;
-  Pixel at(double x, double y) const {
-    const std::size_t i =
-        (std::size_t(height - 1 - int(y)) * std::size_t(width) + std::size_t(x)) * 4;
-    return {rgba[i], rgba[i + 1], rgba[i + 2]};
-  }
-  void save(const fs::path& path) const {  // top-down RGB, for looking at
-    std::vector<std::uint8_t> rgb;
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x) {
-        const Pixel p = at(x, y);
-        rgb.insert(rgb.end(), {std::uint8_t(p.r), std::uint8_t(p.g), std::uint8_t(p.b)});
-      }
-    write_png(path, width, height, rgb.data());
-  }
-};
-
-// Lit colour of a surface of base colour c: a brightness factor in
-// [0.45, 1.45] times c, hue kept (chromaticity within 0.04).
-bool looks_like(const Pixel& p, const Color& c) {
-  const double ps = p.r + p.g + p.b, cs = 255.0 * (c.r + c.g + c.b);
-  if (ps <= 0 || ps < 0.45 * cs || ps > 1.45 * cs) return false;
-  const double d[3] = {p.r / ps - 255 * c.r / cs, p.g / ps - 255 * c.g / cs,
-                       p.b / ps - 255 * c.b / cs};
-  return std::abs(d[0]) < 0.04 && std::abs(d[1]) < 0.04 && std::abs(d[2]) < 0.04;
-}
-
-bool is_background(const Pixel& p, const Color& c) {
-  return std::abs(p.r - 255 * c.r) <= 1.5 && std::abs(p.g - 255 * c.g) <= 1.5 &&
-         std::abs(p.b - 255 * c.b) <= 1.5;
-}
-
-std::string show(const Pixel& p) {
-  return std::to_string(p.r) + "," + std::to_string(p.g) + "," + std::to_string(p.b);
-}
 
 Camera test_camera(double aspect) {
   Camera c;
@@ -193,6 +151,14 @@ TEST_CASE("render video: run writes an H.264 yuv420p mp4 of duration x fps frame
                                   (dir / "video.mp4").string());
     CHECK(reprobe.output == "h264,96,64,yuv420p,6\n");
   }
+  SUBCASE("render --camera with a pose and a field of view, --follow hand") {
+    const Outcome close = cli("render " + dir.string() +
+                              " --size 96x64 --fps 10 --camera eye=0.2,-0.6,0.1,target=0.2,0,0,fov=15"
+                              " --follow hand");
+    INFO(close.output);
+    REQUIRE(close.exit_code == 0);
+    CHECK(close.output.find("video: " + (dir / "video.mp4").string()) != std::string::npos);
+  }
 }
 
 TEST_CASE("render frames: output.frames writes numbered PNGs; --no-render writes none") {
@@ -265,6 +231,14 @@ TEST_CASE("render: a bad run folder is exit 2 with a clear message, and nothing 
   CHECK(size.exit_code == 2);
   CHECK(size.output.find("--size: width and height must be even") != std::string::npos);
   CHECK(cli("render " + ok.string() + " --camera diagonal").exit_code == 2);
+  const Outcome pose = cli("render " + ok.string() + " --camera eye=1,1,target=0,0,0");
+  CHECK(pose.exit_code == 2);
+  CHECK(pose.output.find("error: --camera: eye needs 3 numbers x,y,z [m] (got 2)") !=
+        std::string::npos);
+  const Outcome follow = cli("render " + ok.string() + " --follow elbow");
+  CHECK(follow.exit_code == 2);
+  CHECK(follow.output.find("error: --follow: must be hand or none (got \"elbow\")") !=
+        std::string::npos);
   CHECK(cli("render " + ok.string() + " --fps 0").exit_code == 2);
   CHECK_FALSE(fs::exists(ok / "video.mp4"));
 }

@@ -223,7 +223,8 @@ TEST_CASE("render overlay: time, scenario, energy so far and elbow forces") {
   CHECK(lines[1] == "t = 0.750 s");
   CHECK(lines[2] == "E_in = 0.750 J");
   CHECK(lines[3] == "elbow: 10.00 N resting");
-  CHECK(overlay_lines("x", model, playback.at(0.3))[3] == "elbow: free");
+  // Free: its height over the table from the recorded distance (0 in the fixture).
+  CHECK(overlay_lines("x", model, playback.at(0.3))[3] == "elbow: free, 0.0 mm above the table");
 }
 
 TEST_CASE("render meshes: closed, outward-facing (signed volume) unit shapes") {
@@ -241,6 +242,7 @@ TEST_CASE("render meshes: closed, outward-facing (signed volume) unit shapes") {
   CHECK(volume(unit_sphere(64, 32)) == doctest::Approx(4 * pi / 3).epsilon(0.01));
   CHECK(volume(unit_cylinder(64)) == doctest::Approx(pi).epsilon(0.01));
   CHECK(volume(unit_cone(64)) == doctest::Approx(pi / 3).epsilon(0.01));
+  CHECK(volume(unit_torus(96, 32, 0.1)) == doctest::Approx(2 * pi * pi * 0.01).epsilon(0.01));
 }
 
 TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
@@ -251,18 +253,25 @@ TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
   CHECK(plain.render.fps == 30);
   CHECK(plain.render.msaa == 4);
   CHECK_FALSE(plain.render.supersample);
-  CHECK(plain.render.force_scale == 0.01);
+  CHECK_FALSE(plain.render.force_scale.has_value());  // automatic
+  CHECK(plain.render.shadows);
+  CHECK(plain.render.inset.show);
+  CHECK(plain.render.inset.view_height == 0);
+  CHECK(plain.render.inset.scale_bar == 0);
+  CHECK(plain.render.camera.follow == CameraFollow::none);
   CHECK_FALSE(plain.render.camera.explicit_pose);
   CHECK_FALSE(plain.output.video);
   CHECK_FALSE(plain.output.frames);
 
   const Scenario s = load_scenario_text(base + R"(render:
-  camera: {eye: [1, -2, 1], target: [0.3, 0, 0], fov_deg: 30}
+  camera: {eye: [1, -2, 1], target: [0.3, 0, 0], fov_deg: 30, follow: hand}
   size: [640, 480]
   fps: 25
   msaa: 2
   supersample: true
   force_scale: 0.02
+  shadows: false
+  inset: {show: false, view_height: 0.04, scale_bar: 0.005}
 )",
                                         "x.yaml", {"output.video=true", "output.frames=true"});
   CHECK(s.render.camera.explicit_pose);
@@ -273,10 +282,17 @@ TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
   CHECK(s.render.msaa == 2);
   CHECK(s.render.supersample);
   CHECK(s.render.force_scale == 0.02);
+  CHECK(s.render.camera.follow == CameraFollow::hand);
+  CHECK_FALSE(s.render.shadows);
+  CHECK_FALSE(s.render.inset.show);
+  CHECK(s.render.inset.view_height == 0.04);
+  CHECK(s.render.inset.scale_bar == 0.005);
   CHECK(s.output.video);
   CHECK(s.output.frames);
   CHECK(load_scenario_text(base + "render: {camera: {preset: top}}\n", "x.yaml")
             .render.camera.preset == CameraPreset::top);
+  CHECK_FALSE(load_scenario_text(base + "render: {force_scale: auto}\n", "x.yaml")
+                  .render.force_scale.has_value());
 
   const int line = render_fixture::scenario_lines() + 1;  // the line of "render:"
   auto error = [&](const std::string& render) {
@@ -303,5 +319,15 @@ TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
   CHECK(error("render: {fps: 0}\n").find("render.fps: must be > 0") != std::string::npos);
   CHECK(error("render: {force_scale: -1}\n").find("render.force_scale: must be >= 0") !=
         std::string::npos);
+  CHECK(error("render: {force_scale: big}\n") ==
+        l + ":23: render.force_scale: must be auto or a number >= 0 [m/N] (got \"big\")");
+  CHECK(error("render: {camera: {follow: elbow}}\n")
+            .find("render.camera.follow: must be one of none, hand") != std::string::npos);
+  CHECK(
+      error("render: {inset: {view_height: 0}}\n").find("render.inset.view_height: must be > 0") !=
+      std::string::npos);
+  CHECK(error("render: {inset: {shown: true}}\n").find("did you mean \"show\"") !=
+        std::string::npos);
+  CHECK(error("render: {shadows: 2}\n").find("render.shadows:") != std::string::npos);
   CHECK(error("render: {fsp: 3}\n").find("did you mean \"fps\"") != std::string::npos);
 }

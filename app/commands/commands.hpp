@@ -43,7 +43,8 @@ struct RunArguments {
 // elbowsim render RUN_DIR [--camera preset] [--size WxH] [--fps N]
 struct RenderArguments {
   std::string folder;                 // a run folder: scenario.yaml, trajectory.csv
-  std::optional<std::string> camera;  // preset name, replaces render.camera
+  std::optional<std::string> camera;  // preset name or eye=..,target=..,fov=.. (camera_option.hpp)
+  std::optional<std::string> follow;  // hand or none, replaces render.camera.follow
   std::optional<std::string> size;    // "WxH", replaces render.size
   std::optional<std::string> fps;     // replaces render.fps
 };

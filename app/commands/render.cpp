@@ -6,6 +6,7 @@
 #include <iostream>
 #include <regex>
 
+#include "app/commands/camera_option.hpp"
 #include "app/commands/commands.hpp"
 #include "app/output/run_folder.hpp"
 #include "app/output/run_manifest.hpp"
@@ -35,19 +36,15 @@ void print_stats(const RenderStats& s, const fs::path& folder) {
               << s.video_command << '\n';
 }
 
-// --camera, --size, --fps over the scenario's render settings; "" if valid,
-// else the message.
+// --camera, --follow, --size, --fps over the scenario's render settings; ""
+// if valid, else the message.
 std::string apply_options(const RenderArguments& args, RenderSettings& settings) {
-  if (args.camera) {
-    bool known = false;
-    for (CameraPreset p :
-         {CameraPreset::front, CameraPreset::side, CameraPreset::top, CameraPreset::three_quarter})
-      if (*args.camera == to_string(p)) settings.camera.preset = p, known = true;
-    if (!known)
-      return "--camera: must be one of front, side, top, three_quarter (got \"" + *args.camera +
-             "\")";
-    settings.camera.explicit_pose = false;
-  }
+  if (args.camera)
+    if (std::string error = apply_camera_option(*args.camera, settings.camera); !error.empty())
+      return error;
+  if (args.follow)
+    if (std::string error = apply_follow_option(*args.follow, settings.camera); !error.empty())
+      return error;
   if (args.size) {
     std::smatch m;
     if (!std::regex_match(*args.size, m, std::regex("([0-9]{1,5})x([0-9]{1,5})")))

@@ -1,7 +1,8 @@
 // render: how frames and videos of a run look (camera, size, rate,
-// anti-aliasing, force arrows). Whether a run renders at all is output.video /
-// output.frames (settings_section.cpp).
+// anti-aliasing, shadows, the hand-path inset, force arrows). Whether a run renders at all is
+// output.video / output.frames (settings_section.cpp).
 #include <cmath>
+#include <cstdlib>
 
 #include "app/scenario/checks.hpp"
 #include "app/scenario/sections.hpp"
@@ -19,11 +20,13 @@ long whole_in(const Value& v, long lo, long hi) {
   return x;
 }
 
-// render.camera: {preset, fov_deg} or {eye, target, up, fov_deg}.
+// render.camera: {preset, fov_deg} or {eye, target, up, fov_deg}, each with follow.
 CameraSettings read_camera(const Value& camera) {
   CameraSettings out;
   if (!camera.present()) return out;
-  camera.allow_keys({"preset", "eye", "target", "up", "fov_deg"});
+  camera.allow_keys({"preset", "eye", "target", "up", "fov_deg", "follow"});
+  Value follow = camera.get("follow");
+  if (follow.present()) out.follow = choose(follow, {CameraFollow::none, CameraFollow::hand});
   Value fov = camera.get("fov_deg");
   if (fov.present()) {
     out.fov_deg = fov.number();
@@ -74,12 +77,35 @@ void read_size(const Value& size, RenderSettings& out) {
   }
 }
 
+// render.inset: {show, view_height, scale_bar}.
+InsetSettings read_inset(const Value& inset) {
+  InsetSettings out;
+  if (!inset.present()) return out;
+  inset.allow_keys({"show", "view_height", "scale_bar"});
+  out.show = value_or(inset.get("show"), out.show, boolean);
+  out.view_height = value_or(inset.get("view_height"), out.view_height, positive);
+  out.scale_bar = value_or(inset.get("scale_bar"), out.scale_bar, positive);
+  return out;
+}
+
+// render.force_scale: auto (unset) or a number >= 0 [m/N].
+std::optional<double> read_force_scale(const Value& v) {
+  if (!v.present()) return std::nullopt;
+  const std::string given = v.text();
+  if (given == "auto") return std::nullopt;
+  char* end = nullptr;
+  std::strtod(given.c_str(), &end);
+  if (given.empty() || *end) v.fail("must be auto or a number >= 0 [m/N] (got \"" + given + "\")");
+  return non_negative(v);
+}
+
 }  // namespace
 
 RenderSettings read_render(const Value& render) {
   RenderSettings out;
   if (!render.present()) return out;
-  render.allow_keys({"camera", "size", "fps", "msaa", "supersample", "force_scale"});
+  render.allow_keys(
+      {"camera", "size", "fps", "msaa", "supersample", "force_scale", "shadows", "inset"});
   out.camera = read_camera(render.get("camera"));
   read_size(render.get("size"), out);
   Value fps = render.get("fps");
@@ -93,7 +119,9 @@ RenderSettings read_render(const Value& render) {
     out.msaa = int(samples);
   }
   out.supersample = value_or(render.get("supersample"), out.supersample, boolean);
-  out.force_scale = value_or(render.get("force_scale"), out.force_scale, non_negative);
+  out.force_scale = read_force_scale(render.get("force_scale"));
+  out.shadows = value_or(render.get("shadows"), out.shadows, boolean);
+  out.inset = read_inset(render.get("inset"));
   return out;
 }
 

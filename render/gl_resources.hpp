@@ -1,0 +1,52 @@
+// The GL objects behind GlRenderer (programs, unit-shape vertex arrays,
+// framebuffers, the shadow map) and the functions that make them. Internal
+// to the renderer: only gl_renderer.cpp and gl_resources.cpp include it.
+#pragma once
+
+#define GL_GLEXT_PROTOTYPES
+#include <GL/glcorearb.h>
+
+#include <array>
+
+#include "render/gl_renderer.hpp"
+#include "render/instances.hpp"
+#include "render/meshes.hpp"
+
+namespace elbowsim {
+
+// A unit shape's vertex array: its vertices, indices and per-instance buffer.
+struct MeshBuffers {
+  GLuint vao = 0, vertices = 0, indices = 0, instances = 0;
+  GLsizei index_count = 0;
+};
+
+inline constexpr int kShadowMapSize = 1024;  // [texels] per side
+
+struct GlRenderer::Gl {
+  GLuint lit = 0, flat = 0, depth = 0;  // programs
+  std::array<MeshBuffers, shape_count> meshes;
+  Instances instances;
+  GLuint line_vao = 0, line_vbo = 0;
+  GLuint draw_fbo = 0, draw_color = 0, draw_depth = 0;  // multisampled (or the resolve one)
+  GLuint resolve_fbo = 0, resolve_color = 0;
+  std::array<GLuint, 2> pbo{};
+  GLuint shadow_fbo = 0, shadow_map = 0;  // made on first use
+  Eigen::Matrix4f light_view_projection = Eigen::Matrix4f::Identity();
+  float shadow_texel = 0;  // [m] world size of one texel
+};
+
+GLuint link_program(const char* vertex, const char* fragment);  // throws on errors
+MeshBuffers upload(const Mesh& mesh);
+// GL_LINES of 3-float positions (the grid), refilled per frame.
+void make_line_buffer(GlRenderer::Gl& g);
+// Single-sample colour target `resolve_fbo`, read back; with samples > 1 a
+// multisampled colour + depth target `draw_fbo` drawn into and resolved into
+// it (otherwise draw_fbo is resolve_fbo, with a depth buffer); two pixel-buffer
+// objects for the read-back.
+void make_framebuffers(GlRenderer::Gl& g, int width, int height, int samples);
+// A kShadowMapSize² depth texture with depth comparison (sampler2DShadow,
+// bilinear) and a framebuffer that renders into it.
+void make_shadow_map(GlRenderer::Gl& g);
+void delete_all(GlRenderer::Gl& g);
+
+}  // namespace elbowsim

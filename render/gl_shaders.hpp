@@ -1,0 +1,123 @@
+// The renderer's GLSL 3.30 core programs, as source text (gl_renderer.cpp
+// compiles them): lit instanced shapes with a shadow-mapped key light, their
+// depth from the light for the shadow map, and flat lines (the grid).
+#pragma once
+
+namespace elbowsim::shaders {
+
+// Per instance: the model matrix (4 vec4), the normal matrix (inverse
+// transpose of its linear part, 3 vec3) and a colour.
+inline constexpr const char* kLitVertex = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec4 model0;
+layout(location = 3) in vec4 model1;
+layout(location = 4) in vec4 model2;
+layout(location = 5) in vec4 model3;
+layout(location = 6) in vec3 normal0;
+layout(location = 7) in vec3 normal1;
+layout(location = 8) in vec3 normal2;
+layout(location = 9) in vec4 color;
+uniform mat4 view_projection;
+out vec3 world_position;
+out vec3 world_normal;
+out vec3 base_color;
+void main() {
+  vec4 p = mat4(model0, model1, model2, model3) * vec4(position, 1.0);
+  world_position = p.xyz;
+  world_normal = mat3(normal0, normal1, normal2) * normal;
+  base_color = color.rgb;
+  gl_Position = view_projection * p;
+}
+)";
+
+// Blinn-Phong, per fragment:
+//   c = ambient k + sum over lights of s_i L_i (max(n.l, 0) k + specular max(n.h, 0)^48),
+//   h = (l + v)/|l + v|,
+// where s_0, the key light's visibility, comes from the shadow map (1 without
+// shadows) and s_1 = 1. The map is looked up at the point moved 1.5 texels
+// along its normal (no self-shadowing "acne"), with one bilinear depth
+// comparison (the four nearest texels compared and blended). In shadow
+// the key keeps `shadow_keep` of its light, so shadowed faces keep their form.
+// Then the colour is mixed `fade` of the way toward fade_color (the inset's
+// faded scene); `unlit` 1 gives the base colour as is (the inset's paths).
+inline constexpr const char* kLitFragment = R"(#version 330 core
+in vec3 world_position;
+in vec3 world_normal;
+in vec3 base_color;
+uniform vec3 eye;
+uniform vec3 light_direction[2];
+uniform vec3 light_color[2];
+uniform float ambient;
+uniform float specular;
+uniform int shadows;
+uniform mat4 light_view_projection;
+uniform sampler2DShadow shadow_map;
+uniform float shadow_texel;
+uniform float shadow_keep;
+uniform float fade;
+uniform vec3 fade_color;
+uniform int unlit;
+out vec4 frag_color;
+
+float key_visibility(vec3 n) {
+  if (shadows == 0) return 1.0;
+  vec4 s = light_view_projection * vec4(world_position + 1.5 * shadow_texel * n, 1.0);
+  vec3 uvz = s.xyz / s.w * 0.5 + 0.5;
+  if (any(lessThan(uvz, vec3(0.0))) || any(greaterThan(uvz, vec3(1.0)))) return 1.0;
+  float lit = texture(shadow_map, uvz);
+  return mix(shadow_keep, 1.0, lit);
+}
+
+void main() {
+  if (unlit == 1) {
+    frag_color = vec4(base_color, 1.0);
+    return;
+  }
+  vec3 n = normalize(world_normal);
+  vec3 v = normalize(eye - world_position);
+  vec3 c = ambient * base_color;
+  for (int i = 0; i < 2; ++i) {
+    vec3 l = light_direction[i];
+    float diffuse = max(dot(n, l), 0.0);
+    // (n.h)^48 by squaring: cheaper than pow() on llvmpipe.
+    float s1 = max(dot(n, normalize(l + v)), 0.0);
+    float s2 = s1 * s1, s4 = s2 * s2, s8 = s4 * s4, s16 = s8 * s8;
+    float shine = diffuse > 0.0 ? s16 * s16 * s16 : 0.0;
+    float seen = (i == 0 && diffuse > 0.0) ? key_visibility(n) : 1.0;
+    c += seen * light_color[i] * (diffuse * base_color + specular * shine);
+  }
+  frag_color = vec4(mix(min(c, vec3(1.0)), fade_color, fade), 1.0);
+}
+)";
+
+// Depth from the key light, for the shadow map: the same instances, no colour.
+inline constexpr const char* kDepthVertex = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 2) in vec4 model0;
+layout(location = 3) in vec4 model1;
+layout(location = 4) in vec4 model2;
+layout(location = 5) in vec4 model3;
+uniform mat4 view_projection;
+void main() {
+  gl_Position = view_projection * mat4(model0, model1, model2, model3) * vec4(position, 1.0);
+}
+)";
+
+inline constexpr const char* kDepthFragment = R"(#version 330 core
+void main() {}
+)";
+
+inline constexpr const char* kFlatVertex = R"(#version 330 core
+layout(location = 0) in vec3 position;
+uniform mat4 view_projection;
+void main() { gl_Position = view_projection * vec4(position, 1.0); }
+)";
+
+inline constexpr const char* kFlatFragment = R"(#version 330 core
+uniform vec3 color;
+out vec4 frag_color;
+void main() { frag_color = vec4(color, 1.0); }
+)";
+
+}  // namespace elbowsim::shaders
