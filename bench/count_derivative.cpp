@@ -23,11 +23,14 @@ int main(int argc, char** argv) {
   const std::string solver = argv[3];
   Model m = testing::random_chain(n, 4000 + n);
   for (int k = 0; k < p; ++k)
-    m.elbows.push_back({"e" + std::to_string(k), (k + 1) * (n - 1) / p, Eigen::Vector3d(0.1, 0, 0), 0.03});
+    m.elbows.push_back(
+        {"e" + std::to_string(k), (k + 1) * (n - 1) / p, Eigen::Vector3d(0.1, 0, 0), 0.03});
   m.table = {TableBox{}};
   m.effects.contact = true;
-  if (solver == "schur") m.contact.solver = ConstraintSolver::schur;
-  else if (solver == "aba") m.contact.solver = ConstraintSolver::aba;
+  if (solver == "schur")
+    m.contact.solver = ConstraintSolver::schur;
+  else if (solver == "aba")
+    m.contact.solver = ConstraintSolver::aba;
   finalize(m);
   Data data(m);
   const StateLayout s(m);

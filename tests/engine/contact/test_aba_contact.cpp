@@ -79,15 +79,15 @@ TEST_CASE("aba contact solve == Schur solve (1e-10) on random chains s = 2..60, 
 
         const Solution schur = solve(m, data, tau, ConstraintSolver::schur);
         const Solution aba = solve(m, data, tau, ConstraintSolver::aba);
-        const double scale = schur.qdd.cwiseAbs().maxCoeff() +
-                             (p > 0 ? schur.fn.cwiseAbs().maxCoeff() : 0.0);
+        const double scale =
+            schur.qdd.cwiseAbs().maxCoeff() + (p > 0 ? schur.fn.cwiseAbs().maxCoeff() : 0.0);
         CHECK(aba.dependent == schur.dependent);
         CHECK(approx(aba.qdd, schur.qdd, 1e-10 * scale));
         CHECK(approx(aba.fn, schur.fn, 1e-10 * scale));
         // The rows hold: Jc qdd = gamma (on dependent rows, wherever they can).
         if (!aba.dependent)
-          CHECK(approx(Eigen::VectorXd(data.contact.Jc * aba.qdd), data.contact.gamma,
-                       1e-9 * scale));
+          CHECK(
+              approx(Eigen::VectorXd(data.contact.Jc * aba.qdd), data.contact.gamma, 1e-9 * scale));
         dependent_cases += aba.dependent;
         ++cases;
       }
@@ -98,7 +98,8 @@ TEST_CASE("aba contact solve == Schur solve (1e-10) on random chains s = 2..60, 
   CHECK(cases == 6 * 7 * 4);
 }
 
-TEST_CASE("aba contact terms: A == Jc M^-1 Jf^T and b == Jc qdd_free - gamma, as the Schur path's") {
+TEST_CASE(
+    "aba contact terms: A == Jc M^-1 Jf^T and b == Jc qdd_free - gamma, as the Schur path's") {
   const Model m = chain(20, 4, false, true, 77);
   Data data(m);
   const Eigen::VectorXd q = Eigen::VectorXd::Random(20), qd = Eigen::VectorXd::Random(20);
