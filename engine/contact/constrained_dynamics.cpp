@@ -85,8 +85,12 @@ void explicit_inverse(Data& data, ConstVec tau) {
 
 ConstraintSolver constraint_solver(const Model& model) {
   ConstraintSolver s = model.contact.solver;
+  // auto: aba from the crossover on; the paper's pipeline (Walker-Orin's M,
+  // then the Schur complement) stays whole when simulation.dynamics asks for it.
   if (s == ConstraintSolver::automatic)
-    s = model.dof >= kAbaCrossover ? ConstraintSolver::aba : ConstraintSolver::schur;
+    s = model.dof >= kAbaCrossover && model.options.dynamics != DynamicsMethod::walker_orin
+            ? ConstraintSolver::aba
+            : ConstraintSolver::schur;
   if (s == ConstraintSolver::aba && model.effects.joint_friction) s = ConstraintSolver::schur;
   return s;
 }

@@ -27,7 +27,8 @@ namespace elbowsim {
 constexpr int kAbaCrossover = 2;
 
 // The solver the scene's steps use: model.contact.solver, with auto resolved
-// by the number of joints, and aba replaced by schur under joint friction
+// by the number of joints (schur with simulation.dynamics walker_orin, the
+// paper's method end to end), and aba replaced by schur under joint friction
 // (the Schur path locks stuck joints and the holding torques need M).
 ConstraintSolver constraint_solver(const Model& model);
 

@@ -128,6 +128,11 @@ TEST_CASE("constraint_solver: auto is schur below kAbaCrossover joints and aba f
   CHECK(constraint_solver(short_chain) == ConstraintSolver::aba);
   long_chain.contact.solver = ConstraintSolver::schur;
   CHECK(constraint_solver(long_chain) == ConstraintSolver::schur);
+  // The paper's method asked for: Walker-Orin's M and the Schur complement.
+  long_chain.contact.solver = ConstraintSolver::automatic;
+  long_chain.options.dynamics = DynamicsMethod::walker_orin;
+  CHECK(constraint_solver(long_chain) == ConstraintSolver::schur);
+  long_chain.options.dynamics = DynamicsMethod::crba;
   // Joint friction locks joints through M: the aba path is not used with it.
   long_chain.contact.solver = ConstraintSolver::aba;
   long_chain.effects.joint_friction = true;
