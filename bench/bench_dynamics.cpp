@@ -35,6 +35,7 @@ void sizes(benchmark::internal::Benchmark* b) {
 void BM_InverseDynamics(benchmark::State& state) {
   Fixture f(static_cast<int>(state.range(0)));
   for (auto _ : state) {
+    f.data.kinematics_model = 0;  // time the kinematics: no reuse of the last call's
     forward_kinematics(f.model, f.data, f.q);
     inverse_dynamics(f.model, f.data, f.qd, f.qdd, {}, f.out);
     benchmark::DoNotOptimize(f.out.data());
@@ -44,6 +45,7 @@ void BM_InverseDynamics(benchmark::State& state) {
 void BM_MassMatrixWalkerOrin(benchmark::State& state) {
   Fixture f(static_cast<int>(state.range(0)));
   for (auto _ : state) {
+    f.data.kinematics_model = 0;  // time the kinematics: no reuse of the last call's
     forward_kinematics(f.model, f.data, f.q);
     mass_matrix_walker_orin(f.model, f.data);
     benchmark::DoNotOptimize(f.data.mass_matrix.data());
@@ -53,6 +55,7 @@ void BM_MassMatrixWalkerOrin(benchmark::State& state) {
 void BM_MassMatrixCrba(benchmark::State& state) {
   Fixture f(static_cast<int>(state.range(0)));
   for (auto _ : state) {
+    f.data.kinematics_model = 0;  // time the kinematics: no reuse of the last call's
     forward_kinematics(f.model, f.data, f.q);
     mass_matrix_crba(f.model, f.data);
     benchmark::DoNotOptimize(f.data.mass_matrix.data());
@@ -63,6 +66,7 @@ template <DynamicsMethod method>
 void BM_ForwardDynamics(benchmark::State& state) {
   Fixture f(static_cast<int>(state.range(0)));
   for (auto _ : state) {
+    f.data.kinematics_model = 0;  // time the kinematics: no reuse of the last call's
     forward_kinematics(f.model, f.data, f.q);
     forward_dynamics(f.model, f.data, method, f.qd, f.tau, f.out);
     benchmark::DoNotOptimize(f.out.data());

@@ -14,6 +14,9 @@
 //            row per sticking contact, on 7 joints; counters: the share of
 //            steps with a sticking contact and located events per step), without
 //            it the same 2 normal rows slide. The s = 7, p = 2 case.
+//   far7:    the same arm and torques with its table 5 m below (contact on:
+//            detection and checks run, nothing is ever near) and without a
+//            table (contact off): what contact costs when no part is near.
 //
 // RK4, 1 ms steps. reset(model, data) once, then step() repeatedly; every
 // 500 steps (0.5 s of simulated time) the state is reset so the elbow stays
@@ -55,7 +58,7 @@ Model sliding(bool contact) {
   return m;
 }
 
-Model lying7(bool friction) {
+Model lying7(bool friction, bool far = false, bool contact = true) {
   constexpr int n = 7;
   constexpr double L = 0.15, z = -0.05, r = 0.02;
   std::vector<testing::PlanarLinkSpec> links(n, {L, 0.5, L / 2, 0.001});
@@ -74,10 +77,12 @@ Model lying7(bool friction) {
   box.center = Eigen::Vector3d(0.5, 0, z - r - 0.05);
   m.table = {box};
   for (Link& link : m.links) link.collision.kind = LinkCollision::Kind::none;
-  m.effects.contact = true;
+  m.effects.contact = contact;
   m.effects.friction = friction;
   m.contact.friction.mu = 0.6;
   m.initial.q = q;
+  if (far) m.table[0].center.z() -= 5.0;
+  if (!contact) m.table.clear();
   std::vector<double> frequency(n);
   for (int j = 0; j < n; ++j) frequency[static_cast<std::size_t>(j)] = 1.0 + 0.1 * j;
   testing::gravity_share_with_sines(m, q, 0.5, 0.02, frequency);
@@ -128,5 +133,7 @@ BENCHMARK_CAPTURE(step_cost, sliding_contact_off, sliding(false));
 BENCHMARK_CAPTURE(step_cost, sliding_contact_on, sliding(true));
 BENCHMARK_CAPTURE(step_cost, lying7_frictionless, lying7(false));
 BENCHMARK_CAPTURE(step_cost, lying7_coulomb_sticking, lying7(true));
+BENCHMARK_CAPTURE(step_cost, far7_contact_on, lying7(false, true, true));
+BENCHMARK_CAPTURE(step_cost, far7_contact_off, lying7(false, true, false));
 
 BENCHMARK_MAIN();

@@ -54,7 +54,7 @@ logs=$build/bench-logs
 mkdir -p "$logs"
 
 # --- what runs, and how ------------------------------------------------------------
-gbench_programs=(bench_dynamics bench_constrained bench_collision bench_effects bench_step)
+gbench_programs=(bench_dynamics bench_constrained bench_collision bench_effects bench_step bench_derivative)
 all_programs=("${gbench_programs[@]}" bench_render bench_montecarlo)
 missing=()
 for p in "${all_programs[@]}"; do [[ -x $build/bench/$p ]] || missing+=("$p"); done

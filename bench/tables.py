@@ -282,12 +282,15 @@ def effects(machine, res, ratios):
 
 
 STEP_SCENES = [("resting", "elbow arm, elbow resting (2 links, torque inputs)"),
-               ("sliding", "sliding arm, elbow sliding (3 links, quasi-static servos)")]
+               ("sliding", "sliding arm, elbow sliding (3 links, quasi-static servos)"),
+               ("far7", "7-link arm, table 5 m below: contact on, nothing near")]
 
 
 def step(machine, res, ratios):
     rows, r = [], {}
     for key, label in STEP_SCENES:
+        if f"step_cost/{key}_contact_on" not in res.runs:  # results from before the scene existed
+            continue
         off = res.median(f"step_cost/{key}_contact_off")
         on = res.median(f"step_cost/{key}_contact_on")
         resting = res.median(f"step_cost/{key}_contact_on", "resting")
@@ -311,6 +314,48 @@ def step(machine, res, ratios):
          "Coulomb / frictionless", "steps with a sticking contact", "located events per step"],
         [["torques: half the gravity load plus small sines", ns(free), ns(coulomb),
           f"{coulomb / free:.2f}", f"{sticking:.2f}", f"{events:.3f}"]])
+
+
+def derivative(machine, res, ratios):
+    """bench_derivative: one constrained evaluation against the engine's RNEA, and the crossover."""
+    sizes = sorted({int(n.split("/")[1]) for n in res.names() if n.startswith("Rnea/")})
+    rows_p = sorted({int(n.split("/")[2]) for n in res.names() if n.startswith("Derivative/")})
+    rows = []
+    for s in sizes:
+        rnea = res.median(f"Rnea/{s}")
+        cells = [s, ns(rnea)]
+        for p in rows_p:
+            d = res.median(f"Derivative/{s}/{p}")
+            cells.append(f"{ns(d)} ({d / rnea:.2f}×)")
+        rows.append(cells)
+    shapes = sorted({tuple(int(x) for x in n.split("/")[1:]) for n in res.names()
+                     if n.startswith("DerivativeAba/")})
+    cross = []
+    for s, p in shapes:
+        schur, aba = res.median(f"DerivativeSchur/{s}/{p}"), res.median(f"DerivativeAba/{s}/{p}")
+        cross.append([s, p, ns(schur), ns(aba), f"{aba / schur:.2f}"])
+    r = {}
+    for s in (7, 60):
+        if s in sizes and 2 in rows_p:
+            r[f"constrained p = 2 / RNEA at s = {s}"] = \
+                f"{res.median(f'Derivative/{s}/2') / res.median(f'Rnea/{s}'):.2f}×"
+    if 15 in sizes and 60 in sizes and 2 in rows_p:
+        import math
+        e = math.log(res.median("Derivative/60/2") / res.median("Derivative/15/2")) / math.log(4)
+        r["scaling exponent s = 15–60, p = 2"] = f"{e:.2f}"
+    faster = {p: from_on([s for s, q in shapes if q == p],
+                         lambda s, p=p: res.median(f"DerivativeAba/{s}/{p}") <= res.median(f"DerivativeSchur/{s}/{p}"))
+              for p in sorted({p for _, p in shapes})}
+    r["aba at most Schur's time from s ="] = ", ".join(f"{v} (p = {p})" for p, v in faster.items())
+    ratios["derivative"] = r
+    head = header(machine, res, "ns per derivative evaluation (kinematics, full motors, constrained "
+                                "solve, energy powers; `contact.solver: auto`) and, in brackets, "
+                                "its ratio to the engine's RNEA (forward kinematics + inverse "
+                                "dynamics) on the same chain in the same run")
+    return ([head, ""] + table(["s", "RNEA"] + [f"p = {p}" for p in rows_p], rows)
+            + ["", "The two constrained solvers (contact.solver schur, aba) on the same evaluations:", ""]
+            + table(["s", "p", "schur", "aba", "aba / schur"], cross)
+            + ["", "Ratios in this run: " + "; ".join(f"{k} {v}" for k, v in r.items()) + "."])
 
 
 # --- README --------------------------------------------------------------------------
@@ -337,7 +382,7 @@ def build_blocks(folder):
     ratios, blocks, checks = {}, {}, []
     makers = {"dynamics": ("bench_dynamics", dynamics), "constrained": ("bench_constrained", constrained),
               "collision": ("bench_collision", collision), "effects": ("bench_effects", effects),
-              "step": ("bench_step", step)}
+              "step": ("bench_step", step), "derivative": ("bench_derivative", derivative)}
     for block, (program, make) in makers.items():
         path = os.path.join(folder, program + ".json")
         if not os.path.isfile(path):

@@ -1,5 +1,7 @@
 #include "engine/data.hpp"
 
+#include <limits>
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -42,6 +44,7 @@ Data::Data(const Model& model) : llt(model.dof), contact(make_contact_data(model
   joint_mass = Eigen::MatrixXd::Zero(n, n);
   rotation.assign(un, Eigen::Matrix3d::Identity());
   origin.assign(un, Eigen::Vector3d::Zero());
+  kinematics_q = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
   axis = com = omega = omega_dot = origin_acc = force = moment = origin;
   inertia = rotation;
   mass_matrix = Eigen::MatrixXd::Zero(n, n);

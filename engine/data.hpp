@@ -77,6 +77,12 @@ struct Data {
   std::vector<Eigen::Vector3d> axis;      // [n] joint axis, unit
   std::vector<Eigen::Vector3d> com;       // [n] link centre of mass [m]
   std::vector<Eigen::Matrix3d> inertia;   // [n] link inertia about its com [kg m^2]
+  // The q [n] and model id the kinematics above were computed for: a call at
+  // the same q (bit for bit) reuses them (an RK stage at the step's start, the
+  // detection that starts a step where the last one ended). NaN: none yet;
+  // kinematics_model = 0 forces the next call to compute (benchmarks).
+  Eigen::VectorXd kinematics_q;
+  long kinematics_model = 0;
 
   // --- dynamics scratch ----------------------------------------------------
   Eigen::MatrixXd mass_matrix;     // [n x n] M (+ Jm when rotor inertia is on)

@@ -30,7 +30,9 @@ const char* to_string(IntegratorKind k) {
 
 const char* to_string(ConstraintSolver s) {
   switch (s) {
+    case ConstraintSolver::automatic: return "auto";
     case ConstraintSolver::schur: return "schur";
+    case ConstraintSolver::aba: return "aba";
     case ConstraintSolver::dense_lu: return "dense_lu";
     case ConstraintSolver::explicit_inverse: return "explicit_inverse";
   }
@@ -221,6 +223,19 @@ void finalize(Model& model) {
   }
   if (model.damping.size() == 0) model.damping = Eigen::VectorXd::Zero(n);
   model.planar_axis = planar_axis(model);
+  model.joint_rotations.resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const Joint& joint = model.joints[i];
+    const Eigen::Vector3d& a = joint.axis;
+    const Eigen::Matrix3d outer = a * a.transpose();
+    Eigen::Matrix3d skew;
+    skew << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;
+    JointRotation& r = model.joint_rotations[static_cast<std::size_t>(i)];
+    r.fixed = joint.origin_rotation * outer;
+    r.cosine = joint.origin_rotation * (Eigen::Matrix3d::Identity() - outer);
+    r.sine = joint.origin_rotation * skew;
+    r.axis = joint.origin_rotation * a;
+  }
 
   // Reflected motor constants (docs/model.md, Motors): Km = K k, Jm = Im k^2, Dm = dm k^2.
   model.km = model.armature = model.resistance = model.inductance = model.voltage_limit =

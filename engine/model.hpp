@@ -22,8 +22,9 @@ bool is_adaptive(IntegratorKind k);
 enum class DynamicsMethod { walker_orin, crba, aba };
 enum class Stabilization { none, baumgarte, projection };
 enum class EventTiming { step, locate };
-// How the constrained step's saddle-point system is solved (contact/constrained_dynamics.hpp).
-enum class ConstraintSolver { schur, dense_lu, explicit_inverse };
+// How the constrained step's saddle-point system is solved (contact/constrained_dynamics.hpp);
+// automatic: aba from kAbaCrossover joints on, schur below.
+enum class ConstraintSolver { automatic, schur, aba, dense_lu, explicit_inverse };
 enum class FrictionLaw { coulomb, tanh, saturated };
 
 const char* to_string(MotorModel m);
@@ -91,7 +92,7 @@ struct ContactOptions {
   // end of the step (2 mm at 2 m/s and 1 ms: beyond penetration_tolerance).
   EventTiming events = EventTiming::locate;
   double locate_tolerance = 1e-9;      // [s] event-time tolerance (events: locate)
-  ConstraintSolver solver = ConstraintSolver::schur;  // of the constrained step (same answers; cost differs)
+  ConstraintSolver solver = ConstraintSolver::automatic;  // of the constrained step (same answers; cost differs)
   double touch_distance = 1e-6;        // [m] signed distance that counts as touching
   double separation_velocity = 1e-6;   // [m/s] normal speed above which a contact separates
   // [m/s] a landing whose rebound would be slower than this is plastic: it settles
@@ -149,6 +150,15 @@ struct Joint {
   Eigen::Matrix3d origin_rotation = Eigen::Matrix3d::Identity();  // in parent link frame
   Eigen::Vector3d origin_position = Eigen::Vector3d::Zero();      // [m], in parent link frame
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();                // unit, in this link's frame
+};
+
+// A joint's rotation in its parent's frame by Rodrigues' formula, split by
+// finalize() so that forward kinematics costs one sin, one cos and 18
+// multiply-adds per joint: with O = origin_rotation and the unit axis a,
+//   O R(a, q) = O a a^T + cos q O (1 - a a^T) + sin q O [a]x.
+struct JointRotation {
+  Eigen::Matrix3d fixed, cosine, sine;  // O a a^T, O (1 - a a^T), O [a]x
+  Eigen::Vector3d axis;                 // O a: the axis in the parent frame
 };
 
 // Rigid link carried by joint i. All vectors are in the link's own frame.
@@ -278,6 +288,7 @@ struct Model {
   // (a planar arm: every point moves in a plane normal to it, so a contact
   // whose normal lies in that plane has one tangent direction); zero otherwise.
   Eigen::Vector3d planar_axis = Eigen::Vector3d::Zero();
+  std::vector<JointRotation> joint_rotations;  // [n] (kinematics.cpp)
 
   // Coulomb friction with stick and slip (effects.friction, law coulomb, mu > 0).
   bool has_coulomb_friction() const {

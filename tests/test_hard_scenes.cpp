@@ -485,7 +485,7 @@ TEST_CASE(
     five += ball;
   }
   five += "]";
-  for (const char* solver : {"schur", "dense_lu", "explicit_inverse"}) {
+  for (const char* solver : {"schur", "aba", "dense_lu", "explicit_inverse"}) {
     for (int balls : {2, 5}) {
       std::vector<std::string> sets = {short_run, std::string("contact.solver=") + solver};
       if (balls == 5) sets.push_back(five);

@@ -165,7 +165,8 @@ ContactOptions read_contact(const Value& contact) {
   out.locate_tolerance = value_or(contact.get("locate_tolerance"), out.locate_tolerance, positive);
   Value solver = contact.get("solver");
   if (solver.present())
-    out.solver = choose(solver, {ConstraintSolver::schur, ConstraintSolver::dense_lu,
+    out.solver = choose(solver, {ConstraintSolver::automatic, ConstraintSolver::schur,
+                                 ConstraintSolver::aba, ConstraintSolver::dense_lu,
                                  ConstraintSolver::explicit_inverse});
   out.touch_distance = value_or(contact.get("touch_distance"), out.touch_distance, positive);
   out.separation_velocity =

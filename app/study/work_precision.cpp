@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "engine/contact/constrained_dynamics.hpp"
 #include "engine/run/simulator.hpp"
 
 namespace elbowsim::study {
@@ -281,8 +282,8 @@ Json work_precision(const Scenario& scenario, const WorkPrecisionOptions& option
       alternative("simulation.dynamics", to_string(d), m);
     }
     if (scene.effects.contact) {
-      for (ConstraintSolver s : {ConstraintSolver::schur, ConstraintSolver::dense_lu,
-                                 ConstraintSolver::explicit_inverse}) {
+      for (ConstraintSolver s : {ConstraintSolver::schur, ConstraintSolver::aba,
+                                 ConstraintSolver::dense_lu, ConstraintSolver::explicit_inverse}) {
         Model m = scene;
         m.contact.solver = s;
         alternative("contact.solver", to_string(s), m);
@@ -296,7 +297,7 @@ Json work_precision(const Scenario& scenario, const WorkPrecisionOptions& option
     for (Json& a : alternatives) {
       const std::string key = a["key"], value = a["value"];
       a["scene_default"] = (key == "simulation.dynamics" && value == to_string(scene.options.dynamics)) ||
-                           (key == "contact.solver" && value == to_string(scene.contact.solver)) ||
+                           (key == "contact.solver" && value == to_string(constraint_solver(scene))) ||
                            (key == "contact.events" && value == to_string(scene.contact.events));
     }
   }

@@ -27,11 +27,7 @@ void prepare_mechanics(const Model& model, Data& data) {
   else
     motor_stage(model, data, qd, data.current);
   applied_torques(model, data, qd);
-  if (model.options.dynamics == DynamicsMethod::walker_orin)
-    mass_matrix_walker_orin(model, data);
-  else
-    mass_matrix_crba(model, data);
-  bias_torques(model, data, qd);
+  constrained_mechanics(model, data, qd);
 }
 
 // Whether slot k's row n^T J can move it along the normal at all: a ball whose

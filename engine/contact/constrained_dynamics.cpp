@@ -3,42 +3,16 @@
 #include <Eigen/LU>
 #include <Eigen/QR>
 
+#include "engine/contact/aba_contact.hpp"
 #include "engine/contact/min_norm_solve.hpp"
+#include "engine/dynamics/aba.hpp"
+#include "engine/dynamics/crba.hpp"
 #include "engine/dynamics/joint_friction.hpp"
+#include "engine/dynamics/walker_orin.hpp"
 
 namespace elbowsim {
 
 namespace {
-
-// f = A^-1 rhs. Cholesky (LU with friction, A is then not symmetric) while
-// the smallest pivot stays above rank_tolerance relative to the largest;
-// below it the rows are dependent, and a complete orthogonal decomposition
-// gives the minimum-norm f.
-void rank_revealing_solve(const Model& model, Data& data) {
-  ContactData& c = data.contact;
-  SolverWorkspace& ws = c.solver(c.rows());
-  const double tol = model.contact.rank_tolerance;
-  bool independent;
-  if (model.effects.friction) {
-    ws.lu.compute(c.A);
-    const auto pivots = ws.lu.matrixLU().diagonal().cwiseAbs();
-    independent = pivots.minCoeff() > tol * pivots.maxCoeff();
-    if (independent) c.fn = ws.lu.solve(c.rhs);
-  } else {
-    ws.llt.compute(c.A);
-    const auto pivots = ws.llt.matrixLLT().diagonal().cwiseAbs2();
-    independent = ws.llt.info() == Eigen::Success && pivots.minCoeff() > tol * pivots.maxCoeff();
-    if (independent) {
-      c.fn = c.rhs;
-      ws.llt.solveInPlace(c.fn);
-    }
-  }
-  c.dependent = !independent;
-  if (independent) return;
-  ws.cod.compute(c.A);
-  ws.cod.setThreshold(tol);
-  min_norm_solve(ws, c.rhs, c.fn);
-}
 
 // Zeroes the stuck joints' rows of an n-row matrix or vector.
 template <class Rows>
@@ -77,7 +51,7 @@ void schur(const Model& model, Data& data, ConstVec tau) {
   c.A.noalias() = c.Y.transpose() * *Z;
   c.rhs = c.gamma;
   c.rhs.noalias() -= c.Y.transpose() * c.a_free;
-  rank_revealing_solve(model, data);
+  rank_revealing_solve(model, c);
   data.qdd = c.a_free;
   data.qdd.noalias() += *Z * c.fn;
   data.llt.matrixU().solveInPlace(data.qdd);
@@ -109,21 +83,52 @@ void explicit_inverse(Data& data, ConstVec tau) {
 
 }  // namespace
 
+ConstraintSolver constraint_solver(const Model& model) {
+  ConstraintSolver s = model.contact.solver;
+  // auto: aba from the crossover on; the paper's pipeline (Walker-Orin's M,
+  // then the Schur complement) stays whole when simulation.dynamics asks for it.
+  if (s == ConstraintSolver::automatic)
+    s = model.dof >= kAbaCrossover && model.options.dynamics != DynamicsMethod::walker_orin
+            ? ConstraintSolver::aba
+            : ConstraintSolver::schur;
+  if (s == ConstraintSolver::aba && model.effects.joint_friction) s = ConstraintSolver::schur;
+  return s;
+}
+
+void constrained_mechanics(const Model& model, Data& data, ConstVec qd) {
+  if (constraint_solver(model) == ConstraintSolver::aba)
+    articulated_inertias(model, data);
+  else if (model.options.dynamics == DynamicsMethod::walker_orin)
+    mass_matrix_walker_orin(model, data);
+  else
+    mass_matrix_crba(model, data);
+  bias_torques(model, data, qd);
+}
+
 void solve_constrained(const Model& model, Data& data, ConstVec tau, ConstraintSolver method) {
+  if (method == ConstraintSolver::automatic) method = constraint_solver(model);
   if (any_joint_stuck(model, data)) method = ConstraintSolver::schur;  // the one that locks joints
   // Dependent rows (found by the step start's solve) make M* singular: the
   // explicit inverse returns NaN and the dense LU an arbitrary split. The
   // Schur solve gives the minimum-norm one (the warning says so).
-  if (data.contact.dependent) method = ConstraintSolver::schur;
+  // The aba path forms the same A and gives the same minimum-norm split.
+  if (data.contact.dependent && method != ConstraintSolver::aba) method = ConstraintSolver::schur;
   switch (method) {
+    case ConstraintSolver::automatic:  // resolved above
     case ConstraintSolver::schur: schur(model, data, tau); return;
+    case ConstraintSolver::aba: aba_contact_solve(model, data, tau); return;
     case ConstraintSolver::dense_lu: dense_lu(data, tau); return;
     case ConstraintSolver::explicit_inverse: explicit_inverse(data, tau); return;
   }
 }
 
 void contact_lcp_terms(const Model& model, Data& data, ConstVec tau) {
-  schur(model, data, tau);  // leaves A and rhs = gamma - Jc qdd_free
+  // Either solve leaves A, rhs = gamma - Jc qdd_free, and the rank decision
+  // (data.contact.dependent) that the active set reads.
+  if (constraint_solver(model) == ConstraintSolver::aba)
+    aba_contact_solve(model, data, tau);
+  else
+    schur(model, data, tau);
   data.contact.lcp_b = -data.contact.rhs;
 }
 

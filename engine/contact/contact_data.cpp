@@ -36,6 +36,7 @@ ContactData::ContactData(ContactGeometry g, int links, int boxes, int n, int cap
     const Primitive& p = geometry.primitives[static_cast<std::size_t>(s.primitive)];
     detected[k].local = s.part == ContactSlot::Part::end_b ? p.b : p.a;
   }
+  detected_q = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
   normal.assign(slots, Eigen::Vector3d::UnitZ());
   surface.assign(slots, Eigen::Vector3d::Zero());
   feature.assign(slots, BoxFeature::face);

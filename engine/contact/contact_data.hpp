@@ -100,6 +100,7 @@ struct ContactData {
   // --- detection (contact/detection.hpp), at the last detected state -------
   std::vector<SlotContact> detected;      // [slots]
   std::vector<int> near_pairs;            // primitive * boxes + box, near at the last detection
+  Eigen::VectorXd detected_q;             // [n] the q of the last detection (NaN: none yet)
   // --- the step's frames: the feature each touching slot rests on, frozen
   // when the step starts (freeze_frames, detection.hpp); its rows follow the
   // ball on that feature (a face's plane, an edge's line, a corner's point).

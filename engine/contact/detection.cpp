@@ -63,7 +63,13 @@ void detect_contacts(const Model& model, Data& data) {
   const StateLayout s(model);
   ContactData& c = data.contact;
   const ContactGeometry& g = c.geometry;
-  forward_kinematics(model, data, data.x.segment(s.q(), s.n));
+  const auto q = data.x.segment(s.q(), s.n);
+  forward_kinematics(model, data, q);
+  // Distances, normals and the near pairs depend on q alone: the detection
+  // that ended the last step stands at the start of the next (unless an
+  // impact's projection or a reset moved q).
+  if (same_bits(q, c.detected_q)) return;
+  c.detected_q = q;
   // Slots of the pairs near at the last detection go back to far; the others are.
   for (int pair : c.near_pairs)
     for (int k = g.first_slot[pair]; k < g.first_slot[pair + 1]; ++k) c.detected[k] = SlotContact{false, kFar};

@@ -12,7 +12,9 @@ namespace elbowsim {
 
 // Forward kinematics at q of data.x, then every slot into
 // data.contact.detected / normal / surface. Needs the run's collision world
-// (data.contact.world, built by reset()). Allocates nothing.
+// (data.contact.world, built by reset()). Allocates nothing. At the q of the
+// last detection (bit for bit: a step starting where the last one ended) it
+// keeps that detection's results and costs a comparison.
 void detect_contacts(const Model& model, Data& data);
 
 // The frames of the step (data.contact.normal, surface, feature, edge) from

@@ -57,4 +57,31 @@ void min_norm_solve(SolverWorkspace& ws, ConstVec b, Eigen::Ref<Eigen::VectorXd>
   x = cod.colsPermutation() * c;
 }
 
+void rank_revealing_solve(const Model& model, ContactData& c) {
+  c.dependent = false;
+  if (c.rows() == 0) return;  // no rows, no forces
+  SolverWorkspace& ws = c.solver(c.rows());
+  const double tol = model.contact.rank_tolerance;
+  bool independent;
+  if (model.effects.friction) {
+    ws.lu.compute(c.A);
+    const auto pivots = ws.lu.matrixLU().diagonal().cwiseAbs();
+    independent = pivots.minCoeff() > tol * pivots.maxCoeff();
+    if (independent) c.fn = ws.lu.solve(c.rhs);
+  } else {
+    ws.llt.compute(c.A);
+    const auto pivots = ws.llt.matrixLLT().diagonal().cwiseAbs2();
+    independent = ws.llt.info() == Eigen::Success && pivots.minCoeff() > tol * pivots.maxCoeff();
+    if (independent) {
+      c.fn = c.rhs;
+      ws.llt.solveInPlace(c.fn);
+    }
+  }
+  c.dependent = !independent;
+  if (independent) return;
+  ws.cod.compute(c.A);
+  ws.cod.setThreshold(tol);
+  min_norm_solve(ws, c.rhs, c.fn);
+}
+
 }  // namespace elbowsim

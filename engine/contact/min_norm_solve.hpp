@@ -6,6 +6,7 @@
 #pragma once
 
 #include "engine/contact/contact_data.hpp"
+#include "engine/model.hpp"
 
 namespace elbowsim {
 
@@ -13,5 +14,13 @@ namespace elbowsim {
 // ws.cod.compute(A) and ws.cod.setThreshold(...)): x [m] = A^+ b [m].
 // Uses ws.work and ws.work_cols; x must not be one of them.
 void min_norm_solve(SolverWorkspace& ws, ConstVec b, Eigen::Ref<Eigen::VectorXd> x);
+
+// The contact forces of the p x p system c.A f = c.rhs (p = c.rows()) into
+// c.fn: Cholesky (LU with friction, A is then not symmetric) while the
+// smallest pivot stays above model.contact.rank_tolerance relative to the
+// largest; below it the rows are dependent (c.dependent), and a complete
+// orthogonal decomposition gives the minimum-norm f. Shared by every path
+// that forms A (constrained_dynamics.hpp), so all give the same convention.
+void rank_revealing_solve(const Model& model, ContactData& c);
 
 }  // namespace elbowsim

@@ -62,4 +62,41 @@ void forward_dynamics_aba(const Model& model, Data& data, ConstVec qd,
   acceleration_pass(model, data, qdd);
 }
 
+// Pass 2 alone (Featherstone's I^A_i, projected): U_i = I^A_i S_i, D_i = S_i^T U_i + Jm_i,
+// and I^A_{i-1} += I^A_i - U_i U_i^T / D_i. The parent's own spatial inertia
+// is added on the way in, so one 6 x 6 accumulator serves the whole chain.
+void articulated_inertias(const Model& model, Data& data) {
+  Matrix6d Ia = Matrix6d::Zero();
+  for (int i = model.dof - 1; i >= 0; --i) {
+    const Vector6d S = revolute_subspace(data.axis[i], data.origin[i]);
+    data.motion_subspace[i] = S;
+    add_spatial_inertia(model.links[i].mass, data.com[i], data.inertia[i], Ia);
+    const Vector6d U = Ia * S;
+    const double D = S.dot(U) + (model.has_armature() ? model.armature[i] : 0.0);
+    data.U[i] = U;
+    data.D[i] = D;
+    Ia.noalias() -= U * (U.transpose() / D);
+  }
+}
+
+// ABA's passes 2 and 3 with zero velocity and gravity, the inertias known:
+// inward u_i = tau_i - S_i^T p, p += U_i u_i / D_i (the force the subtree
+// passes to its parent); outward x_i = (u_i - U_i^T a) / D_i, a += S_i x_i.
+void aba_response(const Model& model, const Data& data, ConstVec tau,
+                  Eigen::Ref<Eigen::VectorXd> x) {
+  int last = model.dof - 1;
+  while (last >= 0 && tau[last] == 0.0) x[last--] = 0.0;  // u = 0 there, p stays 0
+  Vector6d p = Vector6d::Zero();
+  for (int i = last; i >= 0; --i) {
+    const double u = tau[i] - data.motion_subspace[i].dot(p);
+    x[i] = u;
+    p += data.U[i] * (u / data.D[i]);
+  }
+  Vector6d a = Vector6d::Zero();
+  for (int i = 0; i < model.dof; ++i) {
+    x[i] = (x[i] - data.U[i].dot(a)) / data.D[i];
+    a += data.motion_subspace[i] * x[i];
+  }
+}
+
 }  // namespace elbowsim

@@ -1,25 +1,31 @@
 #include "engine/dynamics/kinematics.hpp"
 
-#include <Eigen/Geometry>
+#include <cmath>
 
 namespace elbowsim {
 
 void forward_kinematics(const Model& model, Data& data, ConstVec q) {
+  if (data.kinematics_model == model.id && same_bits(q, data.kinematics_q)) return;
   Eigen::Matrix3d parent_rotation = model.base.linear();
   Eigen::Vector3d parent_origin = model.base.translation();
   for (int i = 0; i < model.dof; ++i) {
     const Joint& joint = model.joints[i];
+    const JointRotation& r = model.joint_rotations[static_cast<std::size_t>(i)];
     const Link& link = model.links[i];
-    // Link frame i = parent frame * fixed origin * rotation about the axis by q_i.
-    const Eigen::Matrix3d joint_frame = parent_rotation * joint.origin_rotation;
+    // Link frame i = parent frame * fixed origin * rotation about the axis by
+    // q_i, the last two by Rodrigues (model.hpp, JointRotation).
+    const double c = std::cos(q[i]), s = std::sin(q[i]);
+    const Eigen::Matrix3d local = r.fixed + c * r.cosine + s * r.sine;
     data.origin[i] = parent_origin + parent_rotation * joint.origin_position;
-    data.rotation[i] = joint_frame * Eigen::AngleAxisd(q[i], joint.axis).toRotationMatrix();
-    data.axis[i] = joint_frame * joint.axis;  // the axis is fixed by its own rotation
+    data.rotation[i].noalias() = parent_rotation * local;
+    data.axis[i].noalias() = parent_rotation * r.axis;  // the axis is fixed by its own rotation
     data.com[i] = data.origin[i] + data.rotation[i] * link.com;
     data.inertia[i] = data.rotation[i] * link.inertia * data.rotation[i].transpose();
     parent_rotation = data.rotation[i];
     parent_origin = data.origin[i];
   }
+  data.kinematics_q = q;
+  data.kinematics_model = model.id;
 }
 
 Eigen::Vector3d point_position(const Data& data, int link, const Eigen::Vector3d& point) {

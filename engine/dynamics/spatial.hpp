@@ -25,6 +25,22 @@ inline Matrix6d spatial_inertia(double m, const Eigen::Vector3d& c, const Eigen:
   return I;
 }
 
+// I += spatial_inertia(m, c, Ic), written out: C C^T = (c.c) 1 - c c^T, so
+// no 3 x 3 products and no temporary 6 x 6.
+inline void add_spatial_inertia(double m, const Eigen::Vector3d& c, const Eigen::Matrix3d& Ic,
+                                Matrix6d& I) {
+  const Eigen::Vector3d mc = m * c;
+  const double mcc = mc.dot(c);
+  I.topLeftCorner<3, 3>() += Ic - mc * c.transpose();
+  I.topLeftCorner<3, 3>().diagonal().array() += mcc;
+  // m C = m skew(c) (upper right), m C^T = -m skew(c) (lower left).
+  I(0, 4) -= mc.z(); I(0, 5) += mc.y(); I(1, 3) += mc.z();
+  I(1, 5) -= mc.x(); I(2, 3) -= mc.y(); I(2, 4) += mc.x();
+  I(4, 0) -= mc.z(); I(5, 0) += mc.y(); I(3, 1) += mc.z();
+  I(5, 1) -= mc.x(); I(3, 2) -= mc.y(); I(4, 2) += mc.x();
+  I(3, 3) += m; I(4, 4) += m; I(5, 5) += m;
+}
+
 // Motion subspace of a revolute joint with unit axis z through point o.
 inline Vector6d revolute_subspace(const Eigen::Vector3d& z, const Eigen::Vector3d& o) {
   Vector6d S;

@@ -6,10 +6,8 @@
 #include "engine/contact/constraint_rows.hpp"
 #include "engine/dynamics/applied_torques.hpp"
 #include "engine/dynamics/joint_friction.hpp"
-#include "engine/dynamics/crba.hpp"
 #include "engine/dynamics/forward_dynamics.hpp"
 #include "engine/dynamics/kinematics.hpp"
-#include "engine/dynamics/walker_orin.hpp"
 #include "engine/dynamics/motor.hpp"
 #include "engine/control/controller.hpp"
 #include "engine/run/state_layout.hpp"
@@ -75,11 +73,9 @@ void arm_accelerations(const Model& model, Data& data, ConstVec qd) {
       forward_dynamics(model, data, qd, data.actuation, data.qdd);
     return;
   }
-  if (model.options.dynamics == DynamicsMethod::walker_orin)
-    mass_matrix_walker_orin(model, data);
-  else
-    mass_matrix_crba(model, data);  // aba has no M to hand: contacts factor CRBA's
-  bias_torques(model, data, qd);
+  // M (CRBA's when the dynamics are aba) or, with the aba solver, the
+  // articulated inertias; and B_J.
+  constrained_mechanics(model, data, qd);
   constraint_rows(model, data, qd);
   solve_constrained(model, data, data.tau_applied);
   if (model.effects.joint_friction) holding_torques(model, data);

@@ -63,3 +63,28 @@ TEST_CASE("Jdot*qd == d/dt (J(q + t qd) qd) by finite differences; velocity == J
     CHECK(approx(point_velocity(data, link, p, qd), velocity_at(0.0), 1e-12));
   }
 }
+
+TEST_CASE("forward_kinematics at the last call's q reuses it; another q or model computes anew") {
+  const Model a = elbowsim::testing::random_chain(6, 91), b = elbowsim::testing::random_chain(6, 92);
+  const Eigen::VectorXd q1 = Eigen::VectorXd::Random(6), q2 = Eigen::VectorXd::Random(6);
+  Data fresh(a), data(a);
+  forward_kinematics(a, fresh, q1);
+  forward_kinematics(a, data, q2);
+  forward_kinematics(a, data, q1);  // back to q1: computed, not the q2 frames
+  forward_kinematics(a, data, q1);  // the same q: kept
+  for (int i = 0; i < 6; ++i) {
+    CHECK(data.rotation[i] == fresh.rotation[i]);  // bit for bit
+    CHECK(data.origin[i] == fresh.origin[i]);
+    CHECK(data.inertia[i] == fresh.inertia[i]);
+  }
+  // Same q, another model (same sizes): its own frames.
+  Data other(b);
+  forward_kinematics(b, other, q1);
+  forward_kinematics(b, data, q1);
+  for (int i = 0; i < 6; ++i) CHECK(data.rotation[i] == other.rotation[i]);
+  // A joint angle of -0 is not +0 to the test (bit for bit), yet gives the same frames.
+  Eigen::VectorXd zero = Eigen::VectorXd::Zero(6), minus_zero = -zero;
+  forward_kinematics(a, data, zero);
+  forward_kinematics(a, fresh, minus_zero);
+  CHECK(data.rotation[5].isApprox(fresh.rotation[5], 1e-15));
+}

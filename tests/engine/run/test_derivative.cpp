@@ -6,7 +6,9 @@
 
 #include "engine/run/derivative.hpp"
 #include "engine/run/state_layout.hpp"
+#include "support/allocations.hpp"
 #include "support/approx.hpp"
+#include "support/models.hpp"
 #include "support/scenes.hpp"
 
 using namespace elbowsim;
@@ -95,4 +97,38 @@ TEST_CASE("nonstiff_rates with a hand force: J^T F on the joints, F.v its own in
   nonstiff_rates(m, data, 0.0, x, N);
   CHECK(approx(N[s.external], f * 0.5 * 1.5, 0, 1e-14));
   CHECK(std::abs(N[s.energy]) < 1e-14);  // no input torques: E_in does not count the force
+}
+
+TEST_CASE("a derivative evaluation allocates nothing: s = 2..60, p = 0..4 resting elbows, every solver") {
+  // Random chains with full motors and p elbows resting on random planes: forward
+  // dynamics (p = 0), the Schur path and the aba path. Counted: the C allocator
+  // (Eigen allocates there, unseen by operator new) and operator new.
+  for (int n : {2, 7, 15, 30, 60}) {
+    for (int p : {0, 1, 2, 4}) {
+      for (ConstraintSolver solver : {ConstraintSolver::schur, ConstraintSolver::aba}) {
+        CAPTURE(n);
+        CAPTURE(p);
+        CAPTURE(std::string(to_string(solver)));
+        Model m = random_chain(n, static_cast<std::uint32_t>(300 + n));
+        for (int k = 0; k < p; ++k)
+          m.elbows.push_back({"e" + std::to_string(k), (k + 1) * (n - 1) / p, Eigen::Vector3d(0.1, 0, 0), 0.03});
+        m.table = {TableBox{}};
+        m.effects.contact = true;
+        m.contact.solver = solver;
+        finalize(m);
+        Data data(m);
+        const StateLayout s(m);
+        Eigen::VectorXd x = Eigen::VectorXd::Random(s.size), out = Eigen::VectorXd::Zero(s.size);
+        for (int k = 0; k < p; ++k) {
+          data.contact.active.push_back(k);
+          data.contact.normal[static_cast<std::size_t>(k)] = Eigen::Vector3d::Random().normalized();
+        }
+        const long mallocs = malloc_count(), news = allocation_count();
+        for (int r = 0; r < 3; ++r) nonstiff_rates(m, data, 0.0, x, out);
+        CHECK(malloc_count() - mallocs == 0);
+        CHECK(allocation_count() - news == 0);
+        CHECK(out.allFinite());
+      }
+    }
+  }
 }

@@ -14,7 +14,9 @@
 #include "engine/run/state_layout.hpp"
 #include "engine/run/step.hpp"
 #include "support/allocations.hpp"
+#include "engine/control/plan.hpp"
 #include "support/contact_scenes.hpp"
+#include "support/experiment_scenes.hpp"
 #include "support/scenes.hpp"
 
 using namespace elbowsim;
@@ -201,4 +203,31 @@ TEST_CASE("a contact step calls the C allocator zero times: Eigen's allocations 
       CHECK(counts.releases >= 2);
     }
   }
+}
+
+TEST_CASE("the experiment's contact steps allocate nothing: 1,000 steps, controller and plan on") {
+  // The paper's experiment (a 4-link arm resting its elbow, tracking a hand path
+  // with PD + feed-forward): every derivative evaluation runs the control law, the
+  // motors and the constrained solve. Counted: operator new, the C allocator
+  // (Eigen), Bullet's allocator, and Eigen's own guard (debug builds).
+  const ExperimentScene scene = WritingArm{}.scene();
+  const Model& m = scene.model;
+  Data data(m);
+  data.controller = make_controller(m, scene.experiment);
+  reset(m, data);
+  long steps = 0, resting = 0;
+  const long news = allocation_count(), mallocs = malloc_count();
+  const long bullet = CollisionWorld::bullet_allocations();
+  Eigen::internal::set_is_malloc_allowed(false);
+  for (; steps < 1000 && !data.failure; ++steps) {
+    step(m, data);
+    resting += !data.contact.active.empty();
+  }
+  Eigen::internal::set_is_malloc_allowed(true);
+  CHECK(allocation_count() - news == 0);
+  CHECK(malloc_count() - mallocs == 0);
+  CHECK(CollisionWorld::bullet_allocations() == bullet);
+  CHECK_FALSE(data.failure);
+  CHECK(steps == 1000);
+  CHECK(resting >= 900);  // the elbow rested: the constrained solve ran
 }
