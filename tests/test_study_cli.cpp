@@ -77,6 +77,18 @@ TEST_CASE("study: safe folder names, cases.json maps them to keys, --list shows 
   CHECK(fs::exists(dir / "out" / "003-duration_0.2-q_-0.2_0.1" / "summary.json"));
   CHECK_FALSE(fs::exists(dir / "out" / "003-duration_0.2-q_-0.2_0.1" / "video.mp4"));  // no videos in studies
   CHECK(study(file, dir / "out", "--list").output.find("003-duration_0.2-q_-0.2_0.1  [done]") != std::string::npos);
+  // Videos only on request, for one case: run again with its video and report.
+  CHECK(study(file, dir / "out", "--video").exit_code == 2);
+  const Outcome v = study(file, dir / "out", "--case 003-duration_0.2-q_-0.2_0.1 --video --set render.size=[160,120]");
+  INFO(v.output);
+  CHECK(v.exit_code == 2);  // --set changes the design: refused, the folder holds another study
+  const Outcome video = study(file, dir / "out", "--case 003-duration_0.2-q_-0.2_0.1 --video");
+  INFO(video.output);
+  REQUIRE(video.exit_code == 0);
+  CHECK(fs::file_size(dir / "out" / "003-duration_0.2-q_-0.2_0.1" / "video.mp4") > 1000);
+  CHECK(fs::exists(dir / "out" / "003-duration_0.2-q_-0.2_0.1" / "report.html"));
+  CHECK(fs::exists(dir / "out" / "003-duration_0.2-q_-0.2_0.1" / "case.json"));
+  CHECK_FALSE(fs::exists(dir / "out" / "002-duration_0.2-q_0.5_0.3" / "video.mp4"));
   // Another design into the same folder is refused.
   const fs::path other = study_file(dir, "  simulation.duration: [0.1, 0.3]\n");
   const Outcome refused = study(other, dir / "out", "--jobs 1");
@@ -253,4 +265,15 @@ TEST_CASE("compare --label names the runs; the keys that differ are listed") {
   CHECK(json["differing_keys"]["simulation.step"]["fine"] == "5.0e-4");
   CHECK(run_elbowsim("compare " + runs + " --label one").exit_code == 2);
   CHECK(run_elbowsim("compare " + runs + " --label a --label a").exit_code == 2);
+}
+
+TEST_CASE("study: the shipped study files load, with the cases their comments say") {
+  const fs::path dir = scratch("study", "shipped");
+  const std::string studies = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/studies/";
+  for (const auto& [file, cases] : {std::pair{"task_speed.yaml", 6}, {"speed_elbow_draws.yaml", 90}}) {
+    const Outcome list = run_elbowsim("study " + studies + file + " --list --out " + (dir / "x").string());
+    INFO(list.output);
+    CHECK(list.exit_code == 0);
+    CHECK(count_lines(list.output) == 1 + cases);
+  }
 }

@@ -67,6 +67,7 @@ int run_study_case(const StudyPlan& plan, const study::CaseSpec& c, bool video) 
         std::filesystem::create_directories(runs);
         continue;
       }
+      if (video) scenario.output.video = true;  // --case K --video: this case's videos, whatever the file says
       RunArguments args;
       args.scenario = plan.design.scenario;
       args.render = video;
