@@ -102,12 +102,16 @@ TEST_CASE("urdf: the Panda-like URDF and the same arm in the general form give t
   REQUIRE(ra.trajectory.rows() == rb.trajectory.rows());
   CHECK(ra.trajectory.rows() == 1001);
   double trajectory = 0;
+  std::string where;
   for (std::size_t c = 0; c < ra.trajectory.columns().size(); ++c)
     for (std::size_t r = 0; r < ra.trajectory.rows(); ++r) {
       const double x = ra.trajectory.at(r, c), y = rb.trajectory.at(r, c);
-      trajectory = std::max(trajectory, std::abs(x - y) / std::max(1.0, std::abs(x)));
+      const double d = std::abs(x - y) / std::max(1.0, std::abs(x));
+      if (d > trajectory)
+        trajectory = d, where = ra.trajectory.columns()[c].name + " at row " + std::to_string(r);
     }
-  MESSAGE("largest relative difference over the 1 s trajectory: " << trajectory);
+  MESSAGE("largest relative difference over the 1 s trajectory: " << trajectory << " (" << where
+                                                                    << ")");
   CHECK(trajectory <= 1e-12);
 }
 

@@ -7,6 +7,7 @@
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include <cmath>
 #include <mutex>
 
 #include "app/scenario/checks.hpp"
@@ -37,12 +38,23 @@ class Collector : public console_bridge::OutputHandler {
   std::vector<std::string> lines;
 };
 
+// urdfdom keeps a rotation as a quaternion only: an angle read back from it
+// is off by ~1e-16 rad (pi/2 comes back 2 ulp high). One within 1e-12 rad of
+// a multiple of pi/2, the angles frames are mostly turned by, is taken as that
+// multiple, so that such a URDF and the YAML general form written with the
+// same numbers give the same matrices bit for bit.
+double snapped(double angle) {
+  const double quarter = 1.5707963267948966;  // pi/2
+  const double k = std::round(angle / quarter);
+  return std::abs(angle - k * quarter) <= 1e-12 ? k * quarter : angle;
+}
+
 // The pose as a transform; the rotation through the scenario's own rpy
-// convention (R = Rz Ry Rx), so that a URDF and the YAML general form with the
-// same numbers give the same matrices.
+// convention (R = Rz Ry Rx).
 Eigen::Isometry3d transform(const ::urdf::Pose& p) {
   Eigen::Vector3d rpy;
   p.rotation.getRPY(rpy.x(), rpy.y(), rpy.z());
+  for (int k = 0; k < 3; ++k) rpy[k] = snapped(rpy[k]);
   Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
   out.linear() = loader::rpy_rotation(rpy);
   out.translation() = Eigen::Vector3d(p.position.x, p.position.y, p.position.z);
