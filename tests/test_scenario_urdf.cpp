@@ -255,7 +255,7 @@ TEST_CASE("urdf: validate prints the chain of a good URDF") {
 
 TEST_CASE("urdf: bad URDFs exit 2 naming the URDF file and the element") {
   struct Case {
-    const char* name;
+    std::string name;
     std::string urdf, scenario;
     std::vector<std::string> expected;
   };
