@@ -40,12 +40,14 @@ void schur(const Model& model, Data& data, ConstVec tau) {
     zero_stuck_rows(data, c.Y);
   }
   L.solveInPlace(c.a_free);
-  L.solveInPlace(c.Y);
+  // Eigen's triangular solve binds a reference to coefficient (0, 0) even
+  // with no columns (undefined behaviour on an empty matrix): p = 0 skips it.
+  if (c.Y.cols() > 0) L.solveInPlace(c.Y);
   const Eigen::MatrixXd* Z = &c.Y;  // without friction Jf = Jc
   if (model.effects.friction) {
     c.Z = c.Jf.transpose();
     if (locked) zero_stuck_rows(data, c.Z);
-    L.solveInPlace(c.Z);
+    if (c.Z.cols() > 0) L.solveInPlace(c.Z);
     Z = &c.Z;
   }
   c.A.noalias() = c.Y.transpose() * *Z;
