@@ -188,6 +188,21 @@ TEST_CASE("render frames: output.frames writes numbered PNGs; --no-render writes
   CHECK_FALSE(fs::exists(none / "frames"));
 }
 
+TEST_CASE("OSMesa (and the LLVM it loads) is loaded only by a run that renders") {
+  // The dynamic loader names every library it loads under LD_DEBUG=libs.
+  auto loads_osmesa = [](const std::string& arguments) {
+    const Outcome out = shell("LD_DEBUG=libs " + std::string(ELBOWSIM_BINARY) + " " + arguments);
+    INFO(arguments, "\n", out.output.substr(0, 2000));
+    REQUIRE(out.exit_code == 0);
+    return out.output.find("libOSMesa") != std::string::npos;
+  };
+  CHECK_FALSE(loads_osmesa("--version"));
+  CHECK_FALSE(loads_osmesa("validate " + kElbowRest));
+  const fs::path dir = scratch("render", "lazy_osmesa");
+  CHECK_FALSE(loads_osmesa(short_run(dir, "--no-render --no-report")));
+  CHECK(loads_osmesa(short_run(dir, "--set output.frames=true --no-report")));  // it does render
+}
+
 TEST_CASE("render without ffmpeg on PATH: PNG frames and the command that makes the video") {
   const fs::path dir = scratch("render", "no_ffmpeg");
   REQUIRE(cli(short_run(dir, "")).exit_code == 0);
