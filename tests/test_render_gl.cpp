@@ -258,31 +258,97 @@ TEST_CASE("render: a bad run folder is exit 2 with a clear message, and nothing 
   CHECK_FALSE(fs::exists(ok / "video.mp4"));
 }
 
-TEST_CASE("render panels: two runs side by side, each with its own overlay") {
+// A frame sequence's PNGs, read back.
+std::vector<std::vector<std::uint8_t>> read_frames(const fs::path& folder, int& w, int& h) {
+  std::vector<std::vector<std::uint8_t>> frames;
+  for (int k = 0; fs::exists(folder / frame_file_name(k)); ++k)
+    frames.push_back(read_png(folder / frame_file_name(k), w, h));
+  return frames;
+}
+
+// Left and right RGB images (same height) placed side by side.
+std::vector<std::uint8_t> side_by_side(const std::vector<std::uint8_t>& left, int lw,
+                                       const std::vector<std::uint8_t>& right, int rw, int h) {
+  std::vector<std::uint8_t> out;
+  for (int y = 0; y < h; ++y) {
+    out.insert(out.end(), left.begin() + std::ptrdiff_t(y) * lw * 3,
+               left.begin() + std::ptrdiff_t(y + 1) * lw * 3);
+    out.insert(out.end(), right.begin() + std::ptrdiff_t(y) * rw * 3,
+               right.begin() + std::ptrdiff_t(y + 1) * rw * 3);
+  }
+  return out;
+}
+
+TEST_CASE("render side by side: its frames are the runs' own frames placed side by side") {
+  // Left: the fixture's 1 s; right: its first 0.6 s (so it ends first and
+  // its last frame stays), another width and title.
   const Model model = render_fixture::arm();
-  const Recording rec = render_fixture::recording();
+  const Recording full = render_fixture::recording();
+  Recording cut = full;
+  cut.values.resize(7 * std::size_t(cut.layout.size()));
   RenderSettings settings;
   settings.width = kWidth;
   settings.height = kHeight;
   settings.fps = 5;
-  const FrameSource left(model, rec, settings, "left");
-  const FrameSource right(model, rec, settings, "right");
-  const fs::path dir = scratch("render", "panels");
-  const RenderStats stats = render_panels({&left, &right}, settings, {dir, false, true});
-  CHECK(stats.frames == 6);  // 1 s at 5 fps
-  CHECK(stats.frames_written);
-  int w = 0, h = 0;
-  const std::vector<std::uint8_t> rgb = read_png(dir / "frames" / "frame_00006.png", w, h);
-  REQUIRE(w == kWidth);
-  // The overlay's dark box at the top left of each half; the background below.
-  auto brightness = [&](int x, int y) {
-    const std::size_t i = (std::size_t(y) * std::size_t(w) + std::size_t(x)) * 3;
-    return rgb[i] + rgb[i + 1] + rgb[i + 2];
-  };
-  CHECK(brightness(7, 7) < 3 * 140);
-  CHECK(brightness(kWidth / 2 + 7, 7) < 3 * 140);
-  CHECK(brightness(kWidth / 2 - 2, kHeight - 2) > 3 * 200);
-  CHECK(brightness(kWidth - 2, kHeight - 2) > 3 * 200);
+  RenderSettings narrow = settings;
+  narrow.width = 120;
+  const FrameSource left(model, full, settings, "left");
+  const FrameSource right(model, cut, narrow, "right");
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    const fs::path dir = scratch("render", "side_by_side_" + std::to_string(threads));
+    for (const char* sub : {"left", "right", "both"}) fs::create_directories(dir / sub);
+    const RenderResults results =
+        render_jobs({{&left, settings, {dir / "left", false, true}},
+                     {&right, narrow, {dir / "right", false, true}}},
+                    RenderRequest{dir / "both", false, true}, threads);
+    REQUIRE(results.side_by_side);
+    CHECK(results.jobs[0].error == "");
+    CHECK(results.side_by_side->error == "");
+    CHECK(results.jobs[0].frames == 6);  // 1 s at 5 fps
+    CHECK(results.jobs[1].frames == 4);  // 0.6 s
+    CHECK(results.side_by_side->frames == 6);
+    CHECK(results.side_by_side->width == kWidth + 120);
+    int lw = 0, rw = 0, bw = 0, h = 0;
+    const auto l = read_frames(dir / "left" / "frames", lw, h);
+    const auto r = read_frames(dir / "right" / "frames", rw, h);
+    const auto b = read_frames(dir / "both" / "frames", bw, h);
+    REQUIRE(l.size() == 6);
+    REQUIRE(r.size() == 4);
+    REQUIRE(b.size() == 6);
+    REQUIRE(bw == lw + rw);
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      CAPTURE(k);
+      // Pixel for pixel; the right run's last frame stays once it has ended.
+      CHECK(b[k] == side_by_side(l[k], lw, r[std::min(k, r.size() - 1)], rw, h));
+    }
+    CHECK(l[1] != l[3]);  // the frames do differ from each other
+  }
+}
+
+TEST_CASE("run with variants: compare/frames are the variants' frames side by side") {
+  const fs::path dir = scratch("render", "variants_side_by_side");
+  const Outcome run = cli(
+      "run " + std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_experiment.yaml --out " +
+      dir.string() +
+      " --set simulation.duration=0.4 --set 'render.size=[160, 96]' --set render.fps=10"
+      " --set output.frames=true --set output.video=false");
+  INFO(run.output);
+  REQUIRE(run.exit_code == 0);
+  int w = 0, h = 0, cw = 0;
+  const auto on = read_frames(dir / "elbow_on" / "frames", w, h);
+  const auto off = read_frames(dir / "elbow_off" / "frames", w, h);
+  const auto both = read_frames(dir / "compare" / "frames", cw, h);
+  REQUIRE(on.size() == 5);
+  REQUIRE(off.size() == 5);
+  REQUIRE(both.size() == 5);
+  CHECK(cw == 2 * w);
+  for (std::size_t k = 0; k < both.size(); ++k) {
+    CAPTURE(k);
+    CHECK(both[k] == side_by_side(on[k], w, off[k], w, h));
+  }
+  CHECK(on[4] != off[4]);
+  CHECK_FALSE(fs::exists(dir / "compare" / "video.mp4"));
 }
 
 TEST_CASE("render with an ffmpeg that fails: exit 1 with its message, nothing left behind") {
