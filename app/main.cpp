@@ -22,10 +22,15 @@ constexpr const char* kUsage = R"(usage:
   elbowsim render RUN_DIR [--camera VIEW] [--follow hand] [--size WxH] [--fps N]
                                                             re-render a saved run (no simulation)
   elbowsim report RUN_DIR [--expect EXPR ...]               rebuild report.html (no simulation)
-  elbowsim compare RUN_DIR RUN_DIR ... [--out DIR] [--expect EXPR ...]
+  elbowsim compare RUN_DIR RUN_DIR ... [--label L ...] [--out DIR] [--expect EXPR ...]
                                                             compare saved runs in one report
   elbowsim montecarlo SCENARIO [--samples N] [--seed S] [--jobs J] [--out DIR] [--set ...]
                        [--case AXIS=LEVEL,...] [--no-report] draw the uncertain plant N times
+  elbowsim study STUDY [--jobs N] [--shard I/N] [--list] [--case K [--video]] [--slurm] [--k8s]
+                       [--tasks N] [--out DIR] [--set ...]   a study file's cases (a grid or list
+                                                            over keys, optionally x Monte Carlo draws)
+  elbowsim study SCENARIO --grid KEY=V1,V2,... [--grid ...] [--draws N] [--seed S] [study options]
+  elbowsim merge DIR... [--out DIR]                         one table and report of a study's cases
   elbowsim accuracy SCENARIO [--methods M,...] [--points N] [--repeats R] [--variant V]
                        [--no-alternatives] [--out DIR] [--set ...]
                                                             work-precision study: error vs CPU time
@@ -50,6 +55,13 @@ DIR/samples.csv, montecarlo.json and report.html (DIR default: output.folder/mon
 --jobs defaults to the machine's cores. With a study: section, the same for every case
 (one level of each axis) in DIR/<case>/, plus DIR/study.csv, study.json and report.html;
 --case task=loops,speed=fast runs only the cases with those levels.
+study writes DIR/NNN-label/ per case (NNN its index; DIR/cases.json maps folders to keys;
+DIR default: output.folder/<study name>), skips finished cases (DIR/<case>/case.json),
+runs --jobs cases at once as processes, and no videos (--case K --video: that one).
+--shard I/N runs cases I-1, I-1+N, ...; --slurm writes DIR/submit.sh (a job array,
+SLURM_ARRAY_TASK_ID picks the shard), --k8s DIR/job.yaml (an Indexed Job). merge writes
+DIR/table.csv (every run, no timings: the same bytes however the cases ran), points.csv
+(means and 95 % intervals over draws) and report.html. scenarios/README.md, "Study files".
 accuracy runs each method (euler, semi_implicit_euler, rk4: steps step/m, m = 1,2,3,4,6,8;
 dopri5, ros34pw2: rtol 1e-3.../1e-2...) against a dopri5 rtol 1e-11 reference and writes
 DIR/work_precision.csv, accuracy.json (with the verdict), report.html and plots/
@@ -85,7 +97,18 @@ cxxopts::Options make_options() {
       "points", "accuracy: settings per method", cxxopts::value<std::string>())(
       "repeats", "accuracy: timings per setting", cxxopts::value<std::string>())(
       "variant", "accuracy: the one variant to study", cxxopts::value<std::string>())(
-      "no-alternatives", "accuracy: skip the dynamics/solver/event-mode timings");
+      "no-alternatives", "accuracy: skip the dynamics/solver/event-mode timings")(
+      "grid", "study: KEY=V1,V2,... over a scenario (repeatable)",
+      cxxopts::value<std::vector<std::string>>())(
+      "draws", "study: Monte Carlo draws per point", cxxopts::value<std::string>())(
+      "shard", "study: run shard I of N (I/N)", cxxopts::value<std::string>())(
+      "video", "study: with --case, that case's videos and reports")(
+      "list", "study: print the cases and their state")(
+      "slurm", "study: write DIR/submit.sh (a Slurm job array)")(
+      "k8s", "study: write DIR/job.yaml (a Kubernetes Indexed Job)")(
+      "tasks", "study: shards of --slurm / --k8s", cxxopts::value<std::string>())(
+      "label", "compare: a label per run, in order (repeatable)",
+      cxxopts::value<std::vector<std::string>>());
   options.parse_positional({"positional"});
   return options;
 }
@@ -108,14 +131,58 @@ elbowsim::RunArguments run_arguments(const cxxopts::ParseResult& parsed, const s
   return args;
 }
 
+// A whole number >= `low` from --key; false (after saying why) if it is not one.
+bool whole_number(const cxxopts::ParseResult& parsed, const char* command, const char* key, long low,
+                  long& out) {
+  const std::string text = parsed[key].as<std::string>();
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
+  if (ec == std::errc{} && end == text.data() + text.size() && out >= low) return true;
+  std::cerr << "error: " << command << ": --" << key << " needs a whole number >= " << low << " (got \""
+            << text << "\")\n";
+  return false;
+}
+
+int study_arguments(const cxxopts::ParseResult& parsed, const std::string& file) {
+  elbowsim::StudyArguments args;
+  args.study = file;
+  args.grid = strings(parsed, "grid");
+  args.sets = strings(parsed, "set");
+  if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
+  long number = 0;
+  if (parsed.count("draws")) {
+    if (!whole_number(parsed, "study", "draws", 0, number)) return elbowsim::exit_bad_input;
+    args.draws = number;
+  }
+  if (parsed.count("seed")) {
+    if (!whole_number(parsed, "study", "seed", 0, number)) return elbowsim::exit_bad_input;
+    args.seed = static_cast<std::uint64_t>(number);
+  }
+  args.jobs = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  if (parsed.count("jobs")) {
+    if (!whole_number(parsed, "study", "jobs", 1, number)) return elbowsim::exit_bad_input;
+    args.jobs = static_cast<int>(std::min(number, 256L));
+  }
+  if (parsed.count("tasks")) {
+    if (!whole_number(parsed, "study", "tasks", 1, number)) return elbowsim::exit_bad_input;
+    args.tasks = static_cast<int>(std::min(number, 100000L));
+  }
+  if (parsed.count("shard")) args.shard = parsed["shard"].as<std::string>();
+  if (parsed.count("case")) args.only = parsed["case"].as<std::string>();
+  args.video = parsed.count("video") > 0;
+  args.list = parsed.count("list") > 0;
+  args.slurm = parsed.count("slurm") > 0;
+  args.k8s = parsed.count("k8s") > 0;
+  return elbowsim::study_command(args);
+}
+
 // Why a command line matched no command: the first thing wrong with it.
 std::string usage_problem(const std::vector<std::string>& words) {
-  if (words.empty()) return "no command given (run, validate, sweep, render, report, compare, montecarlo, accuracy)";
+  if (words.empty()) return "no command given (run, validate, sweep, render, report, compare, montecarlo, study, merge, accuracy)";
   const std::string& command = words[0];
   const std::string given = std::to_string(words.size() - 1);
   std::string listed;
   for (std::size_t i = 1; i < words.size(); ++i) listed += " '" + words[i] + "'";
-  for (const char* one : {"run", "validate", "render", "report", "montecarlo", "accuracy", "sweep"}) {
+  for (const char* one : {"run", "validate", "render", "report", "montecarlo", "accuracy", "sweep", "study"}) {
     if (command != one) continue;
     const bool folder = command == "render" || command == "report";
     if (words.size() != 2)
@@ -123,6 +190,7 @@ std::string usage_problem(const std::vector<std::string>& words) {
              (listed.empty() ? "" : ":" + listed) + ")";
     if (command == "sweep") return "sweep needs both --key KEY and --values V1,V2,...";
   }
+  if (command == "merge") return "merge needs one or more study folders (elbowsim study writes them)";
   if (command == "compare")
     return "compare needs at least two run folders (got " + given + (listed.empty() ? "" : ":" + listed) +
            "); a scenario with variants: compares them itself (elbowsim run)";
@@ -198,11 +266,17 @@ int dispatch(const cxxopts::ParseResult& parsed) {
     }
     return accuracy_command(args);
   }
+  if (command == "study" && words.size() == 2) return study_arguments(parsed, words[1]);
+  if (command == "merge" && words.size() >= 2) {
+    MergeArguments args{{words.begin() + 1, words.end()}, std::nullopt};
+    if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
+    return merge_command(args);
+  }
   if (command == "report" && words.size() == 2)
     return report_command({words[1], strings(parsed, "expect")});
   if (command == "compare" && words.size() >= 3) {
     CompareArguments args{
-        {words.begin() + 1, words.end()}, std::nullopt, strings(parsed, "expect")};
+        {words.begin() + 1, words.end()}, std::nullopt, strings(parsed, "expect"), strings(parsed, "label")};
     if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
     return compare_command(args);
   }

@@ -19,44 +19,13 @@
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/rnea.hpp"
 #include "engine/run/derivative.hpp"
-#include "engine/run/state_layout.hpp"
-#include "support/models.hpp"
+#include "derivative_scene.hpp"
 
 using namespace elbowsim;
 
 namespace {
 
-Model chain(int n, int p, int solver) {
-  Model m = testing::random_chain(n, 4000 + n);
-  for (int k = 0; k < p; ++k)
-    m.elbows.push_back(
-        {"e" + std::to_string(k), (k + 1) * (n - 1) / p, Eigen::Vector3d(0.1, 0, 0), 0.03});
-  m.table = {TableBox{}};
-  m.effects.contact = true;
-  if (solver >= 0) m.contact.solver = static_cast<ConstraintSolver>(solver);
-  finalize(m);
-  return m;
-}
-
-// A fixed random state with every elbow resting on a random plane.
-struct Fixture {
-  Fixture(int n, int p, int solver) : model(chain(n, p, solver)), data(model) {
-    const StateLayout s(model);
-    x = Eigen::VectorXd::Zero(s.size);
-    out = Eigen::VectorXd::Zero(s.size);
-    x.segment(s.q(), n) = Eigen::VectorXd::Random(n);
-    x.segment(s.qd(), n) = Eigen::VectorXd::Random(n);
-    if (s.current >= 0) x.segment(s.current, n) = Eigen::VectorXd::Random(n);
-    for (int k = 0; k < p; ++k) {
-      data.contact.active.push_back(k);
-      data.contact.resting[static_cast<std::size_t>(k)] = 1;
-      data.contact.normal[static_cast<std::size_t>(k)] = Eigen::Vector3d::Random().normalized();
-    }
-  }
-  Model model;
-  Data data;
-  Eigen::VectorXd x, out;
-};
+using Fixture = bench::DerivativeFixture;
 
 void derivative(benchmark::State& state, int solver) {
   Fixture f(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), solver);

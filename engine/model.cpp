@@ -115,6 +115,7 @@ void check_link(const Link& link, int i) {
   require(I[0] + I[1] >= I[2] * (1 - 1e-12),
           at("links", i) + ".inertia violates the triangle inequality of principal moments");
   require(link.radius > 0, at("links", i) + ".radius must be > 0");
+  require(link.collision.radius >= 0, at("links", i) + ".collision.radius must be >= 0");
 }
 
 void check_contact_scene(const Model& model) {

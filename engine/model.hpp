@@ -168,8 +168,12 @@ struct LinkCollision {
   enum class Kind { capsule, sphere, box, none };
   Kind kind = Kind::capsule;
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  // [m] sphere or box centre
-  double radius = 0;                                  // [m] sphere radius
+  // [m] sphere radius; capsule: 0 (the default) is the link's capsule from its
+  // origin to its tip, > 0 the capsule from `from` to `to` (a URDF cylinder's)
+  double radius = 0;
   Eigen::Vector3d size = Eigen::Vector3d::Zero();     // [m] box edge lengths (axes of the link frame)
+  Eigen::Vector3d from = Eigen::Vector3d::Zero();     // [m] capsule ends (radius > 0)
+  Eigen::Vector3d to = Eigen::Vector3d::Zero();
 };
 
 struct Link {

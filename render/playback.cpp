@@ -17,11 +17,16 @@ std::vector<double> column(const Recording& rec, int c, std::size_t rows) {
   return out;
 }
 
-// Rows up to (not including) the first one with a non-finite value.
+// Rows up to (not including) the first one whose time, angles or hand are
+// not finite (a diverged run's). Other columns may be infinite by design:
+// d_link<j> of a link without a solid.
 std::size_t finite_rows(const Recording& rec) {
+  const TrajectoryLayout& L = rec.layout;
+  std::vector<int> pose{L.time(), L.hand(0), L.hand(1), L.hand(2)};
+  for (int j = 0; j < L.dof(); ++j) pose.push_back(L.q(j));
   for (std::size_t r = 0; r < rec.rows(); ++r)
-    for (std::size_t c = 0; c < rec.columns().size(); ++c)
-      if (!std::isfinite(rec.at(r, c))) return r;
+    for (const int c : pose)
+      if (!std::isfinite(rec.at(r, std::size_t(c)))) return r;
   return rec.rows();
 }
 

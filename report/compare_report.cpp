@@ -170,6 +170,16 @@ std::string headline_table(const std::vector<RunData>& runs, const Comparison& c
   }
   for (std::size_t r = 1; r < runs.size(); ++r) t += "<td></td>";
   t += "</tr>\n";
+  // What sets the runs apart: the scenario keys whose values differ, per run.
+  t += "<tr data-metric=\"differing_keys\"><th scope=\"row\">scenario keys that differ</th>";
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    std::string keys;
+    for (const auto& [key, values] : c.differing_keys)
+      keys += (keys.empty() ? "" : "; ") + key + " = " + (values[r].empty() ? "(not set)" : values[r]);
+    t += "<td class=\"keys\">" + html::escape(c.differing_keys.empty() ? "none (same scenario)" : keys) + "</td>";
+  }
+  for (std::size_t r = 1; r < runs.size(); ++r) t += "<td></td>";
+  t += "</tr>\n";
   for (const HeadlineItem& item : headline_items(pointers)) {
     t += "<tr data-metric=\"" + html::escape(item.path) + "\"><th scope=\"row\">" +
          html::escape(item.label) + "</th>";
@@ -304,12 +314,14 @@ std::pair<fs::path, fs::path> write_comparison_tables(const Comparison& comparis
 }
 
 ComparisonFiles write_comparison_report(const std::vector<RunData>& runs, const fs::path& out,
-                                        const ComparisonTables& tables, bool video) {
+                                        const ComparisonTables& tables, bool video,
+                                        const std::vector<std::pair<std::string, std::vector<std::string>>>& differing) {
   fs::create_directories(out);
   ComparisonTables where = tables;
   if (where.folder.empty()) where.folder = out;
   ComparisonFiles files;
   files.comparison = compare_runs(runs);
+  files.comparison.differing_keys = differing;
   std::tie(files.json, files.csv) = write_comparison_tables(files.comparison, where);
   files.figures = write_comparison_plots(runs, out);
   files.html = out / "report.html";

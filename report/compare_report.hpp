@@ -37,10 +37,13 @@ std::pair<std::filesystem::path, std::filesystem::path> write_comparison_tables(
 // The comparison of `runs` (labels already unique): comparison.json and
 // comparison.csv into tables.folder, and the report (report.html, plots/)
 // into `out`. `video`: out/video.mp4 (the runs side by side) was made by this
-// run, and the report embeds it; no other video is embedded. Throws
+// run, and the report embeds it; no other video is embedded. `differing`:
+// the scenario keys whose values differ between the runs, each with its
+// value per run (app/scenario/scenario_keys.hpp), shown as the first row
+// of the side-by-side table and in comparison.json. Throws
 // std::runtime_error naming the file that cannot be written.
-ComparisonFiles write_comparison_report(const std::vector<RunData>& runs,
-                                        const std::filesystem::path& out,
-                                        const ComparisonTables& tables = {}, bool video = false);
+ComparisonFiles write_comparison_report(
+    const std::vector<RunData>& runs, const std::filesystem::path& out, const ComparisonTables& tables = {},
+    bool video = false, const std::vector<std::pair<std::string, std::vector<std::string>>>& differing = {});
 
 }  // namespace elbowsim::report

@@ -229,6 +229,11 @@ nlohmann::ordered_json comparison_json(const Comparison& c) {
     j["failure"][c.labels[r]] = c.failures[r];
   }
   j["verdict"] = c.verdict;
+  if (!c.differing_keys.empty()) {  // only compare fills them: a variants' comparison has them in its file
+    j["differing_keys"] = Json::object();
+    for (const auto& [key, values] : c.differing_keys)
+      for (std::size_t r = 0; r < c.labels.size() && r < values.size(); ++r) j["differing_keys"][key][c.labels[r]] = values[r];
+  }
   j["metrics"] = Json::array();
   for (const ComparedMetric& m : c.metrics) {
     Json row = {{"path", m.path}, {"unit", m.unit}, {"kind", to_string(m.kind)}};

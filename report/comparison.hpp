@@ -37,6 +37,9 @@ struct Comparison {
   std::vector<std::string> failures;    // [runs] summary.json "failure"
   std::vector<ComparedMetric> metrics;  // the numbers of summary.json (run_metrics), in order
   std::vector<std::string> verdict;     // sentences, most important first
+  // The scenario keys whose values differ between the runs: key, value per run
+  // ("" where a run does not set it). Filled by the caller (it reads YAML).
+  std::vector<std::pair<std::string, std::vector<std::string>>> differing_keys;
 };
 
 // Labels for runs from their folder names; a repeated name gets "_2", "_3", ...

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "render/frame_source.hpp"
 #include "render/overlay.hpp"
@@ -138,4 +139,18 @@ TEST_CASE(
   const FrameSource given(model, rec, fixed, "fixture");
   CHECK(given.force_scale() == 0.004);
   CHECK(given.overlay(0.7).back() == "force arrows: 2.5 N per cm");
+}
+
+TEST_CASE("render playback: a link without a solid (d_link = +inf by design) keeps every row; "
+          "a non-finite angle ends the playback there") {
+  const Model model = render_fixture::arm();
+  Recording rec = hovering_recording();
+  const TrajectoryLayout& L = rec.layout;
+  REQUIRE(L.link_distance(1) >= 0);
+  for (std::size_t r = 0; r < rec.rows(); ++r)
+    testing::set(rec, r, L.link_distance(1), std::numeric_limits<double>::infinity());
+  const double end = rec.at(rec.rows() - 1, std::size_t(L.time()));
+  CHECK(Playback(model, rec).end_time() == doctest::Approx(end));
+  testing::set(rec, 3, L.q(0), std::numeric_limits<double>::quiet_NaN());
+  CHECK(Playback(model, rec).end_time() == doctest::Approx(rec.at(2, std::size_t(L.time()))));
 }

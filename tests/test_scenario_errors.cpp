@@ -231,14 +231,14 @@ robot:
   joints: []
 simulation: {duration: 1}
 )"),
-              "x.yaml:3:3:", "robot", "exactly one of planar or joints (got both)");
+              "x.yaml:3:3:", "robot", "exactly one of planar, joints or urdf (got 2)");
   CHECK_ERROR(yaml(R"(
 name: a
 robot:
   damping: 0.1
 simulation: {duration: 1}
 )"),
-              "x.yaml:3:3:", "robot", "give exactly one of planar or joints");
+              "x.yaml:3:3:", "robot", "give exactly one of planar, joints or urdf");
   CHECK_ERROR(yaml(R"(
 name: a
 robot:

@@ -77,7 +77,8 @@ struct ReportArguments {
 struct CompareArguments {
   std::vector<std::string> folders;
   std::optional<std::string> out;  // default: "compare" beside the first run folder
-  std::vector<std::string> expect;  // paths start with a run label (folder name)
+  std::vector<std::string> expect;  // paths start with a run label (folder name, or --label)
+  std::vector<std::string> labels;  // --label: one per run, in order; empty: folder names
 };
 // elbowsim montecarlo SCENARIO [--samples N] [--seed S] [--jobs J] [--out DIR] [--set ...]
 struct MonteCarloArguments {
@@ -91,6 +92,33 @@ struct MonteCarloArguments {
   std::string cases;   // --case "axis=level,...": the study cases to run; "": all
 };
 int montecarlo_command(const MonteCarloArguments& args);
+
+// elbowsim study STUDY [--grid KEY=V1,V2 ...] [--draws N] [--seed S] [--out DIR] [--set ...]
+//                      [--jobs N] [--shard I/N] [--case K [--video]] [--list] [--slurm] [--k8s]
+struct StudyArguments {
+  std::string study;               // a study file, or a scenario with --grid
+  std::vector<std::string> grid;   // KEY=V1,V2,... (a scenario only)
+  std::vector<std::string> sets;   // over every case
+  std::optional<std::string> out;  // default: output.folder + "/" + the study's name
+  std::optional<long> draws;       // replaces the file's draws:
+  std::optional<std::uint64_t> seed;
+  int jobs = 1;                    // local processes
+  std::optional<std::string> shard;  // "I/N": cases I-1, I-1+N, ...
+  std::optional<std::string> only;   // --case: one case, by index or folder name
+  bool video = false;              // with --case: that case's videos and reports
+  bool list = false;               // print the cases and their state, run nothing
+  bool slurm = false;              // write DIR/submit.sh, run nothing
+  bool k8s = false;                // write DIR/job.yaml, run nothing
+  std::optional<int> tasks;        // shards of --slurm / --k8s (default: one per case, at most 1000)
+};
+int study_command(const StudyArguments& args);
+
+// elbowsim merge DIR... [--out OUT]: one table and report of a study's cases.
+struct MergeArguments {
+  std::vector<std::string> folders;
+  std::optional<std::string> out;  // default: the first folder
+};
+int merge_command(const MergeArguments& args);
 
 // elbowsim accuracy SCENARIO [--methods M1,M2] [--points N] [--repeats R] [--variant V]
 //                            [--no-alternatives] [--out DIR] [--set ...]

@@ -2,10 +2,12 @@
 // one report comparing recorded runs, a verdict on stdout, and --expect
 // checks over the runs' summaries addressed by run label (folder name).
 #include <iostream>
+#include <set>
 #include <nlohmann/json.hpp>
 
 #include "app/commands/commands.hpp"
 #include "app/output/run_folder.hpp"
+#include "app/scenario/scenario_keys.hpp"
 #include "report/compare_report.hpp"
 
 namespace elbowsim {
@@ -14,17 +16,42 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Loads every folder; labels are the folder names, made unique.
-std::vector<report::RunData> load_runs(const std::vector<std::string>& folders) {
+// Loads every folder; labels are --label's, else the folder names made unique.
+std::vector<report::RunData> load_runs(const std::vector<std::string>& folders,
+                                       const std::vector<std::string>& given) {
   std::vector<report::RunData> runs;
   std::vector<std::string> names;
   for (const std::string& folder : folders) {
     runs.push_back(load_run_folder(folder));
     names.push_back(runs.back().label);
   }
-  const auto labels = report::unique_labels(names);
+  const auto labels = given.empty() ? report::unique_labels(names) : given;
   for (std::size_t k = 0; k < runs.size(); ++k) runs[k].label = labels[k];
   return runs;
+}
+
+// --label: one per run, each unique and usable in --expect paths.
+std::string labels_problem(const CompareArguments& args) {
+  if (args.labels.empty()) return "";
+  if (args.labels.size() != args.folders.size())
+    return "--label given " + std::to_string(args.labels.size()) + " times for " +
+           std::to_string(args.folders.size()) + " runs: give one per run, in order";
+  std::set<std::string> seen;
+  for (const std::string& l : args.labels) {
+    if (l.empty() || l.find_first_of(". <>=!&|()\"") != std::string::npos)
+      return "--label \"" + l + "\": a label is letters, digits, _ or - (it starts --expect paths)";
+    if (!seen.insert(l).second) return "--label " + l + " is given twice";
+  }
+  return "";
+}
+
+// The scenario keys that differ between the runs' scenario.yaml files.
+std::vector<std::pair<std::string, std::vector<std::string>>> differing(const std::vector<report::RunData>& runs) {
+  std::vector<std::string> texts;
+  for (const report::RunData& r : runs) texts.push_back(r.scenario_yaml);
+  std::vector<std::pair<std::string, std::vector<std::string>>> out;
+  for (const KeyDifference& d : differing_keys(texts)) out.emplace_back(d.key, d.values);
+  return out;
 }
 
 // Default output: "compare" beside the first run folder.
@@ -40,9 +67,13 @@ int compare_command(const CompareArguments& args) {
     return exit_bad_input;
   }
   if (!expectations_well_formed(args.expect)) return exit_bad_input;
+  if (const std::string problem = labels_problem(args); !problem.empty()) {
+    std::cerr << "error: compare: " << problem << '\n';
+    return exit_bad_input;
+  }
   std::vector<report::RunData> runs;
   try {
-    runs = load_runs(args.folders);
+    runs = load_runs(args.folders, args.labels);
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_bad_input;
@@ -55,8 +86,15 @@ int compare_command(const CompareArguments& args) {
       return exit_bad_input;
     }
   try {
-    const report::ComparisonFiles files = report::write_comparison_report(runs, out);
+    const auto keys = differing(runs);
+    const report::ComparisonFiles files = report::write_comparison_report(runs, out, {}, false, keys);
     for (const std::string& sentence : files.comparison.verdict) std::cout << sentence << '\n';
+    for (const auto& [key, values] : keys) {
+      std::cout << "differs: " << key << ":";
+      for (std::size_t r = 0; r < runs.size(); ++r)
+        std::cout << " " << runs[r].label << " " << (values[r].empty() ? "(not set)" : values[r]) << (r + 1 < runs.size() ? "," : "");
+      std::cout << '\n';
+    }
     std::cout << "report: " << files.html.string() << '\n';
   } catch (const std::exception& e) {
     std::cerr << "error: compare: " << e.what() << '\n';

@@ -39,6 +39,35 @@ void print_model(const Scenario& s) {
   for (const std::string& w : model_warnings(m)) std::cout << "note       " << w << '\n';
 }
 
+// The chain, joint by joint: name (a URDF's), axis (its link's frame), the
+// link it moves and that link's mass (with the fixed links merged into it),
+// and the URDF's limits.
+void print_chain(const Scenario& s) {
+  const Model& m = s.model;
+  const ChainNames& c = s.chain;
+  if (!c.urdf.empty())
+    std::cout << "chain      " << c.urdf << ": base link " << c.base_link << ", tip link "
+              << c.tip_link << " (the hand)\n";
+  for (int j = 0; j < m.dof; ++j) {
+    const std::size_t i = static_cast<std::size_t>(j);
+    const Eigen::Vector3d& a = m.joints[i].axis;
+    char line[160];
+    std::snprintf(line, sizeof line, "joint %-4d %s axis (%.3g, %.3g, %.3g), moves ", j,
+                  c.joints.empty() ? "" : (c.joints[i] + ",").c_str(), a.x(), a.y(), a.z());
+    std::cout << line << (c.links.empty() ? "link " + std::to_string(j) : c.links[i]);
+    if (!c.merged.empty() && !c.merged[i].empty()) {
+      std::cout << " (with";
+      for (const std::string& name : c.merged[i]) std::cout << ' ' << name;
+      std::cout << ')';
+    }
+    std::cout << ", " << m.links[i].mass << " kg";
+    if (c.q_min.size() == m.dof && std::isfinite(c.q_min[j]))
+      std::cout << ", limits [" << c.q_min[j] << ", " << c.q_max[j] << "] rad";
+    std::cout << '\n';
+  }
+  for (const std::string& note : c.notes) std::cout << "note       " << note << '\n';
+}
+
 // Where an elbow sphere of `radius` centred at `centre` is against the table:
 // on it, above, into it (mm) or beside it, naming the nearest box.
 std::string place_against_table(const Eigen::Vector3d& centre, double radius,
@@ -85,7 +114,10 @@ void print_elbows(const Scenario& s, const std::string& label) {
     const Eigen::Vector3d c = point_position(data, e.link, e.point);
     char centre[96];
     std::snprintf(centre, sizeof centre, "(%.4g, %.4g, %.4g) m", c.x(), c.y(), c.z());
-    std::cout << "elbow      " << label << e.name << " (link " << e.link << ", r " << e.radius
+    const std::string link_name =
+        s.chain.links.empty() ? "" : " " + s.chain.links[static_cast<std::size_t>(e.link)];
+    std::cout << "elbow      " << label << e.name << " (link " << e.link << link_name << ", r "
+              << e.radius
               << " m) at " << pose << ": centre " << centre << ", "
               << place_against_table(c, e.radius, m.table) << '\n';
   }
@@ -97,6 +129,7 @@ int validate_command(const std::string& scenario, const std::vector<std::string>
   try {
     const Scenario s = load_scenario(scenario, sets);
     print_model(s);
+    print_chain(s);
     if (s.variants.empty()) print_elbows(s, "");
     for (const auto& [variant, overrides] : s.variants)  // (the file alone is not run)
       print_elbows(load_scenario_variant(scenario, variant, sets), variant + ": ");

@@ -75,9 +75,20 @@ void check_planar_inertia(const Value& v, const Link& link, double planar) {
          " m: give a radius with " + max_radius + ", or an inertia with " + min_inertia);
 }
 
+// {capsule: {from: [x, y, z], to: [x, y, z], radius: r}} (link frame).
+LinkCollision read_capsule(const Value& c) {
+  c.allow_keys({"from", "to", "radius"});
+  LinkCollision out;
+  out.from = c.require("from").vec3();
+  out.to = c.require("to").vec3();
+  out.radius = positive(c.require("radius"));
+  return out;
+}
+
 // collision: capsule (the default: origin to tip, the link's radius) | none |
-// {sphere: {center: [x, y, z], radius: r}} | {box: {center: [x, y, z], size: [a, b, c]}}
-// (link frame; a box along the link frame's axes).
+// {capsule: {from, to, radius}} | {sphere: {center: [x, y, z], radius: r}} |
+// {box: {center: [x, y, z], size: [a, b, c]}} (link frame; a box along the
+// link frame's axes).
 LinkCollision read_collision(const Value& v) {
   LinkCollision out;
   if (!v.present()) return out;
@@ -88,12 +99,14 @@ LinkCollision read_collision(const Value& v) {
       out.kind = LinkCollision::Kind::none;
       return out;
     }
-    v.fail("must be capsule, none, {sphere: {center, radius}} or {box: {center, size}} (got " +
-           kind + ")");
+    v.fail("must be capsule, none, {capsule: {from, to, radius}}, {sphere: {center, radius}} or "
+           "{box: {center, size}} (got " + kind + ")");
   }
-  v.allow_keys({"sphere", "box"});
-  if (v.get("sphere").present() == v.get("box").present())
-    v.fail("needs exactly one of sphere: or box:");
+  v.allow_keys({"capsule", "sphere", "box"});
+  const int kinds = int(v.get("capsule").present()) + int(v.get("sphere").present()) +
+                    int(v.get("box").present());
+  if (kinds != 1) v.fail("needs exactly one of capsule:, sphere: or box:");
+  if (v.get("capsule").present()) return read_capsule(v.get("capsule"));
   if (v.get("sphere").present()) {
     const Value s = v.get("sphere");
     s.allow_keys({"center", "radius"});

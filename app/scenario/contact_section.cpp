@@ -18,19 +18,6 @@ namespace {
 
 constexpr double kDefaultElbowRadius = 0.03;  // [m]
 
-std::string link_range(int n) {
-  return "the robot has " + std::to_string(n) + " links: " + std::to_string(-n) + " .. " +
-         std::to_string(n - 1);
-}
-
-// link: 0-based index, negative counts from the end (-1 = last). Returns it 0-based.
-int read_link_index(const Value& v, int n) {
-  long link = v.integer();
-  if (link < -n || link >= n)
-    v.fail("link index out of range (got " + std::to_string(link) + "; " + link_range(n) + ")");
-  return static_cast<int>(link < 0 ? link + n : link);
-}
-
 // The sphere centre in the link frame: `at` (planar shorthand: distance along
 // the link, 0 .. length) or `point` ([x, y, z]), exactly one.
 Eigen::Vector3d read_elbow_point(const Value& v, const Model& model, int link, bool planar) {
@@ -54,11 +41,14 @@ Eigen::Vector3d read_elbow_point(const Value& v, const Model& model, int link, b
   return Eigen::Vector3d(distance, 0, 0);
 }
 
-Elbow read_elbow(const Value& v, const Model& model, bool planar) {
+// link: an index, or with robot.urdf a link name (the point in that link's frame).
+Elbow read_elbow(const Value& v, const Model& model, const RobotInfo& robot) {
   v.allow_keys({"name", "link", "at", "point", "radius"});
   Elbow elbow;
-  elbow.link = read_link_index(v.require("link"), model.dof);
-  elbow.point = read_elbow_point(v, model, elbow.link, planar);
+  const RobotInfo::Frame frame = read_link_frame(v.require("link"), model, robot);
+  elbow.link = frame.link;
+  elbow.point = frame.to_link *
+                read_elbow_point(v, model, elbow.link, robot.form == RobotInfo::Form::planar);
   elbow.radius = value_or(v.get("radius"), kDefaultElbowRadius, positive);
   return elbow;
 }
@@ -87,13 +77,13 @@ double in_range(const Value& v, double lo, double hi, bool closed) {
 
 }  // namespace
 
-std::vector<Elbow> read_elbows(const Value& elbows, const Model& model, bool planar) {
+std::vector<Elbow> read_elbows(const Value& elbows, const Model& model, const RobotInfo& robot) {
   std::vector<Elbow> out;
   if (!elbows.present()) return out;
   std::map<std::string, std::size_t> names;  // name -> index of the elbow that has it
   const std::vector<Value> items = elbows.items();
   for (std::size_t k = 0; k < items.size(); ++k) {
-    Elbow elbow = read_elbow(items[k], model, planar);
+    Elbow elbow = read_elbow(items[k], model, robot);
     Value name = items[k].get("name");
     elbow.name = value_or(name, "elbow" + std::to_string(k), text);
     if (elbow.name.empty()) name.fail("must not be empty");

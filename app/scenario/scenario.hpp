@@ -50,8 +50,21 @@ struct Uncertainty {
   std::vector<UncertainParameter> parameters;
 };
 
+// The robot's chain as its source names it (robot.urdf), for `validate` and
+// messages; empty names for robot.planar and robot.joints.
+struct ChainNames {
+  std::string urdf;                  // the URDF as named in the scenario, "" if none
+  std::string base_link, tip_link;   // the chain's ends (the hand is on the tip link)
+  std::vector<std::string> joints;   // [dof] joint names
+  std::vector<std::string> links;    // [dof] the link each joint moves
+  std::vector<std::vector<std::string>> merged;  // [dof] fixed links merged into it
+  Eigen::VectorXd q_min, q_max;      // [dof] URDF <limit>s [rad] (+-inf: continuous)
+  std::vector<std::string> notes;    // what the import left out (joint friction)
+};
+
 struct Scenario {
   std::string file;  // path it was loaded from
+  ChainNames chain;  // robot.urdf's names (empty for the YAML forms)
   std::string description;
   Model model;  // finalized (elbowsim::finalize called); model.initial from `initial:`
   Experiment experiment;  // task: and controller: (the plant never reads them)

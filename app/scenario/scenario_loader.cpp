@@ -77,6 +77,15 @@ void finalize_model(Model& model, const Source& source) {
   }
 }
 
+// A task without joint_limits keeps a URDF's <limit>s (continuous joints: none).
+void use_urdf_limits(const Value& task, const RobotInfo& robot, HandTask& out) {
+  if (!task.present() || task.get("joint_limits").present()) return;
+  const bool limited = (robot.names.q_min.array().isFinite() || robot.names.q_max.array().isFinite()).any();
+  if (!limited) return;
+  out.q_min = robot.names.q_min;
+  out.q_max = robot.names.q_max;
+}
+
 // The sections, in dependency order: effects and robot (dof) before motors,
 // elbows, initial state, inputs and the task. Fills `sets` with the variants:
 // and study: sections (with where each entry is written).
@@ -84,7 +93,7 @@ void finalize_model(Model& model, const Source& source) {
 // where the arm's initial pose would be inside it (the arm is where the
 // plant's table is: its start pose is solved on the plant).
 Scenario read(const Value& root, const Source& source, OverrideSets& sets,
-              std::vector<VariantSpec::Entry>& beliefs, bool plant = true) {
+              std::vector<VariantSpec::Entry>& beliefs, RobotInfo& robot_info, bool plant = true) {
   root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "elbows",
                    "table", "contact", "initial", "simulation", "inputs", "output", "render",
                    "task", "controller", "hand_load", "variants", "validity", "warnings",
@@ -96,10 +105,11 @@ Scenario read(const Value& root, const Source& source, OverrideSets& sets,
   s.description = value_or(root.get("description"), std::string(), text);
   model.effects = read_effects(root.get("effects"));
   const Value robot = root.require("robot");
-  read_robot(robot, model);
+  robot_info = read_robot(robot, model, source.file());
+  s.chain = robot_info.names;
   model.gravity = value_or(root.get("gravity"), model.gravity, vec3);
   model.motors = read_motors(root.get("motors"), model);
-  model.elbows = read_elbows(root.get("elbows"), model, robot.get("planar").exists());
+  model.elbows = read_elbows(root.get("elbows"), model, robot_info);
   model.table = read_table(root.get("table"));
   model.contact = read_contact(root.get("contact"));
   model.validity = read_validity(root.get("validity"));
@@ -113,6 +123,7 @@ Scenario read(const Value& root, const Source& source, OverrideSets& sets,
   model.initial = read_initial(root.get("initial"), model.dof);
   model.inputs = read_inputs(root.get("inputs"), model);
   s.experiment.task = read_task(root.get("task"), model);
+  use_urdf_limits(root.get("task"), robot_info, s.experiment.task);
   s.experiment.controller = read_controller(root.get("controller"), model, s.experiment.task);
   if (const Value controller = root.get("controller"); controller.present())
     beliefs = read_controller_model(controller.get("model"));
@@ -150,7 +161,8 @@ Model read_believed(const YAML::Node& root, Source source,
   for (const VariantSpec::Entry& e : beliefs) apply_override(copy, e.text, source, e.origin);
   OverrideSets none;
   std::vector<VariantSpec::Entry> no_beliefs;
-  Model believed = read(Value(source, copy), source, none, no_beliefs, false).model;
+  RobotInfo robot;
+  Model believed = read(Value(source, copy), source, none, no_beliefs, robot, false).model;
   auto differs = [&](const char* what, std::size_t a, std::size_t b) {
     if (a == b) return;
     const VariantSpec::Entry& e = beliefs.front();
@@ -203,7 +215,8 @@ Scenario load_once(const std::string& text, const std::string& file, const Appli
   if (!applied.levels.empty()) root.remove("study");
   if (applied.variant) root.remove("variants");
   std::vector<VariantSpec::Entry> beliefs;
-  Scenario scenario = read(Value(source, root), source, sets, beliefs);
+  RobotInfo robot;
+  Scenario scenario = read(Value(source, root), source, sets, beliefs, robot);
   scenario.variant = applied.variant ? applied.variant->name : "";
   for (const VariantSpec* level : applied.levels) scenario.study_case.push_back(level->name);
   scenario.uncertainty = read_uncertainty(Value(source, root).get("uncertainty"), root);
@@ -212,6 +225,8 @@ Scenario load_once(const std::string& text, const std::string& file, const Appli
         std::make_shared<const Model>(read_believed(root, source, beliefs, scenario.model));
     for (const VariantSpec::Entry& e : beliefs) scenario.controller_model_overrides.push_back(e.text);
   }
+  // The scenario as run stands alone: a URDF read from a file goes in as its text.
+  if (robot.form == RobotInfo::Form::urdf) root["robot"]["urdf"] = robot.urdf_text;
   YAML::Emitter resolved;
   resolved << root;
   scenario.resolved_yaml = std::string(resolved.c_str()) + "\n";

@@ -5,6 +5,7 @@
 // (they name its links).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,13 +16,37 @@
 
 namespace elbowsim::loader {
 
-// robot: base, planar | joints, damping, hand. Sets dof, base, joints, links,
-// damping and the hand of `model`.
-void read_robot(const Value& robot, Model& model);
+// The robot as read: which form, and for robot.urdf the file's text and the
+// names of its links.
+struct RobotInfo {
+  enum class Form { planar, joints, urdf };
+  Form form = Form::joints;
+  ChainNames names;       // robot.urdf only
+  std::string urdf_text;  // robot.urdf only: the URDF as read
+  // Every link of the chain by name: on engine link `link` (-1: fixed to the
+  // base), its frame's pose in that link's frame.
+  struct Frame {
+    int link = -1;
+    Eigen::Isometry3d to_link = Eigen::Isometry3d::Identity();
+  };
+  std::map<std::string, Frame> frames;
+};
+
+// robot: base, planar | joints | urdf, damping, hand. Sets dof, base, joints,
+// links, damping and the hand of `model`. `scenario_file` is the path URDF
+// paths are relative to.
+RobotInfo read_robot(const Value& robot, Model& model, const std::string& scenario_file);
 
 // robot.planar / robot.joints: appends joints and links to `model`.
 void read_planar_chain(const Value& planar, Model& model);
 void read_general_chain(const Value& joints, Model& model);
+// robot.urdf (+ base_link, tip_link): appends the URDF's chain to `model` and
+// sets model.damping (the URDF's) and the hand (the tip link's origin).
+RobotInfo read_urdf_chain(const Value& robot, Model& model, const std::string& scenario_file);
+// A link named in the scenario (an elbow's or the hand's `link`): an index
+// (negative counts from the end), or with robot.urdf a link name. Returns the
+// engine link and the named frame's pose in it (identity for an index).
+RobotInfo::Frame read_link_frame(const Value& v, const Model& model, const RobotInfo& robot);
 
 // motors (optional): one Motor per joint. Needs model.dof and model.effects.
 std::vector<Motor> read_motors(const Value& motors, const Model& model);
@@ -34,9 +59,9 @@ OutputSettings read_output(const Value& output, const std::string& name);  // op
 RenderSettings read_render(const Value& render);                           // optional
 
 // elbows (optional list): spheres on the links. Needs model.dof and
-// model.links; `planar` says the robot was given as robot.planar, the only
-// form that allows `at` (distance along the link).
-std::vector<Elbow> read_elbows(const Value& elbows, const Model& model, bool planar);
+// model.links; robot.planar is the only form that allows `at` (distance along
+// the link), robot.urdf the only one whose links have names.
+std::vector<Elbow> read_elbows(const Value& elbows, const Model& model, const RobotInfo& robot);
 std::vector<TableBox> read_table(const Value& table);  // optional; boxes: one or more
 ContactOptions read_contact(const Value& contact);     // optional; defaults: ContactOptions
 ValidityOptions read_validity(const Value& validity);  // optional; defaults: ValidityOptions

@@ -30,6 +30,7 @@ ContactData::ContactData(ContactGeometry g, int links, int boxes, int n, int cap
   resting.assign(slots, 0);
   active.reserve(cap);
   detected.assign(slots, SlotContact{false, std::numeric_limits<double>::infinity()});
+  start_distance.assign(slots, std::numeric_limits<double>::infinity());
   // Until detected, a slot's ball sits where its part is (a segment's interior: at its start).
   for (std::size_t k = 0; k < slots; ++k) {
     const ContactSlot& s = geometry.slots[k];

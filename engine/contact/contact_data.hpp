@@ -108,6 +108,9 @@ struct ContactData {
   std::vector<Eigen::Vector3d> surface;   // [slots] a point of the feature [m]
   std::vector<BoxFeature> feature;        // [slots]
   std::vector<Eigen::Vector3d> edge;      // [slots] unit edge direction (feature edge)
+  // [slots] signed distance when the step started [m]: a free slot already in
+  // the table by rounding lands when it goes deeper than this (events.cpp)
+  std::vector<double> start_distance;
   // --- Coulomb friction (law coulomb): each resting slot sticks or slips ----
   std::vector<char> sticking;             // [slots] 1: tangent rows hold its contact point
   std::vector<Eigen::Vector3d> slip;      // [slots] unit world direction a sliding slot slips in

@@ -86,6 +86,7 @@ void freeze_frames(Data& data) {
   ContactData& c = data.contact;
   for (int k = 0; k < c.slots(); ++k) {
     const SlotContact& d = c.detected[k];
+    c.start_distance[static_cast<std::size_t>(k)] = d.near ? d.distance : std::numeric_limits<double>::infinity();
     if (!d.near) continue;
     c.normal[k] = d.normal;
     c.surface[k] = d.point;

@@ -17,9 +17,9 @@ namespace elbowsim {
 // keeps that detection's results and costs a comparison.
 void detect_contacts(const Model& model, Data& data);
 
-// The frames of the step (data.contact.normal, surface, feature, edge) from
-// the last detection, for every slot measured: what the rows of the step
-// hold. Called when a step starts (select_active_set), not inside it, so the
+// The frames of the step (data.contact.normal, surface, feature, edge) and
+// each slot's start_distance from the last detection, for every slot
+// measured: what the rows of the step hold. Called when a step starts (select_active_set), not inside it, so the
 // rows stay those of the step while events are located.
 void freeze_frames(Data& data);
 

@@ -29,12 +29,23 @@ double normal_force(const ContactData& c, int slot) {
   return 0.0;
 }
 
+// How far a free slot is past where it lands [m] (negative: landed). A slot
+// that started the step in the table by rounding (a free slot touching, whose
+// force the active set found zero: it was leaving) lands when it goes deeper
+// than it started: measured from 0 it would have "landed" at the step's start
+// and, not approaching there, never been landed, so every following step was
+// cut to the locate tolerance again (a stall: a hand grazing the table while
+// its motors' currents turned it back down within the step).
+double landing_depth(const ContactData& c, int slot) {
+  return c.detected[slot].distance - std::min(0.0, c.start_distance[static_cast<std::size_t>(slot)]);
+}
+
 // The event function (its sign changes at the event) at the state in data.x.
 double event_value(const Model& model, Data& data, int slot, Event event) {
   switch (event) {
     case Event::landing:
       detect_contacts(model, data);
-      return data.contact.detected[slot].distance;
+      return landing_depth(data.contact, slot);
     case Event::feature:
       detect_contacts(model, data);  // forward kinematics
       return feature_margin(model, data, slot);
@@ -53,7 +64,8 @@ bool happens(const Model& model, const Data& data, int k, Event& event) {
   const ContactData& c = data.contact;
   if (!c.resting[k]) {
     event = Event::landing;
-    return c.detected[k].distance < 0 && normal_speed(model, data, k) < 0;
+    return landing_depth(c, k) < 0 &&
+           normal_speed(model, data, k) < -model.contact.separation_velocity;
   }
   // A force that is zero to rounding (a row that carries nothing) is no release:
   // locating it would shorten every step to the locate tolerance.

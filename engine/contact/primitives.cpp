@@ -136,7 +136,10 @@ ContactGeometry contact_geometry(const Model& model) {
     const LinkCollision& c = link.collision;
     switch (c.kind) {
       case LinkCollision::Kind::capsule:
-        if (link.tip.isZero(0))
+        if (c.radius > 0)
+          g.primitives.push_back(c.from == c.to ? ball(i, c.from, c.radius)
+                                                : segment(i, c.from, c.to, c.radius));
+        else if (link.tip.isZero(0))
           g.primitives.push_back(ball(i, Eigen::Vector3d::Zero(), link.radius));
         else
           g.primitives.push_back(segment(i, Eigen::Vector3d::Zero(), link.tip, link.radius));

@@ -89,6 +89,29 @@ IkStep ik_step(const Rows& rows, const Eigen::VectorXd& to_posture, bool damp) {
   return step;
 }
 
+// Joint limits as an active set: a joint at one of its limits that the step
+// `dq` would push further out is held (its column of J and its posture error
+// zeroed), so the step moves the others to do its part; a joint the step
+// moves back inside is free. Without limits, or none held: `step` as it is.
+IkStep limited_step(const Rows& rows, const Eigen::VectorXd& to_posture, bool damp, double gain,
+                    const IkProblem& problem, const Eigen::VectorXd& q, IkStep step) {
+  const bool low = problem.q_min.size() == q.size(), high = problem.q_max.size() == q.size();
+  if (!low && !high) return step;
+  const Eigen::VectorXd dq = step.rows + gain * step.to_null;
+  Rows held = rows;
+  Eigen::VectorXd posture = to_posture;
+  bool any = false;
+  for (Eigen::Index j = 0; j < q.size(); ++j) {
+    const bool out = (low && q[j] <= problem.q_min[j] && dq[j] < 0) ||
+                     (high && q[j] >= problem.q_max[j] && dq[j] > 0);
+    if (!out) continue;
+    held.J.col(j).setZero();
+    posture[j] = 0;
+    any = true;
+  }
+  return any ? ik_step(held, posture, damp) : step;
+}
+
 void clamp_limits(const IkProblem& problem, Eigen::VectorXd& q) {
   if (problem.q_min.size() == q.size()) q = q.cwiseMax(problem.q_min);
   if (problem.q_max.size() == q.size()) q = q.cwiseMin(problem.q_max);
@@ -162,7 +185,8 @@ void follow_posture(const Model& model, Data& data, const IkProblem& problem, Ik
     build_rows(model, data, problem, rows);
     const Eigen::VectorXd to_posture =
         posture ? Eigen::VectorXd(problem.posture - result.q) : Eigen::VectorXd::Zero(result.q.size());
-    const IkStep step = ik_step(rows, to_posture, true);
+    const IkStep step = limited_step(rows, to_posture, true, posture ? gain : 0.0, problem, result.q,
+                                     ik_step(rows, to_posture, true));
     const double null = step.to_null.norm();
     if (rows.e.norm() < 1e-13 && step.rows.norm() < 1e-12 && null < 1e-12) break;
     gain = null < 1e-3 && null < last_null ? std::min(1.0, 2 * gain) : problem.posture_gain;
@@ -191,7 +215,9 @@ IkResult solve_ik(const Model& model, Data& data, const IkProblem& problem,
   for (int it = 0; it < 50; ++it, ++result.iterations) {
     forward_kinematics(model, data, result.q);
     build_rows(model, data, problem, rows);
-    const IkStep step = ik_step(rows, Eigen::VectorXd::Zero(result.q.size()), false);
+    const Eigen::VectorXd none = Eigen::VectorXd::Zero(result.q.size());
+    const IkStep step =
+        limited_step(rows, none, false, 0.0, problem, result.q, ik_step(rows, none, false));
     if (rows.e.norm() < 1e-13 && step.rows.norm() < 1e-12) break;
     if (!polish(model, data, problem, step.rows, rows, result.q) || step.rows.norm() < 1e-14) {
       result.stationary = true;

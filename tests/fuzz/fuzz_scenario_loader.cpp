@@ -11,17 +11,21 @@
 
 #include "app/scenario/scenario.hpp"
 
+// As if the text were a file in scenarios/arms/: the shipped arms' robot.urdf
+// paths resolve there, so the URDF import is fuzzed from their seeds too.
+const std::string kFile = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/arms/fuzz.yaml";
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    const elbowsim::Scenario scenario = elbowsim::load_scenario_text(text, "fuzz.yaml");
+    const elbowsim::Scenario scenario = elbowsim::load_scenario_text(text, kFile);
     if (!scenario.study.empty()) {
       std::vector<std::string> levels;
       for (const elbowsim::Scenario::StudyAxis& axis : scenario.study)
         levels.push_back(axis.levels.empty() ? std::string() : axis.levels.front().first);
       const std::string variant =
           scenario.variants.empty() ? std::string() : scenario.variants.front().first;
-      elbowsim::load_scenario_case_text(text, "fuzz.yaml", levels, variant);
+      elbowsim::load_scenario_case_text(text, kFile, levels, variant);
     }
   } catch (const elbowsim::ScenarioError&) {
     // A clean error: what bad input should get.

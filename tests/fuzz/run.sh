@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fuzzes the scenario loader for a bounded time: configures and builds build-fuzz/
 # (clang, -DELBOWSIM_FUZZ=ON), then runs fuzz_scenario_loader for SECONDS seconds
-# from the shipped scenarios (read in place: scenarios/*.yaml, scenarios/hard/*.yaml)
+# from the shipped scenarios (read in place: scenarios/*.yaml, scenarios/hard/*.yaml,
+# scenarios/arms/*.yaml, whose URDFs the target finds beside them)
 # and the new inputs of earlier runs (build-fuzz/corpus/).
 # Exit 0 when no crash, sanitizer report, uncaught exception, hang (> 5 s for one
 # input), leak or memory blow-up (> 2048 MB) was found; otherwise non-zero, with the
@@ -22,7 +23,7 @@ cmake --build "$build" -j2 --target fuzz_scenario_loader
 # and scenarios/ holds a README too. Links, not copies.
 seeds=$build/seeds
 rm -rf "$seeds" && mkdir -p "$seeds" "$build/corpus" "$build/artifacts"
-for f in "$root"/scenarios/*.yaml "$root"/scenarios/hard/*.yaml; do
+for f in "$root"/scenarios/*.yaml "$root"/scenarios/hard/*.yaml "$root"/scenarios/arms/*.yaml; do
   ln -s "$f" "$seeds/$(basename "$(dirname "$f")")_$(basename "$f")"
 done
 

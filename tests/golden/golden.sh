@@ -49,7 +49,7 @@ hash_folder() {  # one line per folder holding a run: relative path and hash
 rm -rf "$work"
 mkdir -p "$work"
 cd "$source_dir"
-scenarios=$(ls scenarios/*.yaml scenarios/hard/*.yaml)
+scenarios=$(ls scenarios/*.yaml scenarios/hard/*.yaml scenarios/arms/*.yaml)
 platform=$(fingerprint)
 lines=("# Golden hashes of every shipped scenario's outputs (tests/golden/golden.sh)."
        "# Rewrite on purpose with: bash tests/golden/golden.sh build/app/elbowsim . /tmp/golden --update"

@@ -109,3 +109,26 @@ TEST_CASE("link solids on request: a sphere, a box (8 corners, 12 edges), none")
   m.links[0].collision.kind = m.links[1].collision.kind = LinkCollision::Kind::none;
   CHECK(contact_geometry(m).primitives.empty());
 }
+
+TEST_CASE("link solids on request: a capsule between two points (a URDF cylinder's), or a ball "
+          "when they meet") {
+  Model m = two_links(1);
+  m.links[0].collision.kind = m.links[1].collision.kind = LinkCollision::Kind::none;
+  LinkCollision& c = m.links[1].collision;
+  c.kind = LinkCollision::Kind::capsule;
+  c.from = Eigen::Vector3d(0.02, 0.01, 0);
+  c.to = Eigen::Vector3d(0.25, 0.01, 0);
+  c.radius = 0.035;
+  ContactGeometry g = contact_geometry(m);
+  REQUIRE(g.primitives.size() == 1);
+  CHECK_FALSE(g.primitives[0].is_ball);
+  CHECK(g.primitives[0].link == 1);
+  CHECK(g.primitives[0].a == c.from);
+  CHECK(g.primitives[0].b == c.to);
+  CHECK(g.primitives[0].radius == 0.035);
+  c.to = c.from;
+  g = contact_geometry(m);
+  REQUIRE(g.primitives.size() == 1);
+  CHECK(g.primitives[0].is_ball);
+  CHECK(g.primitives[0].a == c.from);
+}
