@@ -301,6 +301,7 @@ RenderResults render_jobs(const std::vector<RenderJob>& jobs,
   std::vector<Running> running(jobs.size());
   for (std::size_t i = 0; i < jobs.size(); ++i) start(running[i], jobs[i], composer, int(i));
   const std::vector<std::vector<Running*>> by_thread = groups(running, threads);
+  results.threads = int(by_thread.size());
   std::vector<std::thread> helpers;
   for (std::size_t t = 1; t < by_thread.size(); ++t)
     helpers.emplace_back([&, t] { draw_jobs(by_thread[t], composer); });

@@ -68,6 +68,7 @@ struct RenderJob {
 struct RenderResults {
   std::vector<RenderStats> jobs;            // in the order of the jobs
   std::optional<RenderStats> side_by_side;  // when asked
+  int threads = 0;                          // drawing threads used: min(threads, jobs)
 };
 
 // Renders every job for its recording's duration, drawing up to `threads`

@@ -38,6 +38,7 @@ struct RunArguments {
   bool report = true;               // false: --no-report (skip report.html, plots/)
   std::vector<std::string> expect;  // --expect expressions over summary.json
   bool check_step = false;          // --check-step: rerun at half the step (summary step_check)
+  int render_jobs = 0;  // --jobs: variants drawn at once at most; 0: the cores available
 };
 
 // elbowsim render RUN_DIR [--camera preset] [--size WxH] [--fps N]
@@ -164,7 +165,7 @@ struct RunToRender {
   std::filesystem::path folder;
 };
 // Renders `runs` (those whose output section asks for video.mp4 or frames/)
-// on up to all the machine's cores, one drawing thread per run, printing
+// on `threads` drawing threads at most (0: the cores available), printing
 // what was written; with `side_by_side`, also every run's frames placed side
 // by side, left to right, into that folder (video.mp4 when the first run
 // asks for a video, frames/ when it asks for frames; each panel is the run's
@@ -174,6 +175,6 @@ struct RunToRender {
 // differ in height or rate and none is made).
 std::vector<int> render_runs(const std::vector<RunToRender>& runs,
                              const std::optional<std::filesystem::path>& side_by_side,
-                             int& side_by_side_code);
+                             int& side_by_side_code, int threads = 0);
 
 }  // namespace elbowsim

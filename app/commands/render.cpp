@@ -112,7 +112,8 @@ int render_with(const Scenario& scenario, const Recording& recording, const fs::
 }  // namespace
 
 std::vector<int> render_runs(const std::vector<RunToRender>& runs,
-                             const std::optional<fs::path>& side_by_side, int& side_by_side_code) {
+                             const std::optional<fs::path>& side_by_side, int& side_by_side_code,
+                             int threads) {
   side_by_side_code = exit_ok;
   std::vector<int> codes(runs.size(), exit_ok);
   std::vector<std::optional<FrameSource>> sources(runs.size());
@@ -143,7 +144,12 @@ std::vector<int> render_runs(const std::vector<RunToRender>& runs,
       side = RenderRequest{*side_by_side, first.output.video, first.output.frames};
     }
   }
-  const RenderResults results = render_jobs(jobs, side, available_cores());
+  const int cores = available_cores();
+  const RenderResults results = render_jobs(jobs, side, threads > 0 ? threads : cores);
+  if (jobs.size() > 1)
+    std::cout << "render: " << jobs.size() << " runs drawn at once on " << results.threads
+              << (results.threads == 1 ? " thread" : " threads") << " (" << cores
+              << (cores == 1 ? " core" : " cores") << " available)\n";
   for (std::size_t j = 0; j < jobs.size(); ++j) {
     const RenderStats& stats = results.jobs[j];
     const fs::path& folder = runs[job_run[j]].folder;

@@ -244,7 +244,7 @@ int render_and_finish(const std::vector<const Scenario*>& scenarios,
     // Side by side only when every run is drawn.
     const bool all = runs.size() == scenarios.size();
     const std::vector<int> codes =
-        render_runs(runs, all ? side_by_side : std::nullopt, side_by_side_code);
+        render_runs(runs, all ? side_by_side : std::nullopt, side_by_side_code, args.render_jobs);
     for (std::size_t j = 0; j < runs.size(); ++j) {
       rendered[which[j]] = codes[j];
       outcomes[which[j]].rendered = true;
