@@ -1,6 +1,6 @@
 // End-to-end frame rate of the renderer (render/render_job.cpp): scene
 // building, drawing (OSMesa llvmpipe, GL 3.3 core), read-back through
-// pixel-buffer objects, overlay, and piping raw RGB frames to ffmpeg (libx264,
+// pixel-buffer objects, overlay, and piping YUV 4:2:0 frames to ffmpeg (libx264,
 // yuv420p, mp4), with drawing and encoding overlapped (writer thread + the
 // ffmpeg process). A plain timed program, not Google Benchmark: one
 // measurement is a whole render of 150 frames (5 s at 30 fps).
