@@ -15,7 +15,8 @@ constexpr const char* kVersion = "0.1.0";
 
 constexpr const char* kUsage = R"(usage:
   elbowsim run SCENARIO [--out DIR] [--set key=value ...] [--no-render] [--no-report]
-                       [--expect EXPR ...] [--check-step]   simulate, write outputs
+                       [--expect EXPR ...] [--check-step] [--jobs N]
+                                                            simulate, write outputs
   elbowsim validate SCENARIO [--set key=value ...]          load, check, print the model
   elbowsim sweep SCENARIO --key KEY --values V1,V2,... [--out DIR] [run options]
                                                             one run per value of KEY
@@ -48,7 +49,8 @@ beside the first run). --expect "energy_final.electrical_in < 120" checks a
 summary.json metric (compare: "A.energy_final.joule < B.energy_final.joule", A and B
 run folder names); README "Expectations" has the language.
 A scenario with variants: runs each into DIR/<variant>/, then DIR/comparison.csv and
-comparison.json. sweep writes DIR/KEY=V/ per value and DIR/sweep.csv (DIR default:
+comparison.json; their videos are drawn at once, --jobs N at most (default: the cores
+available), and DIR/compare/video.mp4 shows their frames side by side. sweep writes DIR/KEY=V/ per value and DIR/sweep.csv (DIR default:
 output.folder/sweep). montecarlo draws the scenario's uncertainty: parameters N times
 (default 30), runs every variant on each draw under the nominal controller, and writes
 DIR/samples.csv, montecarlo.json and report.html (DIR default: output.folder/montecarlo);
@@ -91,7 +93,8 @@ cxxopts::Options make_options() {
       "values", "sweep: its values, comma-separated", cxxopts::value<std::string>())(
       "samples", "montecarlo: number of draws", cxxopts::value<std::string>())(
       "seed", "montecarlo: seed of the draws", cxxopts::value<std::string>())(
-      "jobs", "montecarlo: threads", cxxopts::value<std::string>())(
+      "jobs", "montecarlo: threads; study: processes; run, sweep: variants drawn at once",
+      cxxopts::value<std::string>())(
       "case", "montecarlo: the study cases to run (axis=level,...)", cxxopts::value<std::string>())(
       "methods", "accuracy: integrators, comma-separated", cxxopts::value<std::string>())(
       "points", "accuracy: settings per method", cxxopts::value<std::string>())(
@@ -118,9 +121,12 @@ std::vector<std::string> strings(const cxxopts::ParseResult& parsed, const char*
                            : std::vector<std::string>{};
 }
 
-// run (and sweep): the scenario, --out, --set, --no-render, --no-report, --expect.
-elbowsim::RunArguments run_arguments(const cxxopts::ParseResult& parsed, const std::string& file) {
+// run (and sweep): the scenario, --out, --set, --no-render, --no-report, --expect;
+// --jobs checked by the caller.
+elbowsim::RunArguments run_arguments(const cxxopts::ParseResult& parsed, const std::string& file,
+                                     int render_jobs) {
   elbowsim::RunArguments args;
+  args.render_jobs = render_jobs;
   args.scenario = file;
   args.sets = strings(parsed, "set");
   if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
@@ -204,10 +210,16 @@ int dispatch(const cxxopts::ParseResult& parsed) {
   const auto words = strings(parsed, "positional");
   const auto sets = strings(parsed, "set");
   const std::string command = words.empty() ? "" : words[0];
-  if (command == "run" && words.size() == 2) return run_command(run_arguments(parsed, words[1]));
+  // run, sweep: --jobs bounds the variants drawn at once (0: the cores available).
+  long render_jobs = 0;
+  if ((command == "run" || command == "sweep") && parsed.count("jobs") &&
+      !whole_number(parsed, command.c_str(), "jobs", 1, render_jobs))
+    return elbowsim::exit_bad_input;
+  if (command == "run" && words.size() == 2)
+    return run_command(run_arguments(parsed, words[1], int(std::min(render_jobs, 256L))));
   if (command == "sweep" && words.size() == 2 && parsed.count("key") && parsed.count("values"))
-    return sweep_command({run_arguments(parsed, words[1]), parsed["key"].as<std::string>(),
-                          parsed["values"].as<std::string>()});
+    return sweep_command({run_arguments(parsed, words[1], int(std::min(render_jobs, 256L))),
+                          parsed["key"].as<std::string>(), parsed["values"].as<std::string>()});
   if (command == "render" && words.size() == 2) {
     RenderArguments args{words[1], {}, {}, {}, {}};
     for (auto [key, value] : {std::pair{"camera", &args.camera},

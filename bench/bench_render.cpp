@@ -1,6 +1,6 @@
 // End-to-end frame rate of the renderer (render/render_job.cpp): scene
 // building, drawing (OSMesa llvmpipe, GL 3.3 core), read-back through
-// pixel-buffer objects, overlay, and piping raw RGB frames to ffmpeg (libx264,
+// pixel-buffer objects, overlay, and piping YUV 4:2:0 frames to ffmpeg (libx264,
 // yuv420p, mp4), with drawing and encoding overlapped (writer thread + the
 // ffmpeg process). A plain timed program, not Google Benchmark: one
 // measurement is a whole render of 150 frames (5 s at 30 fps).
@@ -173,9 +173,9 @@ int main(int argc, char** argv) {
     settings.msaa = c.msaa;
     const FrameSource source(model, recording, settings, "prototype");
     const RenderRequest request{folder, c.video, false};
-    if (!warmed) render_panels({&source}, settings, request), warmed = true;
+    if (!warmed) render_run(source, settings, request), warmed = true;
     std::vector<RenderStats> stats;
-    for (int r = 0; r < runs; ++r) stats.push_back(render_panels({&source}, settings, request));
+    for (int r = 0; r < runs; ++r) stats.push_back(render_run(source, settings, request));
     if (c.width == 1280 && c.msaa == 4 && c.video) std::printf("(%s)\n", stats[0].gl.c_str());
     print_row(c, stats);
     gl = stats[0].gl;

@@ -3,11 +3,9 @@
 // to the renderer: only gl_renderer.cpp and gl_resources.cpp include it.
 #pragma once
 
-#define GL_GLEXT_PROTOTYPES
-#include <GL/glcorearb.h>
-
 #include <array>
 
+#include "render/gl_api.hpp"
 #include "render/gl_renderer.hpp"
 #include "render/instances.hpp"
 #include "render/meshes.hpp"

@@ -26,6 +26,12 @@ struct File {
 
 }  // namespace
 
+std::string frame_file_name(int index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%05d.png", index + 1);
+  return name;
+}
+
 void write_png(const std::filesystem::path& path, int width, int height, const std::uint8_t* rgb) {
   File file{std::fopen(path.c_str(), "wb")};
   if (!file.f) fail(path, std::string("cannot write: ") + std::strerror(errno));

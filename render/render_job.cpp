@@ -1,21 +1,16 @@
 #include "render/render_job.hpp"
 
+#include <sched.h>
+
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <condition_variable>
-#include <cstdio>
 #include <exception>
-#include <mutex>
-#include <optional>
+#include <memory>
 #include <queue>
 #include <stdexcept>
 #include <thread>
 
-#include "render/gl_renderer.hpp"
 #include "render/osmesa_context.hpp"
-#include "render/overlay.hpp"
-#include "render/png_writer.hpp"
 #include "render/video_encoder.hpp"
 
 namespace elbowsim {
@@ -29,154 +24,6 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
-
-// A frame read back, on its way to the writer thread.
-struct Frame {
-  int index = 0;
-  std::vector<std::uint8_t> rgba;  // render size, rows bottom-up
-  std::vector<PanelText> overlay;  // per panel
-};
-
-// A small blocking queue; close() wakes every waiter and makes pop() return
-// nothing once empty.
-template <class T>
-class Channel {
- public:
-  void push(T item) {
-    std::lock_guard lock(mutex_);
-    items_.push(std::move(item));
-    ready_.notify_one();
-  }
-  std::optional<T> pop() {
-    std::unique_lock lock(mutex_);
-    ready_.wait(lock, [&] { return !items_.empty() || closed_; });
-    if (items_.empty()) return std::nullopt;
-    T item = std::move(items_.front());
-    items_.pop();
-    return item;
-  }
-  void close() {
-    std::lock_guard lock(mutex_);
-    closed_ = true;
-    ready_.notify_all();
-  }
-
- private:
-  std::mutex mutex_;
-  std::condition_variable ready_;
-  std::queue<T> items_;
-  bool closed_ = false;
-};
-
-// Panel i of n across the frame, in pixels; the last one takes the remainder.
-PixelRect panel_rect(int i, int n, int width, int height) {
-  const int w = width / n;
-  return {i * w, 0, i == n - 1 ? width - i * w : w, height};
-}
-
-// RGBA rows bottom-up at `scale` times the output size -> RGB rows top-down,
-// averaging scale x scale blocks (scale 1 or 2).
-void to_rgb(const std::uint8_t* rgba, int width, int height, int scale, std::uint8_t* rgb) {
-  const std::size_t in_width = std::size_t(width) * std::size_t(scale);
-  const int in_height = height * scale;
-  for (int y = 0; y < height; ++y) {
-    std::uint8_t* out = rgb + std::size_t(y) * std::size_t(width) * 3;
-    const std::uint8_t* row = rgba + std::size_t(in_height - 1 - y * scale) * in_width * 4;
-    if (scale == 1) {
-      for (int x = 0; x < width; ++x, row += 4, out += 3)
-        out[0] = row[0], out[1] = row[1], out[2] = row[2];
-      continue;
-    }
-    const std::uint8_t* below = row - in_width * 4;  // the next row up in the image
-    for (int x = 0; x < width; ++x, row += 8, below += 8, out += 3)
-      for (int c = 0; c < 3; ++c)
-        out[c] = std::uint8_t((row[c] + row[c + 4] + below[c] + below[c + 4] + 2) / 4);
-  }
-}
-
-std::string frame_name(int index) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%05d.png", index + 1);
-  return name;
-}
-
-// The writer thread: takes read-back frames, converts them, draws the
-// overlay and outputs them; hands the pixel buffers back for reuse. Joined
-// (after the frames queued so far) when it goes out of scope.
-class Writer {
- public:
-  Writer(int width, int height, int scale, int panels, VideoEncoder* encoder,
-         std::optional<fs::path> frames, std::size_t buffer_bytes)
-      : width_(width),
-        height_(height),
-        scale_(scale),
-        panels_(panels),
-        encoder_(encoder),
-        frames_(std::move(frames)),
-        box_widths_(std::size_t(panels), 0) {
-    for (int k = 0; k < 3; ++k) free_.push(std::vector<std::uint8_t>(buffer_bytes));
-    thread_ = std::thread([this] { run(); });
-  }
-  ~Writer() { join(); }
-
-  std::vector<std::uint8_t> buffer() { return *free_.pop(); }  // waits for a free one
-  void push(Frame frame) { queue_.push(std::move(frame)); }
-  bool failed() const { return failed_; }
-  // Waits for the queued frames; rethrows what failed in the thread.
-  void finish() {
-    join();
-    if (error_) std::rethrow_exception(error_);
-  }
-  double compose_seconds = 0, output_seconds = 0;  // read after finish()
-
- private:
-  void join() {
-    queue_.close();
-    if (thread_.joinable()) thread_.join();
-  }
-
-  void run() {
-    std::vector<std::uint8_t> rgb(std::size_t(width_) * std::size_t(height_) * 3);
-    while (std::optional<Frame> frame = queue_.pop()) {
-      if (!failed_) {
-        try {
-          write(*frame, rgb);
-        } catch (...) {
-          error_ = std::current_exception();
-          failed_ = true;
-        }
-      }
-      free_.push(std::move(frame->rgba));
-    }
-  }
-
-  void write(const Frame& frame, std::vector<std::uint8_t>& rgb) {
-    Clock::time_point start = Clock::now();
-    to_rgb(frame.rgba.data(), width_, height_, scale_, rgb.data());
-    for (int p = 0; p < panels_; ++p) {
-      int& box = box_widths_[std::size_t(p)];  // overlay boxes only grow during a render
-      const PanelText& text = frame.overlay[std::size_t(p)];
-      if (text.inset) draw_inset_overlay(rgb.data(), width_, height_, *text.inset);
-      box = draw_overlay(rgb.data(), width_, height_, panel_rect(p, panels_, width_, height_),
-                         text.lines, box);
-    }
-    compose_seconds += seconds_since(start);
-    start = Clock::now();
-    if (encoder_) encoder_->write(rgb.data());
-    if (frames_) write_png(*frames_ / frame_name(frame.index), width_, height_, rgb.data());
-    output_seconds += seconds_since(start);
-  }
-
-  int width_, height_, scale_, panels_;
-  VideoEncoder* encoder_;           // null: no video
-  std::optional<fs::path> frames_;  // PNG folder, if any
-  std::vector<int> box_widths_;     // per panel
-  Channel<Frame> queue_;
-  Channel<std::vector<std::uint8_t>> free_;
-  std::exception_ptr error_;
-  std::atomic<bool> failed_{false};
-  std::thread thread_;
-};
 
 // Temporary outputs, removed unless committed.
 struct Outputs {
@@ -197,6 +44,170 @@ struct Outputs {
     frames_tmp.clear();
   }
 };
+
+// A render's outputs opened: a video needs ffmpeg; without it, PNG frames and
+// the command that makes the video from them.
+struct OpenOutputs {
+  Outputs files;
+  std::optional<VideoEncoder> encoder;  // before the writer that uses it, so destroyed after
+
+  OpenOutputs(const RenderRequest& request, int width, int height, double fps, RenderStats& stats) {
+    files.folder = request.folder;
+    const fs::path ffmpeg = request.video ? find_on_path("ffmpeg") : fs::path();
+    files.video = request.video && !ffmpeg.empty();
+    stats.ffmpeg_missing = request.video && ffmpeg.empty();
+    files.frames = request.frames || stats.ffmpeg_missing;
+    if (files.frames) {
+      files.frames_tmp = request.folder / "frames.tmp";
+      fs::remove_all(files.frames_tmp);
+      fs::create_directories(files.frames_tmp);
+    }
+    if (files.video) {
+      files.video_tmp = request.folder / "video.tmp.mp4";
+      encoder.emplace(ffmpeg, files.video_tmp, width, height, fps);
+    }
+    if (stats.ffmpeg_missing)
+      stats.video_command =
+          frames_to_video_command(request.folder / "frames", request.folder / "video.mp4", fps);
+  }
+  FrameOutputs frame_outputs(SideBySide* side, int panel) {
+    return {encoder ? &*encoder : nullptr,
+            files.frames ? std::optional(files.frames_tmp) : std::nullopt, side, panel};
+  }
+  // Waits for ffmpeg and renames the outputs into place.
+  void finish(RenderStats& stats) {
+    if (encoder) encoder->finish();
+    files.commit();
+    stats.video_written = files.video;
+    stats.frames_written = files.frames;
+  }
+};
+
+// One job under way.
+struct Running {
+  const RenderJob* job = nullptr;
+  RenderStats stats;
+  std::vector<double> times;
+  int scale = 1;
+  std::optional<OpenOutputs> outputs;
+  std::unique_ptr<FrameWriter> writer;
+  std::queue<ReadFrame> in_flight;  // drawn, read-back started, not yet fetched
+
+  bool drawing() const { return writer && !writer->failed() && stats.error.empty(); }
+};
+
+// Panel i of n across the frame, in pixels: one panel, the whole frame.
+PixelRect whole(const RenderSettings& s) { return {0, 0, s.width, s.height}; }
+
+// Frame k of `r` drawn and its read-back started.
+void draw_frame(Running& r, GlRenderer& renderer, int k) {
+  Clock::time_point t0 = Clock::now();
+  ReadFrame frame{k, {}, {}};
+  PanelFrame f = prepare_panel(*r.job->source, r.times[std::size_t(k)], whole(r.job->settings));
+  r.stats.scene_seconds += seconds_since(t0);
+  t0 = Clock::now();
+  renderer.begin_frame(f.scene.background);
+  draw_panel(renderer, f, r.scale);
+  frame.text = std::move(f.text);
+  r.stats.draw_seconds += seconds_since(t0);
+  t0 = Clock::now();
+  renderer.end_frame();
+  r.stats.finish_seconds += seconds_since(t0);
+  r.in_flight.push(std::move(frame));
+}
+
+// The oldest frame in flight copied out and handed to the writer.
+void fetch_one(Running& r, GlRenderer& renderer) {
+  const Clock::time_point t0 = Clock::now();
+  ReadFrame frame = std::move(r.in_flight.front());
+  r.in_flight.pop();
+  frame.rgba = r.writer->buffer();
+  renderer.fetch(frame.rgba.data());
+  r.stats.readback_seconds += seconds_since(t0);
+  r.writer->push(std::move(frame));
+}
+
+// The job's last frames fetched and its writer told there are no more.
+void end_job(Running& r, GlRenderer& renderer) {
+  while (!r.in_flight.empty() && r.drawing()) fetch_one(r, renderer);
+  r.writer->close();
+}
+
+// Draws `jobs` in turns, frame by frame, in a context of this thread: frame
+// k of a job is drawn and its read-back started before its frame k-1 is
+// fetched. A GL failure stops them all (they share the context).
+void draw_jobs(const std::vector<Running*>& jobs, SideBySide* side) {
+  try {
+    OsmesaContext context;
+    std::vector<std::unique_ptr<GlRenderer>> renderers;  // destroyed before the context
+    std::size_t frames = 0;
+    for (Running* r : jobs) {
+      const RenderSettings& s = r->job->settings;
+      renderers.push_back(
+          std::make_unique<GlRenderer>(s.width * r->scale, s.height * r->scale, s.msaa));
+      r->stats.samples = renderers.back()->samples();
+      r->stats.gl = context.description();
+      frames = std::max(frames, r->times.size());
+    }
+    for (std::size_t k = 0; k < frames; ++k)
+      for (std::size_t j = 0; j < jobs.size(); ++j) {
+        Running& r = *jobs[j];
+        if (k >= r.times.size() || !r.drawing()) continue;
+        draw_frame(r, *renderers[j], int(k));
+        if (r.in_flight.size() > 1) fetch_one(r, *renderers[j]);
+        // A job that has ended is closed at once: a side-by-side's longer
+        // panels wait for its frames until it is.
+        if (k + 1 == r.times.size()) end_job(r, *renderers[j]);
+      }
+  } catch (const std::exception& e) {
+    for (Running* r : jobs) r->stats.error = e.what();
+    if (side) side->abort();  // its other panels must not wait for these
+  }
+}
+
+// The jobs split among `threads` drawing threads (job i to thread i mod threads).
+std::vector<std::vector<Running*>> groups(std::vector<Running>& running, int threads) {
+  const std::size_t n = std::size_t(std::clamp(threads, 1, int(running.size())));
+  std::vector<std::vector<Running*>> out(n);
+  for (std::size_t i = 0; i < running.size(); ++i) out[i % n].push_back(&running[i]);
+  return out;
+}
+
+void start(Running& r, const RenderJob& job, SideBySide* side, int panel) {
+  r.job = &job;
+  const RenderSettings& s = job.settings;
+  r.stats.width = s.width;
+  r.stats.height = s.height;
+  r.stats.fps = s.fps;
+  r.scale = s.supersample ? 2 : 1;
+  r.times = frame_times(job.source->end_time(), s.fps);
+  try {
+    r.outputs.emplace(job.request, s.width, s.height, s.fps, r.stats);
+    r.writer = std::make_unique<FrameWriter>(s.width, s.height, r.scale,
+                                             r.outputs->frame_outputs(side, panel));
+  } catch (const std::exception& e) {
+    r.stats.error = e.what();
+    if (side) side->abort();
+  }
+}
+
+// After drawing: the writer's last frames, ffmpeg, the outputs renamed into place.
+void finish(Running& r, Clock::time_point started) {
+  try {
+    if (r.writer) r.writer->finish();
+    if (r.stats.error.empty() && r.outputs) r.outputs->finish(r.stats);
+  } catch (const std::exception& e) {
+    if (r.stats.error.empty()) r.stats.error = e.what();
+  }
+  if (r.writer) {
+    r.stats.compose_seconds = r.writer->compose_seconds;
+    r.stats.output_seconds = r.writer->output_seconds;
+  }
+  r.writer.reset();
+  if (r.stats.error.empty()) r.stats.frames = int(r.times.size());
+  r.outputs.reset();  // what a failed render wrote goes
+  r.stats.wall_seconds = seconds_since(started);
+}
 
 }  // namespace
 
@@ -237,96 +248,94 @@ std::vector<double> frame_times(double end, double fps) {
   return times;
 }
 
-RenderStats render_panels(const std::vector<const FrameSource*>& panels,
-                          const RenderSettings& settings, const RenderRequest& request) {
-  if (panels.empty()) throw std::invalid_argument("render_panels: no panels");
-  const Clock::time_point start = Clock::now();
-  RenderStats stats;
-  stats.width = settings.width;
-  stats.height = settings.height;
-  stats.fps = settings.fps;
+int available_cores() {
+  cpu_set_t set;
+  if (::sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
+  return int(std::max(1u, std::thread::hardware_concurrency()));
+}
 
-  // Outputs: a video needs ffmpeg; without it, PNG frames and the command.
-  Outputs out;
-  out.folder = request.folder;
-  const fs::path ffmpeg = request.video ? find_on_path("ffmpeg") : fs::path();
-  out.video = request.video && !ffmpeg.empty();
-  stats.ffmpeg_missing = request.video && ffmpeg.empty();
-  out.frames = request.frames || stats.ffmpeg_missing;
-  if (out.frames) {
-    out.frames_tmp = request.folder / "frames.tmp";
-    fs::remove_all(out.frames_tmp);
-    fs::create_directories(out.frames_tmp);
+std::string side_by_side_problem(const std::vector<RenderJob>& jobs) {
+  for (const RenderJob& j : jobs) {
+    const RenderSettings &a = jobs.front().settings, &b = j.settings;
+    if (b.height != a.height)
+      return "the runs' frames differ in height (" + std::to_string(a.height) + " and " +
+             std::to_string(b.height) + " px)";
+    if (b.fps != a.fps) return "the runs' frame rates differ";
   }
+  return "";
+}
 
-  const int scale = settings.supersample ? 2 : 1;
-  const int rw = settings.width * scale, rh = settings.height * scale;
-  const int n = int(panels.size());
-  OsmesaContext context;
-  stats.gl = context.description();
-  GlRenderer renderer(rw, rh, settings.msaa);
-  stats.samples = renderer.samples();
+RenderResults render_jobs(const std::vector<RenderJob>& jobs,
+                          const std::optional<RenderRequest>& side_by_side, int threads) {
+  if (jobs.empty()) throw std::invalid_argument("render_jobs: no jobs");
+  if (side_by_side)
+    if (const std::string problem = side_by_side_problem(jobs); !problem.empty())
+      throw std::invalid_argument("no side-by-side video: " + problem);
+  const Clock::time_point started = Clock::now();
+  RenderResults results;
 
-  std::optional<VideoEncoder> encoder;
-  if (out.video) {
-    out.video_tmp = request.folder / "video.tmp.mp4";
-    encoder.emplace(ffmpeg, out.video_tmp, settings.width, settings.height, settings.fps);
-  }
-  Writer writer(settings.width, settings.height, scale, n, encoder ? &*encoder : nullptr,
-                out.frames ? std::optional(out.frames_tmp) : std::nullopt,
-                std::size_t(rw) * std::size_t(rh) * 4);
-
-  double end = 0;
-  for (const FrameSource* p : panels) end = std::max(end, p->end_time());
-  const std::vector<double> times = frame_times(end, settings.fps);
-  std::queue<Frame> in_flight;  // drawn, read-back started, not yet fetched
-  auto fetch_one = [&] {
-    Clock::time_point t0 = Clock::now();
-    Frame frame = std::move(in_flight.front());
-    in_flight.pop();
-    frame.rgba = writer.buffer();
-    renderer.fetch(frame.rgba.data());
-    stats.readback_seconds += seconds_since(t0);
-    writer.push(std::move(frame));
-  };
-  // Frame k is drawn and its read-back started before frame k-1 is fetched
-  // and handed to the writer.
-  for (int k = 0; k < int(times.size()) && !writer.failed(); ++k) {
-    const double t = times[std::size_t(k)];
-    Clock::time_point t0 = Clock::now();
-    Frame frame{k, {}, {}};
-    std::vector<PanelFrame> prepared;
-    for (int p = 0; p < n; ++p)
-      prepared.push_back(prepare_panel(*panels[std::size_t(p)], t,
-                                       panel_rect(p, n, settings.width, settings.height)));
-    stats.scene_seconds += seconds_since(t0);
-    t0 = Clock::now();
-    renderer.begin_frame(prepared.front().scene.background);
-    for (PanelFrame& f : prepared) {
-      draw_panel(renderer, f, scale);
-      frame.overlay.push_back(std::move(f.text));
+  // The side-by-side's outputs and composition, fed by the jobs' writers.
+  std::optional<RenderStats> side_stats;
+  std::optional<OpenOutputs> side_outputs;
+  std::optional<SideBySide> side;
+  if (side_by_side) {
+    const RenderSettings& first = jobs.front().settings;
+    std::vector<int> widths;
+    for (const RenderJob& j : jobs) widths.push_back(j.settings.width);
+    side_stats.emplace();
+    side_stats->width = 0;
+    for (int w : widths) side_stats->width += w;
+    side_stats->height = first.height;
+    side_stats->fps = first.fps;
+    side_stats->samples = first.msaa;
+    try {
+      side_outputs.emplace(*side_by_side, side_stats->width, first.height, first.fps, *side_stats);
+      const FrameOutputs o = side_outputs->frame_outputs(nullptr, 0);
+      side.emplace(widths, first.height, o.encoder, o.frames);
+    } catch (const std::exception& e) {
+      side_stats->error = e.what();
     }
-    stats.draw_seconds += seconds_since(t0);
-    t0 = Clock::now();
-    renderer.end_frame();
-    stats.finish_seconds += seconds_since(t0);
-    in_flight.push(std::move(frame));
-    if (in_flight.size() > 1) fetch_one();
   }
-  while (!in_flight.empty() && !writer.failed()) fetch_one();
-  writer.finish();
-  if (encoder) encoder->finish();
-  out.commit();
+  SideBySide* composer = side ? &*side : nullptr;
 
-  stats.frames = int(times.size());
-  stats.video_written = out.video;
-  stats.frames_written = out.frames;
-  if (stats.ffmpeg_missing)
-    stats.video_command = frames_to_video_command(request.folder / "frames",
-                                                  request.folder / "video.mp4", settings.fps);
-  stats.compose_seconds = writer.compose_seconds;
-  stats.output_seconds = writer.output_seconds;
-  stats.wall_seconds = seconds_since(start);
+  std::vector<Running> running(jobs.size());
+  for (std::size_t i = 0; i < jobs.size(); ++i) start(running[i], jobs[i], composer, int(i));
+  const std::vector<std::vector<Running*>> by_thread = groups(running, threads);
+  results.threads = int(by_thread.size());
+  std::vector<std::thread> helpers;
+  for (std::size_t t = 1; t < by_thread.size(); ++t)
+    helpers.emplace_back([&, t] { draw_jobs(by_thread[t], composer); });
+  draw_jobs(by_thread[0], composer);
+  for (std::thread& h : helpers) h.join();
+  for (Running& r : running) finish(r, started);
+  for (Running& r : running) results.jobs.push_back(r.stats);
+
+  if (side_stats) {
+    for (const Running& r : running)
+      if (side_stats->error.empty() && !r.stats.error.empty())
+        side_stats->error = "a panel failed: " + r.stats.error;
+    if (side_stats->error.empty() && side) side_stats->error = side->error();
+    try {
+      if (side_stats->error.empty()) side_outputs->finish(*side_stats);
+    } catch (const std::exception& e) {
+      side_stats->error = e.what();
+    }
+    if (side) {
+      side_stats->frames = side_stats->error.empty() ? side->frames() : 0;
+      side_stats->output_seconds = side->output_seconds();
+    }
+    for (const Running& r : running) side_stats->gl = r.stats.gl;
+    side_outputs.reset();
+    side_stats->wall_seconds = seconds_since(started);
+    results.side_by_side = side_stats;
+  }
+  return results;
+}
+
+RenderStats render_run(const FrameSource& source, const RenderSettings& settings,
+                       const RenderRequest& request) {
+  RenderStats stats = render_jobs({{&source, settings, request}}, std::nullopt, 1).jobs.front();
+  if (!stats.error.empty()) throw std::runtime_error(stats.error);
   return stats;
 }
 

@@ -1,12 +1,17 @@
-// Renders recorded runs into a video and/or PNG frames: frames sampled by
-// simulation time at settings.fps, one panel per FrameSource side by side,
-// overlay text on each panel. The only place that creates a GL context, so a
-// run that does not ask for frames never pays for one.
+// Renders recorded runs into videos and/or PNG frames: frames sampled by
+// simulation time at settings.fps, the overlay text on each; and, for a
+// scenario's variants, the runs' frames placed side by side (side_by_side.hpp:
+// copied from the runs' own frames, not drawn again). The only place that
+// creates GL contexts, so a run that does not ask for frames never pays for one.
 //
-// Pipeline: the calling thread builds scenes, draws and reads frame k back
-// (pixel-buffer objects, one frame in flight) while a writer thread converts
-// frame k-1, draws its overlay and pipes it to ffmpeg (another process, which
-// encodes in parallel) or writes it as PNG.
+// Pipeline of one render: a drawing thread builds scenes, draws and reads
+// frame k back (pixel-buffer objects, one frame in flight) while the
+// render's writer thread (frame_writer.hpp) finishes frame k-1 and pipes it
+// to ffmpeg (another process, which encodes in parallel) or writes it as
+// PNG. Several renders are drawn by up to `threads` drawing threads, each
+// with its own OSMesa context (llvmpipe then rasterises each context's
+// frames with its own threads); a thread with several renders draws them
+// in turns, frame by frame.
 #pragma once
 
 #include <filesystem>
@@ -15,8 +20,8 @@
 #include <vector>
 
 #include "render/frame_source.hpp"
+#include "render/frame_writer.hpp"
 #include "render/gl_renderer.hpp"
-#include "render/overlay.hpp"
 #include "render/render_settings.hpp"
 
 namespace elbowsim {
@@ -28,7 +33,7 @@ struct RenderRequest {
 };
 
 struct RenderStats {
-  int frames = 0;             // frames rendered
+  int frames = 0;             // frames written
   int width = 0, height = 0;  // [px] of the output
   int samples = 1;            // MSAA samples per pixel in use
   double fps = 0;
@@ -38,30 +43,56 @@ struct RenderStats {
   // video_command makes the video from them.
   bool ffmpeg_missing = false;
   std::string video_command;
-  std::string gl;  // GL renderer and version used
-  // Where the time went [s]. Calling thread: building scenes, issuing the
+  std::string gl;     // GL renderer and version used
+  std::string error;  // why this render failed ("" if it did not): nothing of it was kept
+  // Where the time went [s]. Drawing thread: building scenes, issuing the
   // draws (llvmpipe transforms and bins the triangles), end of frame (llvmpipe
   // rasterizes and shades there, then the MSAA resolve blit and glReadPixels
   // into a pixel-buffer object), fetch (mapping it, copying the pixels out,
   // waiting for a free buffer when the writer is behind). Writer thread:
-  // RGBA -> RGB (and 2x2 averaging) plus overlay, then output (pipe writes
-  // wait for ffmpeg's encoder; or PNG encoding).
+  // RGBA -> RGB (and 2x2 averaging) plus overlay, then output (YUV
+  // conversion and pipe writes, which wait for ffmpeg's encoder; PNG
+  // encoding; handing the frame to a side-by-side composition). A
+  // side-by-side's own time is all output (copies wait for the panels).
   double wall_seconds = 0, scene_seconds = 0, draw_seconds = 0, finish_seconds = 0,
          readback_seconds = 0, compose_seconds = 0, output_seconds = 0;
 };
 
-// Renders `panels` (at least one; each must outlive the call) for the longest
-// panel's recorded duration. Outputs appear only when complete (written under
-// temporary names, then renamed; frames/ is replaced as a whole). Throws
-// std::runtime_error on GL, ffmpeg or file failures, leaving nothing behind.
-RenderStats render_panels(const std::vector<const FrameSource*>& panels,
-                          const RenderSettings& settings, const RenderRequest& request);
-
-// What the writer thread draws over a panel: the text box and the inset's marks.
-struct PanelText {
-  std::vector<std::string> lines;
-  std::optional<InsetOverlay> inset;  // output pixels of the whole frame
+// One recorded run to render; `source` must outlive the call.
+struct RenderJob {
+  const FrameSource* source = nullptr;
+  RenderSettings settings;
+  RenderRequest request;
 };
+
+struct RenderResults {
+  std::vector<RenderStats> jobs;            // in the order of the jobs
+  std::optional<RenderStats> side_by_side;  // when asked
+  int threads = 0;                          // drawing threads used: min(threads, jobs)
+};
+
+// Renders every job for its recording's duration, drawing up to `threads`
+// jobs at once, and with `side_by_side` the jobs' frames side by side, left
+// to right in job order, into side_by_side->folder. Outputs appear only when
+// complete (written under temporary names, then renamed; frames/ is replaced
+// as a whole). A job that fails (GL, ffmpeg, files) leaves nothing behind
+// and its error in its stats; the side-by-side then fails too. Throws
+// std::invalid_argument for no jobs, or when the side-by-side's jobs differ
+// in height or fps (side_by_side_problem).
+RenderResults render_jobs(const std::vector<RenderJob>& jobs,
+                          const std::optional<RenderRequest>& side_by_side, int threads);
+
+// The cores this process may run on (its CPU affinity, so `taskset -c 0`
+// gives 1): render_jobs' usual number of drawing threads.
+int available_cores();
+
+// Why `jobs` cannot be placed side by side ("" when they can): their frames
+// must have one height and one rate.
+std::string side_by_side_problem(const std::vector<RenderJob>& jobs);
+
+// One job in the calling thread; throws std::runtime_error with its error.
+RenderStats render_run(const FrameSource& source, const RenderSettings& settings,
+                       const RenderRequest& request);
 
 // One panel of one frame, without GL: `source` at time t [s] in `panel`
 // (output pixels of the frame): its camera, scene, inset (rectangle within

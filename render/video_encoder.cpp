@@ -14,6 +14,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "render/yuv.hpp"
+
 extern char** environ;
 
 namespace elbowsim {
@@ -26,9 +28,13 @@ std::string format_fps(double fps) {
   return s.str();
 }
 
-// ffmpeg's options in its own order: input (raw RGB on stdin), then output.
+// ffmpeg's options in its own order: input (raw YUV on stdin), then output.
 const char* const kPreset = "veryfast";  // x264 speed/size trade-off; crf 20 looks clean
 const char* const kCrf = "20";
+// The colour matrix, primaries, transfer and range the video's header names
+// (those rgb_to_yuv420 converts with; sRGB shares BT.709's primaries).
+const char* const kColour[] = {"-colorspace", "bt709", "-color_primaries", "bt709",
+                               "-color_trc",  "bt709", "-color_range",     "tv"};
 
 }  // namespace
 
@@ -49,34 +55,37 @@ std::filesystem::path find_on_path(const std::string& program) {
 
 std::vector<std::string> ffmpeg_arguments(const std::filesystem::path& output, int width,
                                           int height, double fps) {
-  return {"-hide_banner", "-loglevel",
-          "error",        "-y",
-          "-f",           "rawvideo",
-          "-pix_fmt",     "rgb24",
-          "-video_size",  std::to_string(width) + "x" + std::to_string(height),
-          "-framerate",   format_fps(fps),
-          "-i",           "pipe:0",
-          "-an",          "-c:v",
-          "libx264",      "-preset",
-          kPreset,        "-crf",
-          kCrf,           "-pix_fmt",
-          "yuv420p",      "-movflags",
-          "+faststart",   "-f",
-          "mp4",          output.string()};
+  std::vector<std::string> args = {"-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo",
+                                   "-pix_fmt", "yuv420p", "-video_size",
+                                   std::to_string(width) + "x" + std::to_string(height),
+                                   "-framerate", format_fps(fps)};
+  args.insert(args.end(), std::begin(kColour), std::end(kColour));
+  for (const char* a : {"-i", "pipe:0", "-an", "-c:v", "libx264", "-preset", kPreset, "-crf", kCrf,
+                        "-pix_fmt", "yuv420p"})
+    args.emplace_back(a);
+  args.insert(args.end(), std::begin(kColour), std::end(kColour));
+  for (const char* a : {"-movflags", "+faststart", "-f", "mp4"}) args.emplace_back(a);
+  args.push_back(output.string());
+  return args;
 }
 
 std::string frames_to_video_command(const std::filesystem::path& frames,
                                     const std::filesystem::path& video, double fps) {
+  std::string colour;
+  for (const char* a : kColour) colour += std::string(" ") + a;
   return "ffmpeg -framerate " + format_fps(fps) + " -i '" + (frames / "frame_%05d.png").string() +
          "' -c:v libx264 -preset " + kPreset + " -crf " + kCrf +
-         " -pix_fmt yuv420p -movflags +faststart '" + video.string() + "'";
+         " -vf scale=out_color_matrix=bt709:out_range=tv -pix_fmt yuv420p" + colour +
+         " -movflags +faststart '" + video.string() + "'";
 }
 
 VideoEncoder::VideoEncoder(const std::filesystem::path& ffmpeg, const std::filesystem::path& output,
                            int width, int height, double fps)
     : output_(output),
       log_(output.string() + ".log"),
-      frame_bytes_(std::size_t(width) * std::size_t(height) * 3) {
+      width_(width),
+      height_(height),
+      yuv_(yuv420_bytes(width, height)) {
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0)
     throw std::runtime_error(std::string("cannot make a pipe to ffmpeg: ") + std::strerror(errno));
@@ -116,9 +125,10 @@ VideoEncoder::~VideoEncoder() {
 }
 
 void VideoEncoder::write(const std::uint8_t* rgb) {
+  rgb_to_yuv420(rgb, width_, height_, yuv_.data());
   std::size_t done = 0;
-  while (done < frame_bytes_) {
-    const ssize_t n = ::write(pipe_, rgb + done, frame_bytes_ - done);
+  while (done < yuv_.size()) {
+    const ssize_t n = ::write(pipe_, yuv_.data() + done, yuv_.size() - done);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) throw std::runtime_error("ffmpeg stopped reading frames" + log_tail());
     done += std::size_t(n);

@@ -1,5 +1,6 @@
-// Video through the `ffmpeg` program: raw RGB frames are piped to its stdin
-// and it writes H.264 (libx264), yuv420p, in an .mp4 with +faststart.
+// Video through the `ffmpeg` program: frames are converted to YUV 4:2:0
+// (BT.709, limited range: render/yuv.hpp) and piped raw to its stdin; it
+// writes H.264 (libx264), yuv420p, tagged BT.709, in an .mp4 with +faststart.
 #pragma once
 
 #include <sys/types.h>
@@ -14,8 +15,8 @@ namespace elbowsim {
 // The first executable file named `program` in the PATH directories; empty if none.
 std::filesystem::path find_on_path(const std::string& program);
 
-// The arguments ffmpeg gets (after the program name) to encode raw RGB frames
-// from stdin into `output`.
+// The arguments ffmpeg gets (after the program name) to encode raw YUV 4:2:0
+// frames from stdin into `output`.
 std::vector<std::string> ffmpeg_arguments(const std::filesystem::path& output, int width,
                                           int height, double fps);
 
@@ -36,8 +37,9 @@ class VideoEncoder {
   VideoEncoder(const VideoEncoder&) = delete;
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
-  // One frame: width * height * 3 bytes, RGB, rows top-down. Throws if ffmpeg
-  // has stopped (its last messages in what()).
+  // One frame: width * height * 3 bytes, RGB, rows top-down (converted to
+  // YUV in the calling thread). Throws if ffmpeg has stopped (its last
+  // messages in what()).
   void write(const std::uint8_t* rgb);
   // Closes the pipe and waits for ffmpeg; throws with its messages if it failed.
   void finish();
@@ -47,7 +49,8 @@ class VideoEncoder {
   int stop();  // closes the pipe, reaps ffmpeg, returns its wait status
 
   std::filesystem::path output_, log_;
-  std::size_t frame_bytes_;
+  int width_, height_;
+  std::vector<std::uint8_t> yuv_;  // one frame, as piped
   int pipe_ = -1;  // write end, ffmpeg's stdin
   pid_t pid_ = -1;
   void (*old_sigpipe_)(int) = nullptr;

@@ -188,6 +188,21 @@ TEST_CASE("render frames: output.frames writes numbered PNGs; --no-render writes
   CHECK_FALSE(fs::exists(none / "frames"));
 }
 
+TEST_CASE("OSMesa (and the LLVM it loads) is loaded only by a run that renders") {
+  // The dynamic loader names every library it loads under LD_DEBUG=libs.
+  auto loads_osmesa = [](const std::string& arguments) {
+    const Outcome out = shell("LD_DEBUG=libs " + std::string(ELBOWSIM_BINARY) + " " + arguments);
+    INFO(arguments, "\n", out.output.substr(0, 2000));
+    REQUIRE(out.exit_code == 0);
+    return out.output.find("libOSMesa") != std::string::npos;
+  };
+  CHECK_FALSE(loads_osmesa("--version"));
+  CHECK_FALSE(loads_osmesa("validate " + kElbowRest));
+  const fs::path dir = scratch("render", "lazy_osmesa");
+  CHECK_FALSE(loads_osmesa(short_run(dir, "--no-render --no-report")));
+  CHECK(loads_osmesa(short_run(dir, "--set output.frames=true --no-report")));  // it does render
+}
+
 TEST_CASE("render without ffmpeg on PATH: PNG frames and the command that makes the video") {
   const fs::path dir = scratch("render", "no_ffmpeg");
   REQUIRE(cli(short_run(dir, "")).exit_code == 0);
@@ -241,33 +256,6 @@ TEST_CASE("render: a bad run folder is exit 2 with a clear message, and nothing 
         std::string::npos);
   CHECK(cli("render " + ok.string() + " --fps 0").exit_code == 2);
   CHECK_FALSE(fs::exists(ok / "video.mp4"));
-}
-
-TEST_CASE("render panels: two runs side by side, each with its own overlay") {
-  const Model model = render_fixture::arm();
-  const Recording rec = render_fixture::recording();
-  RenderSettings settings;
-  settings.width = kWidth;
-  settings.height = kHeight;
-  settings.fps = 5;
-  const FrameSource left(model, rec, settings, "left");
-  const FrameSource right(model, rec, settings, "right");
-  const fs::path dir = scratch("render", "panels");
-  const RenderStats stats = render_panels({&left, &right}, settings, {dir, false, true});
-  CHECK(stats.frames == 6);  // 1 s at 5 fps
-  CHECK(stats.frames_written);
-  int w = 0, h = 0;
-  const std::vector<std::uint8_t> rgb = read_png(dir / "frames" / "frame_00006.png", w, h);
-  REQUIRE(w == kWidth);
-  // The overlay's dark box at the top left of each half; the background below.
-  auto brightness = [&](int x, int y) {
-    const std::size_t i = (std::size_t(y) * std::size_t(w) + std::size_t(x)) * 3;
-    return rgb[i] + rgb[i + 1] + rgb[i + 2];
-  };
-  CHECK(brightness(7, 7) < 3 * 140);
-  CHECK(brightness(kWidth / 2 + 7, 7) < 3 * 140);
-  CHECK(brightness(kWidth / 2 - 2, kHeight - 2) > 3 * 200);
-  CHECK(brightness(kWidth - 2, kHeight - 2) > 3 * 200);
 }
 
 TEST_CASE("render with an ffmpeg that fails: exit 1 with its message, nothing left behind") {

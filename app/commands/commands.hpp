@@ -38,6 +38,7 @@ struct RunArguments {
   bool report = true;               // false: --no-report (skip report.html, plots/)
   std::vector<std::string> expect;  // --expect expressions over summary.json
   bool check_step = false;          // --check-step: rerun at half the step (summary step_check)
+  int render_jobs = 0;  // --jobs: variants drawn at once at most; 0: the cores available
 };
 
 // elbowsim render RUN_DIR [--camera preset] [--size WxH] [--fps N]
@@ -157,13 +158,23 @@ bool expectations_fit(const std::vector<std::string>& expressions,
 int check_expectations(const std::vector<std::string>& expressions,
                        const nlohmann::ordered_json& metrics);
 
-// Renders a recording of `scenario` into `folder` as its output section asks
-// (video.mp4 and/or frames/), printing what was written. Used by run and render.
-int render_outputs(const Scenario& scenario, const Recording& recording,
-                   const std::filesystem::path& folder);
-// One video of several runs side by side, each panel labelled with its folder
-// name (the variants of a comparison), into out/video.mp4.
-int render_side_by_side(const std::vector<std::filesystem::path>& runs,
-                        const std::filesystem::path& out);
+// A recorded run to render into its folder as its output section asks.
+struct RunToRender {
+  const Scenario* scenario = nullptr;  // must outlive the call, as must recording
+  const Recording* recording = nullptr;
+  std::filesystem::path folder;
+};
+// Renders `runs` (those whose output section asks for video.mp4 or frames/)
+// on `threads` drawing threads at most (0: the cores available), printing
+// what was written; with `side_by_side`, also every run's frames placed side
+// by side, left to right, into that folder (video.mp4 when the first run
+// asks for a video, frames/ when it asks for frames; each panel is the run's
+// own frame, not drawn again). Returns one code per run (exit_ok,
+// exit_bad_input, exit_io); `side_by_side_code` gets the side-by-side's
+// (exit_io when it failed; exit_ok, with a warning, when the runs' frames
+// differ in height or rate and none is made).
+std::vector<int> render_runs(const std::vector<RunToRender>& runs,
+                             const std::optional<std::filesystem::path>& side_by_side,
+                             int& side_by_side_code, int threads = 0);
 
 }  // namespace elbowsim

@@ -1,5 +1,5 @@
 // elbowsim render RUN_DIR: re-renders a saved run (scenario.yaml + trajectory.csv)
-// without simulating; and render_outputs, which run uses after simulating.
+// without simulating; and render_runs, which run uses after simulating.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -84,18 +84,24 @@ std::string load_run(const fs::path& folder, Scenario& scenario, Recording& reco
   return "";
 }
 
+// The title over a run's frames: the scene's name, and the variant's.
+std::string title(const Scenario& scenario) {
+  return scenario.variant.empty() ? scenario.model.name
+                                  : scenario.model.name + ": " + scenario.variant;
+}
+
 int render_with(const Scenario& scenario, const Recording& recording, const fs::path& folder,
                 const RenderSettings& settings, RenderRequest request) {
   request.folder = folder;
   std::optional<FrameSource> source;
   try {
-    source.emplace(scenario.model, recording, settings, scenario.model.name);
+    source.emplace(scenario.model, recording, settings, title(scenario));
   } catch (const std::invalid_argument& e) {
     std::cerr << "error: cannot render " << folder.string() << ": " << e.what() << '\n';
     return exit_bad_input;
   }
   try {
-    print_stats(render_panels({&*source}, settings, request), folder);
+    print_stats(render_run(*source, settings, request), folder);
   } catch (const std::exception& e) {
     std::cerr << "error: rendering failed: " << e.what() << '\n';
     return exit_io;
@@ -105,33 +111,64 @@ int render_with(const Scenario& scenario, const Recording& recording, const fs::
 
 }  // namespace
 
-int render_side_by_side(const std::vector<fs::path>& runs, const fs::path& out) {
-  std::vector<Scenario> scenarios(runs.size());
-  std::vector<Recording> recordings(runs.size());
-  std::vector<FrameSource> sources;
-  sources.reserve(runs.size());
-  try {
-    for (std::size_t k = 0; k < runs.size(); ++k) {
-      const std::string problem = load_run(runs[k], scenarios[k], recordings[k]);
-      if (!problem.empty()) throw std::runtime_error(problem);
-      // Each panel is labelled with its run folder's name (the variant).
-      sources.emplace_back(scenarios[k].model, recordings[k], scenarios[0].render,
-                           runs[k].filename().string());
+std::vector<int> render_runs(const std::vector<RunToRender>& runs,
+                             const std::optional<fs::path>& side_by_side, int& side_by_side_code,
+                             int threads) {
+  side_by_side_code = exit_ok;
+  std::vector<int> codes(runs.size(), exit_ok);
+  std::vector<std::optional<FrameSource>> sources(runs.size());
+  std::vector<RenderJob> jobs;
+  std::vector<std::size_t> job_run;  // the run of each job
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const Scenario& s = *runs[k].scenario;
+    if (!s.output.video && !s.output.frames) continue;
+    try {
+      sources[k].emplace(s.model, *runs[k].recording, s.render, title(s));
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "error: cannot render " << runs[k].folder.string() << ": " << e.what() << '\n';
+      codes[k] = exit_bad_input;
+      continue;
     }
-    std::vector<const FrameSource*> panels;
-    for (const FrameSource& s : sources) panels.push_back(&s);
-    fs::create_directories(out);
-    print_stats(render_panels(panels, scenarios[0].render, {out, true, false}), out);
-  } catch (const std::exception& e) {
-    std::cerr << "error: side-by-side video: " << e.what() << '\n';
-    return exit_io;
+    jobs.push_back({&*sources[k], s.render, {runs[k].folder, s.output.video, s.output.frames}});
+    job_run.push_back(k);
   }
-  return exit_ok;
-}
-
-int render_outputs(const Scenario& scenario, const Recording& recording, const fs::path& folder) {
-  return render_with(scenario, recording, folder, scenario.render,
-                     {folder, scenario.output.video, scenario.output.frames});
+  if (jobs.empty()) return codes;
+  // The side-by-side needs every run's frames, of one height and rate.
+  std::optional<RenderRequest> side;
+  if (side_by_side && jobs.size() == runs.size()) {
+    if (const std::string problem = side_by_side_problem(jobs); !problem.empty()) {
+      std::cerr << "warning: no side-by-side video: " << problem << '\n';
+    } else {
+      fs::create_directories(*side_by_side);
+      const Scenario& first = *runs.front().scenario;
+      side = RenderRequest{*side_by_side, first.output.video, first.output.frames};
+    }
+  }
+  const int cores = available_cores();
+  const RenderResults results = render_jobs(jobs, side, threads > 0 ? threads : cores);
+  if (jobs.size() > 1)
+    std::cout << "render: " << jobs.size() << " runs drawn at once on " << results.threads
+              << (results.threads == 1 ? " thread" : " threads") << " (" << cores
+              << (cores == 1 ? " core" : " cores") << " available)\n";
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
+    const RenderStats& stats = results.jobs[j];
+    const fs::path& folder = runs[job_run[j]].folder;
+    if (!stats.error.empty()) {
+      std::cerr << "error: rendering " << folder.string() << " failed: " << stats.error << '\n';
+      codes[job_run[j]] = exit_io;
+    } else {
+      print_stats(stats, folder);
+    }
+  }
+  if (results.side_by_side) {
+    if (!results.side_by_side->error.empty()) {
+      std::cerr << "error: side-by-side video: " << results.side_by_side->error << '\n';
+      side_by_side_code = exit_io;
+    } else {
+      print_stats(*results.side_by_side, *side_by_side);
+    }
+  }
+  return codes;
 }
 
 int render_command(const RenderArguments& args) {

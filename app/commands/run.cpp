@@ -67,12 +67,16 @@ void write_outputs(const Scenario& scenario, const RunResult& result,
   files.commit();
 }
 
-// One run folder: simulate, write, render, report. Its code: exit_ok,
-// exit_io (nothing more done), exit_run_failed, or what rendering or the
-// report returned. Expectations are the caller's.
+// One run folder, simulated and its data written. Its code: exit_ok,
+// exit_io (nothing more to do), exit_run_failed; rendering and the report
+// come after (finish_run), once every variant has been simulated, so that
+// the variants can be drawn at once. Expectations are the caller's.
 struct RunOutcome {
   int code = exit_ok;
   nlohmann::ordered_json summary;  // as written to summary.json
+  RunResult result;
+  bool rendered = false;  // video or frames made by this run
+  bool recorded() const { return result.trajectory.rows() > 0; }
 };
 
 // A hand task that cannot be followed stops the run before it starts: it
@@ -113,11 +117,12 @@ void add_step_check(const Scenario& scenario, const RunResult& result,
   std::fflush(stdout);
 }
 
-RunOutcome run_one(const Scenario& scenario, const std::filesystem::path& folder,
-                   const RunArguments& args) {
-  const RunResult result = simulate_or_fail(scenario);
-  const bool recorded = result.trajectory.rows() > 0;
-  RunOutcome outcome{exit_ok, run_summary(scenario, result)};
+RunOutcome simulate_one(const Scenario& scenario, const std::filesystem::path& folder,
+                        const RunArguments& args) {
+  RunOutcome outcome;
+  outcome.result = simulate_or_fail(scenario);
+  const RunResult& result = outcome.result;
+  outcome.summary = run_summary(scenario, result);
   if (args.check_step && result.valid && !interrupt_exit_code()) add_step_check(scenario, result, outcome.summary);
   try {
     std::filesystem::create_directories(folder);
@@ -145,48 +150,46 @@ RunOutcome run_one(const Scenario& scenario, const std::filesystem::path& folder
     outcome.code = interrupt_exit_code();
     return outcome;
   }
-  // Frames and video last, from the recording in memory (what it recorded,
-  // also when the run stopped early).
-  const bool render = recorded && args.render && (scenario.output.video || scenario.output.frames);
-  const int rendered = render ? render_outputs(scenario, result.trajectory, folder) : exit_ok;
+  if (!result.valid) outcome.code = exit_run_failed;
+  return outcome;
+}
+
+// Whether the run's frames or video are to be drawn (from the recording in
+// memory: what it recorded, also when the run stopped early).
+bool wants_render(const Scenario& scenario, const RunOutcome& outcome, const RunArguments& args) {
+  return outcome.recorded() && args.render && (scenario.output.video || scenario.output.frames);
+}
+
+// After rendering (`rendered`: its code): the manifest, then the report,
+// which reads the folder back and embeds the video only when the manifest
+// lists it. Returns exit_io when the manifest cannot be written.
+int finish_run(const Scenario& scenario, const std::filesystem::path& folder,
+               const RunArguments& args, RunOutcome& outcome, int rendered) {
   try {
-    if (render) record_rendered(folder, scenario.output.video, scenario.output.frames);
+    if (outcome.rendered) record_rendered(folder, scenario.output.video, scenario.output.frames);
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << '\n';
     outcome.code = exit_io;
-    return outcome;
+    return exit_io;
   }
-  // The report after everything else: it reads the folder back, and embeds
-  // the video only when the manifest lists it (made by this run).
-  const int reported = recorded && args.report ? report_outputs(folder) : exit_ok;
-  outcome.code = !result.valid ? exit_run_failed : rendered != exit_ok ? rendered : reported;
-  return outcome;
+  const int reported = outcome.recorded() && args.report ? report_outputs(folder) : exit_ok;
+  if (outcome.code == exit_ok) outcome.code = rendered != exit_ok ? rendered : reported;
+  return exit_ok;
 }
 
 // The variants' comparison: comparison.json and comparison.csv in `folder`
 // (report/comparison.hpp writes both), and with the report compare/ beside
-// them (report.html, plots, and with output.video a side-by-side video).
+// them (report.html, plots, and the side-by-side video when this run made it).
 int compare_variants(const RunArguments& args, const std::vector<Scenario>& variants,
-                     const std::filesystem::path& folder) {
+                     const std::filesystem::path& folder, bool video) {
   try {
     std::vector<report::RunData> loaded;
     for (const Scenario& v : variants) loaded.push_back(load_run_folder(folder / v.variant));
     const report::ComparisonTables tables{folder, "variant"};
-    // compare/ holds only what this run makes: an earlier run's side-by-side
-    // video or report goes first (a --no-render run must not show an old video).
-    const std::filesystem::path compare = folder / "compare";
-    for (const std::string& name : derived_artefacts()) std::filesystem::remove_all(compare / name);
     if (!args.report) {
       report::write_comparison_tables(report::compare_runs(loaded), tables);
     } else {
-      bool video = false;
-      if (args.render && variants.front().output.video) {
-        std::vector<std::filesystem::path> folders;
-        for (const Scenario& v : variants) folders.push_back(folder / v.variant);
-        if (render_side_by_side(folders, compare) != exit_ok) return exit_io;
-        video = std::filesystem::exists(compare / "video.mp4");
-      }
-      const auto files = report::write_comparison_report(loaded, compare, tables, video);
+      const auto files = report::write_comparison_report(loaded, folder / "compare", tables, video);
       std::cout << "comparison report: " << files.html.string() << '\n';
     }
   } catch (const std::exception& e) {
@@ -220,9 +223,43 @@ bool recording_fits(const Scenario& s) {
   return false;
 }
 
+// Renders the runs that want it, all at once (render_runs), and with a
+// side-by-side folder their frames side by side; then finishes each run
+// (manifest, report). Returns exit_io on an I/O error that stops everything.
+int render_and_finish(const std::vector<const Scenario*>& scenarios,
+                      const std::vector<std::filesystem::path>& folders,
+                      std::vector<RunOutcome>& outcomes, const RunArguments& args,
+                      const std::optional<std::filesystem::path>& side_by_side,
+                      int& side_by_side_code) {
+  std::vector<RunToRender> runs;
+  std::vector<std::size_t> which;
+  for (std::size_t k = 0; k < scenarios.size(); ++k)
+    if (wants_render(*scenarios[k], outcomes[k], args)) {
+      runs.push_back({scenarios[k], &outcomes[k].result.trajectory, folders[k]});
+      which.push_back(k);
+    }
+  std::vector<int> rendered(scenarios.size(), exit_ok);
+  side_by_side_code = exit_ok;
+  if (!runs.empty()) {
+    // Side by side only when every run is drawn.
+    const bool all = runs.size() == scenarios.size();
+    const std::vector<int> codes =
+        render_runs(runs, all ? side_by_side : std::nullopt, side_by_side_code, args.render_jobs);
+    for (std::size_t j = 0; j < runs.size(); ++j) {
+      rendered[which[j]] = codes[j];
+      outcomes[which[j]].rendered = true;
+    }
+  }
+  for (std::size_t k = 0; k < scenarios.size(); ++k)
+    if (finish_run(*scenarios[k], folders[k], args, outcomes[k], rendered[k]) == exit_io)
+      return exit_io;
+  return exit_ok;
+}
+
 // Each variant into folder/<variant>/ (all loaded first: a bad one writes
-// nothing), then their comparison. A failed run does not stop the others; an
-// I/O error does.
+// nothing): all simulated, then all rendered at once (with the report, their
+// frames side by side into compare/), then each reported, then their
+// comparison. A failed run does not stop the others; an I/O error does.
 int run_variants(const RunArguments& args, const Scenario& scenario,
                  const std::filesystem::path& folder, std::vector<RunRecord>& records) {
   std::vector<Scenario> variants;
@@ -235,17 +272,41 @@ int run_variants(const RunArguments& args, const Scenario& scenario,
   }
   for (const Scenario& v : variants)
     if (!recording_fits(v)) return exit_bad_input;
+  std::vector<RunOutcome> outcomes;
+  std::vector<const Scenario*> scenarios;
+  std::vector<std::filesystem::path> folders;
+  for (const Scenario& v : variants) {
+    outcomes.push_back(simulate_one(v, folder / v.variant, args));
+    if (outcomes.back().code == exit_io) return exit_io;
+    if (interrupt_exit_code()) return interrupt_exit_code();  // no more runs, no comparison
+    scenarios.push_back(&v);
+    folders.push_back(folder / v.variant);
+  }
+  // compare/ holds only what this run makes: an earlier run's side-by-side
+  // video, frames or report go first (a --no-render run must not show an old video).
+  const std::filesystem::path compare = folder / "compare";
+  std::optional<std::filesystem::path> side_by_side;
+  try {
+    for (const std::string& name : derived_artefacts()) std::filesystem::remove_all(compare / name);
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_io;
+  }
+  const OutputSettings& first = variants.front().output;
+  if (args.report && args.render && (first.video || first.frames)) side_by_side = compare;
+  int side_code = exit_ok;
+  if (render_and_finish(scenarios, folders, outcomes, args, side_by_side, side_code) == exit_io ||
+      side_code == exit_io)
+    return exit_io;
   int code = exit_ok;
   nlohmann::ordered_json summaries;  // variant -> summary, for --expect
-  for (const Scenario& v : variants) {
-    RunOutcome outcome = run_one(v, folder / v.variant, args);
-    if (outcome.code == exit_io) return exit_io;
-    if (interrupt_exit_code()) return interrupt_exit_code();  // no more runs, no comparison
-    if (code == exit_ok) code = outcome.code;
-    summaries[v.variant] = outcome.summary;
-    records.push_back({v.variant, folder / v.variant});
+  for (std::size_t k = 0; k < variants.size(); ++k) {
+    if (code == exit_ok) code = outcomes[k].code;
+    summaries[variants[k].variant] = outcomes[k].summary;
+    records.push_back({variants[k].variant, folders[k]});
   }
-  if (compare_variants(args, variants, folder) == exit_io) return exit_io;
+  const bool video = side_by_side && std::filesystem::exists(compare / "video.mp4");
+  if (compare_variants(args, variants, folder, video) == exit_io) return exit_io;
   // Expectations name the variant first: "elbow_on.energy_final.joule < ...".
   const int checked = check_expectations(args.expect, summaries);
   return code != exit_ok ? code : checked;
@@ -264,8 +325,13 @@ nlohmann::ordered_json expectation_shape(const RunArguments& args, const Scenari
 int run_scenario(const RunArguments& args, const Scenario& scenario,
                  const std::filesystem::path& folder, std::vector<RunRecord>& records) {
   if (!scenario.variants.empty()) return run_variants(args, scenario, folder, records);
-  RunOutcome outcome = run_one(scenario, folder, args);
+  std::vector<RunOutcome> outcomes{simulate_one(scenario, folder, args)};
+  RunOutcome& outcome = outcomes.front();
   if (outcome.code == exit_io) return exit_io;
+  int side_code = exit_ok;
+  if (!interrupt_exit_code() &&
+      render_and_finish({&scenario}, {folder}, outcomes, args, std::nullopt, side_code) == exit_io)
+    return exit_io;
   const int checked = check_expectations(args.expect, outcome.summary);
   records.push_back({"", folder});
   return outcome.code != exit_ok ? outcome.code : checked;

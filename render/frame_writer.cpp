@@ -1,0 +1,88 @@
+#include "render/frame_writer.hpp"
+
+#include <chrono>
+
+#include "render/png_writer.hpp"
+
+namespace elbowsim {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+void to_rgb(const std::uint8_t* rgba, int width, int height, int scale, std::uint8_t* rgb) {
+  const std::size_t in_width = std::size_t(width) * std::size_t(scale);
+  const int in_height = height * scale;
+  for (int y = 0; y < height; ++y) {
+    std::uint8_t* out = rgb + std::size_t(y) * std::size_t(width) * 3;
+    const std::uint8_t* row = rgba + std::size_t(in_height - 1 - y * scale) * in_width * 4;
+    if (scale == 1) {
+      for (int x = 0; x < width; ++x, row += 4, out += 3)
+        out[0] = row[0], out[1] = row[1], out[2] = row[2];
+      continue;
+    }
+    const std::uint8_t* below = row - in_width * 4;  // the next row up in the image
+    for (int x = 0; x < width; ++x, row += 8, below += 8, out += 3)
+      for (int c = 0; c < 3; ++c)
+        out[c] = std::uint8_t((row[c] + row[c + 4] + below[c] + below[c + 4] + 2) / 4);
+  }
+}
+
+FrameWriter::FrameWriter(int width, int height, int scale, FrameOutputs outputs)
+    : width_(width), height_(height), scale_(scale), out_(std::move(outputs)) {
+  const std::size_t bytes =
+      std::size_t(width) * std::size_t(height) * std::size_t(scale * scale) * 4;
+  for (int k = 0; k < 3; ++k) free_.push(std::vector<std::uint8_t>(bytes));
+  thread_ = std::thread([this] { run(); });
+}
+
+void FrameWriter::finish() {
+  join();
+  if (error_) std::rethrow_exception(error_);
+}
+
+void FrameWriter::join() {
+  queue_.close();
+  if (thread_.joinable()) thread_.join();
+}
+
+void FrameWriter::run() {
+  std::vector<std::uint8_t> rgb(std::size_t(width_) * std::size_t(height_) * 3);
+  while (std::optional<ReadFrame> frame = queue_.pop()) {
+    if (!failed_) {
+      try {
+        write(*frame, rgb);
+      } catch (...) {
+        error_ = std::current_exception();
+        failed_ = true;
+        // No frames from here on: the composition must not wait for them.
+        if (out_.side_by_side) out_.side_by_side->abort();
+      }
+    }
+    free_.push(std::move(frame->rgba));
+  }
+  if (out_.side_by_side) out_.side_by_side->done(out_.panel);
+}
+
+void FrameWriter::write(const ReadFrame& frame, std::vector<std::uint8_t>& rgb) {
+  Clock::time_point start = Clock::now();
+  to_rgb(frame.rgba.data(), width_, height_, scale_, rgb.data());
+  if (frame.text.inset) draw_inset_overlay(rgb.data(), width_, height_, *frame.text.inset);
+  box_width_ = draw_overlay(rgb.data(), width_, height_, {0, 0, width_, height_}, frame.text.lines,
+                            box_width_);
+  compose_seconds += seconds_since(start);
+  start = Clock::now();
+  if (out_.encoder) out_.encoder->write(rgb.data());
+  if (out_.frames)
+    write_png(*out_.frames / frame_file_name(frame.index), width_, height_, rgb.data());
+  if (out_.side_by_side) out_.side_by_side->put(out_.panel, frame.index, rgb.data());
+  output_seconds += seconds_since(start);
+}
+
+}  // namespace elbowsim

@@ -1,0 +1,22 @@
+// RGB frames -> planar YUV 4:2:0 (what ffmpeg's H.264 encoder takes), in BT.709
+// with limited ("TV") range, the matrix HD video players assume. Done here,
+// not by ffmpeg's swscale, so that half the bytes go through the pipe and the
+// video's colour matrix is the one its header names.
+#pragma once
+
+#include <cstdint>
+
+namespace elbowsim {
+
+// Bytes of a width x height frame in YUV 4:2:0: the luma plane, then the two
+// chroma planes of (width / 2) x (height / 2).
+inline std::size_t yuv420_bytes(int width, int height) {
+  return std::size_t(width) * std::size_t(height) * 3 / 2;
+}
+
+// rgb: width x height pixels, rows top-down, 3 bytes per pixel; width and
+// height even. yuv: yuv420_bytes(width, height). Luma per pixel; chroma per
+// 2 x 2 block from the block's mean colour. Integer arithmetic, rounded.
+void rgb_to_yuv420(const std::uint8_t* rgb, int width, int height, std::uint8_t* yuv);
+
+}  // namespace elbowsim

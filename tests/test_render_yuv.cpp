@@ -1,0 +1,72 @@
+// RGB -> YUV 4:2:0 (render/yuv.hpp), as piped to ffmpeg: BT.709 limited range,
+// checked against the standard's formulas in floating point.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "render/yuv.hpp"
+
+using namespace elbowsim;
+
+namespace {
+
+// BT.709: Y' from R'G'B' in 0..255, then 8-bit limited range (16..235, 16..240).
+double luma(double r, double g, double b) { return 0.2126 * r + 0.7152 * g + 0.0722 * b; }
+double y_code(double r, double g, double b) { return 16 + 219.0 / 255.0 * luma(r, g, b); }
+double cb_code(double r, double g, double b) {
+  return 128 + 224.0 / 255.0 * (b - luma(r, g, b)) / 1.8556;
+}
+double cr_code(double r, double g, double b) {
+  return 128 + 224.0 / 255.0 * (r - luma(r, g, b)) / 1.5748;
+}
+
+}  // namespace
+
+TEST_CASE("rgb_to_yuv420: BT.709 limited range, luma per pixel, chroma per 2x2 block mean") {
+  constexpr int w = 8, h = 6;
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> byte(0, 255);
+  std::vector<std::uint8_t> rgb(w * h * 3);
+  for (std::uint8_t& c : rgb) c = std::uint8_t(byte(random));
+  // Corners with known codes: black, white, pure green, a grey.
+  const std::uint8_t known[4][3] = {{0, 0, 0}, {255, 255, 255}, {0, 255, 0}, {90, 90, 90}};
+  for (int k = 0; k < 4; ++k)
+    for (int c = 0; c < 3; ++c) rgb[std::size_t(k * 3 + c)] = known[k][c];
+  std::vector<std::uint8_t> yuv(yuv420_bytes(w, h));
+  REQUIRE(yuv.size() == w * h + 2 * (w / 2) * (h / 2));
+  rgb_to_yuv420(rgb.data(), w, h, yuv.data());
+  CHECK(int(yuv[0]) == 16);   // black
+  CHECK(int(yuv[1]) == 235);  // white
+  CHECK(int(yuv[2]) == 173);  // green: 16 + 219 x 0.7152 = 172.6
+  CHECK(int(yuv[3]) == 93);   // grey 90: 16 + 219 x 90 / 255 = 93.3
+  const std::uint8_t* u = yuv.data() + w * h;
+  const std::uint8_t* v = u + (w / 2) * (h / 2);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::uint8_t* p = &rgb[std::size_t((y * w + x) * 3)];
+      CAPTURE(x);
+      CAPTURE(y);
+      CHECK(std::abs(yuv[std::size_t(y * w + x)] - y_code(p[0], p[1], p[2])) <= 0.501);
+    }
+  for (int y = 0; y < h / 2; ++y)
+    for (int x = 0; x < w / 2; ++x) {
+      double mean[3] = {0, 0, 0};
+      for (int dy = 0; dy < 2; ++dy)
+        for (int dx = 0; dx < 2; ++dx)
+          for (int c = 0; c < 3; ++c)
+            mean[c] += rgb[std::size_t(((2 * y + dy) * w + 2 * x + dx) * 3 + c)] / 4.0;
+      CAPTURE(x);
+      CAPTURE(y);
+      const std::size_t i = std::size_t(y * (w / 2) + x);
+      CHECK(std::abs(u[i] - cb_code(mean[0], mean[1], mean[2])) <= 0.501);
+      CHECK(std::abs(v[i] - cr_code(mean[0], mean[1], mean[2])) <= 0.501);
+    }
+  // A grey frame has no colour at all.
+  std::vector<std::uint8_t> grey(w * h * 3, 131);
+  rgb_to_yuv420(grey.data(), w, h, yuv.data());
+  CHECK(int(u[0]) == 128);
+  CHECK(int(v[0]) == 128);
+}
