@@ -31,6 +31,7 @@ std::string format_fps(double fps) {
 // ffmpeg's options in its own order: input (raw YUV on stdin), then output.
 const char* const kPreset = "veryfast";  // x264 speed/size trade-off; crf 20 looks clean
 const char* const kCrf = "20";
+const char* const kEncoderThreads = "2";  // see ffmpeg_arguments
 // The colour matrix, primaries, transfer and range the video's header names
 // (those rgb_to_yuv420 converts with; sRGB shares BT.709's primaries).
 const char* const kColour[] = {"-colorspace", "bt709", "-color_primaries", "bt709",
@@ -60,8 +61,10 @@ std::vector<std::string> ffmpeg_arguments(const std::filesystem::path& output, i
                                    std::to_string(width) + "x" + std::to_string(height),
                                    "-framerate", format_fps(fps)};
   args.insert(args.end(), std::begin(kColour), std::end(kColour));
+  // x264 picks its thread count from the cores, and its bitstream depends on
+  // it: a fixed count keeps the mp4 the same bytes on every machine.
   for (const char* a : {"-i", "pipe:0", "-an", "-c:v", "libx264", "-preset", kPreset, "-crf", kCrf,
-                        "-pix_fmt", "yuv420p"})
+                        "-threads", kEncoderThreads, "-pix_fmt", "yuv420p"})
     args.emplace_back(a);
   args.insert(args.end(), std::begin(kColour), std::end(kColour));
   for (const char* a : {"-movflags", "+faststart", "-f", "mp4"}) args.emplace_back(a);

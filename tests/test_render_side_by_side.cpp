@@ -258,11 +258,18 @@ TEST_CASE("run with variants: drawn on the cores available; --jobs 1 writes the 
   for (const std::string& n : names) listed += n + " ";
   INFO("differing: ", listed);
   CHECK(names.empty());
-  // Bounded by the cores: pinned to one, one drawing thread.
+  // Bounded by the cores: pinned to one, one drawing thread; and the same
+  // bytes (x264's thread count is fixed, not taken from the cores).
   if (shell("taskset -c 0 true").exit_code == 0) {
-    const Outcome pinned = shell("taskset -c 0 " + short_experiment(one, outputs));
+    const fs::path pinned_dir = scratch("render", "variants_pinned");
+    const Outcome pinned = shell("taskset -c 0 " + short_experiment(pinned_dir, outputs));
     CHECK(pinned.output.find("render: 2 runs drawn at once on 1 thread (1 core available)") !=
           std::string::npos);
+    const std::vector<std::string> pinned_names = differing(drawn(pinned_dir), b);
+    std::string pinned_listed;
+    for (const std::string& n : pinned_names) pinned_listed += n + " ";
+    INFO("differing when pinned to one core: ", pinned_listed);
+    CHECK(pinned_names.empty());
   }
   CHECK(shell(short_experiment(one, "--jobs 0")).exit_code == 2);
 }
