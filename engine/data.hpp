@@ -98,6 +98,10 @@ struct Data {
   std::vector<Matrix6d> spatial_inertia, articulated_inertia;
   std::vector<Vector6d> motion_subspace, velocity, bias_acc, bias_force, acc, U;
   Eigen::VectorXd D, u;  // [n] ABA joint-space scratch
+  // U_i / D_i and 1 / D_i (ABA's inward pass): the response sweeps multiply
+  // where they would divide, which takes a division off their serial chain.
+  std::vector<Vector6d> U_over_D;
+  Eigen::VectorXd D_inv;
 
   // --- integrator state ----------------------------------------------------
   // x = [q; qd; i (motor: full); energy integrals] (run/state_layout.hpp)

@@ -34,6 +34,8 @@ void articulated_pass(const Model& model, Data& data, ConstVec qd,
     double u = tau[i] - S.dot(data.bias_force[i]);
     if (model.effects.damping) u -= model.viscous[i] * qd[i];
     data.u[i] = u;
+    data.D_inv[i] = 1.0 / data.D[i];
+    data.U_over_D[i] = data.U[i] / data.D[i];
     if (i == 0) continue;
     const Matrix6d Ia = data.articulated_inertia[i] - data.U[i] * data.U[i].transpose() / data.D[i];
     data.articulated_inertia[i - 1] += Ia;
@@ -73,29 +75,12 @@ void articulated_inertias(const Model& model, Data& data) {
     add_spatial_inertia(model.links[i].mass, data.com[i], data.inertia[i], Ia);
     const Vector6d U = Ia * S;
     const double D = S.dot(U) + (model.has_armature() ? model.armature[i] : 0.0);
+    const Vector6d U_over_D = U / D;
     data.U[i] = U;
     data.D[i] = D;
-    Ia.noalias() -= U * (U.transpose() / D);
-  }
-}
-
-// ABA's passes 2 and 3 with zero velocity and gravity, the inertias known:
-// inward u_i = tau_i - S_i^T p, p += U_i u_i / D_i (the force the subtree
-// passes to its parent); outward x_i = (u_i - U_i^T a) / D_i, a += S_i x_i.
-void aba_response(const Model& model, const Data& data, ConstVec tau,
-                  Eigen::Ref<Eigen::VectorXd> x) {
-  int last = model.dof - 1;
-  while (last >= 0 && tau[last] == 0.0) x[last--] = 0.0;  // u = 0 there, p stays 0
-  Vector6d p = Vector6d::Zero();
-  for (int i = last; i >= 0; --i) {
-    const double u = tau[i] - data.motion_subspace[i].dot(p);
-    x[i] = u;
-    p += data.U[i] * (u / data.D[i]);
-  }
-  Vector6d a = Vector6d::Zero();
-  for (int i = 0; i < model.dof; ++i) {
-    x[i] = (x[i] - data.U[i].dot(a)) / data.D[i];
-    a += data.motion_subspace[i] * x[i];
+    data.D_inv[i] = 1.0 / D;
+    data.U_over_D[i] = U_over_D;
+    Ia.noalias() -= U * U_over_D.transpose();
   }
 }
 
