@@ -126,6 +126,9 @@ struct ContactData {
   Eigen::VectorXd a_free;        // [n] scratch: L^-1 (tau - B_J)
   Eigen::VectorXd qd_before_impact;  // [n] scratch: the rates an impact started from
   Matrix3Xd J3;                  // [3 x n] scratch point Jacobian
+  // [3 x n] scratch of constraint_rows: each link's angular velocity and, with
+  // qdd = 0, angular acceleration, and its origin's velocity and acceleration
+  Matrix3Xd link_omega, link_omega_dot, link_velocity, link_acc;
   Matrix3Xd row_normal;          // [3 x capacity] each normal row's normal at the last constraint_rows
   Matrix3Xd row_friction;        // [3 x capacity] its sliding friction force per newton of fn (world)
   bool dependent = false;        // last solve met dependent rows

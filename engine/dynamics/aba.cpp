@@ -64,23 +64,32 @@ void forward_dynamics_aba(const Model& model, Data& data, ConstVec qd,
   acceleration_pass(model, data, qdd);
 }
 
-// Pass 2 alone (Featherstone's I^A_i, projected): U_i = I^A_i S_i, D_i = S_i^T U_i + Jm_i,
-// and I^A_{i-1} += I^A_i - U_i U_i^T / D_i. The parent's own spatial inertia
-// is added on the way in, so one 6 x 6 accumulator serves the whole chain.
+// Pass 2 alone (Featherstone's I^A_i): U_i = I^A_i S_i, D_i = S_i^T U_i + Jm_i,
+// I^A_{i-1} = I_{i-1} + I^A_i - U_i U_i^T / D_i. One 6 x 6 accumulator serves
+// the whole chain. The child's projection is applied to U_i as
+//   U_i = (I_i + I^A_{i+1}) S_i - U_{i+1} ((U_{i+1} / D_{i+1})^T S_i)
+// rather than to the matrix first: the product with S_i then does not wait for
+// the child's division, which leaves a 6-dot, not a 6 x 6 update and product,
+// on the chain from one joint to the next.
 void articulated_inertias(const Model& model, Data& data) {
-  Matrix6d Ia = Matrix6d::Zero();
+  Matrix6d Ia = Matrix6d::Zero();  // I^A_{i+1}, not yet projected
+  Vector6d U_child = Vector6d::Zero(), U_over_D_child = Vector6d::Zero();
   for (int i = model.dof - 1; i >= 0; --i) {
     const Vector6d S = revolute_subspace(data.axis[i], data.origin[i]);
     data.motion_subspace[i] = S;
     add_spatial_inertia(model.links[i].mass, data.com[i], data.inertia[i], Ia);
-    const Vector6d U = Ia * S;
+    const Vector6d W = Ia * S;
+    const Vector6d U = W - U_child * U_over_D_child.dot(S);
     const double D = S.dot(U) + (model.has_armature() ? model.armature[i] : 0.0);
-    const Vector6d U_over_D = U / D;
+    Ia.noalias() -= U_child * U_over_D_child.transpose();  // now I^A_i
+    const double D_inv = 1.0 / D;
+    const Vector6d U_over_D = U * D_inv;
     data.U[i] = U;
     data.D[i] = D;
-    data.D_inv[i] = 1.0 / D;
+    data.D_inv[i] = D_inv;
     data.U_over_D[i] = U_over_D;
-    Ia.noalias() -= U * U_over_D.transpose();
+    U_child = U;
+    U_over_D_child = U_over_D;
   }
 }
 
