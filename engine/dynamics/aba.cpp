@@ -72,13 +72,20 @@ void forward_dynamics_aba(const Model& model, Data& data, ConstVec qd,
 // the child's division, which leaves a 6-dot, not a 6 x 6 update and product,
 // on the chain from one joint to the next.
 void articulated_inertias(const Model& model, Data& data) {
-  Matrix6d Ia = Matrix6d::Zero();  // I^A_{i+1}, not yet projected
+  // I^A_{i+1}, not yet projected. Kept in memory (Data's scratch), not in
+  // registers: 36 doubles do not fit the 16 SSE registers, and the compiler's
+  // register copies and spills of a local 6 x 6 doubled the instructions.
+  Matrix6d& Ia = data.articulated_inertia[0];
+  Ia.setZero();
   Vector6d U_child = Vector6d::Zero(), U_over_D_child = Vector6d::Zero();
   for (int i = model.dof - 1; i >= 0; --i) {
     const Vector6d S = revolute_subspace(data.axis[i], data.origin[i]);
     data.motion_subspace[i] = S;
     add_spatial_inertia(model.links[i].mass, data.com[i], data.inertia[i], Ia);
-    const Vector6d W = Ia * S;
+    // Ia S as a sum of columns: packet-wise adds, where Eigen's product of a
+    // fixed 6 x 6 would take six horizontal row dots.
+    const Vector6d W = Ia.col(0) * S[0] + Ia.col(1) * S[1] + Ia.col(2) * S[2] +
+                       Ia.col(3) * S[3] + Ia.col(4) * S[4] + Ia.col(5) * S[5];
     const Vector6d U = W - U_child * U_over_D_child.dot(S);
     const double D = S.dot(U) + (model.has_armature() ? model.armature[i] : 0.0);
     Ia.noalias() -= U_child * U_over_D_child.transpose();  // now I^A_i
