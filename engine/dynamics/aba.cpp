@@ -88,7 +88,8 @@ void articulated_inertias(const Model& model, Data& data) {
                        Ia.col(3) * S[3] + Ia.col(4) * S[4] + Ia.col(5) * S[5];
     const Vector6d U = W - U_child * U_over_D_child.dot(S);
     const double D = S.dot(U) + (model.has_armature() ? model.armature[i] : 0.0);
-    Ia.noalias() -= U_child * U_over_D_child.transpose();  // now I^A_i
+    // Now I^A_i; the last joint has no child to project, joint 0 no parent to pass it to.
+    if (i > 0 && i < model.dof - 1) Ia.noalias() -= U_child * U_over_D_child.transpose();
     const double D_inv = 1.0 / D;
     const Vector6d U_over_D = U * D_inv;
     data.U[i] = U;
