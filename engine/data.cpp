@@ -45,6 +45,7 @@ Data::Data(const Model& model) : llt(model.dof), contact(make_contact_data(model
   rotation.assign(un, Eigen::Matrix3d::Identity());
   origin.assign(un, Eigen::Vector3d::Zero());
   kinematics_q = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
+  bias_rates_qd = Eigen::VectorXd::Zero(n);
   axis = com = omega = omega_dot = origin_acc = force = moment = origin;
   inertia = rotation;
   mass_matrix = Eigen::MatrixXd::Zero(n, n);

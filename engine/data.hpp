@@ -83,6 +83,7 @@ struct Data {
   // kinematics_model = 0 forces the next call to compute (benchmarks).
   Eigen::VectorXd kinematics_q;
   long kinematics_model = 0;
+  long kinematics_serial = 0;  // counts the recomputations: a stamp for what is derived from them
 
   // --- dynamics scratch ----------------------------------------------------
   Eigen::MatrixXd mass_matrix;     // [n x n] M (+ Jm when rotor inertia is on)
@@ -94,6 +95,11 @@ struct Data {
 
   // Newton-Euler recursion, per link [n]
   std::vector<Eigen::Vector3d> omega, omega_dot, origin_acc, force, moment;
+  // When bias_torques() left them (qdd = 0; origin_acc with gravity as -g):
+  // the kinematics_serial and the rates qd they are for, so that the contact
+  // rows can read each link's rates instead of sweeping again; -1: not.
+  long bias_rates_serial = -1;
+  Eigen::VectorXd bias_rates_qd;  // [n]
   // Spatial (Plucker, world origin) quantities of CRBA/ABA, per link [n]
   std::vector<Matrix6d> spatial_inertia, articulated_inertia;
   std::vector<Vector6d> motion_subspace, velocity, bias_acc, bias_force, acc, U;

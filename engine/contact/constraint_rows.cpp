@@ -43,38 +43,44 @@ FeatureDistance feature_distance(const ContactData& c, int k, const Eigen::Vecto
   return f;
 }
 
-// The rates of links 0 .. last with qdd = 0, once per call (the outward
-// recursion of point_jacobian_dot_qd, kinematics.hpp, with the origin
-// velocities alongside): every row then reads its point's velocity and
-// Jdot qd in O(1) instead of sweeping the chain again.
+// The rates of links 0 .. last with qdd = 0 (the outward recursion of
+// point_jacobian_dot_qd, kinematics.hpp), once per call: every row then reads
+// its point's Jdot qd in O(1) instead of sweeping the chain again. When
+// bias_torques() has just run at this state (the constrained step: it needs
+// the bias anyway), its outward pass holds the same rates and none is swept.
 void link_rates(Data& data, int last, ConstVec qd) {
   ContactData& c = data.contact;
+  c.rates_in_data = data.bias_rates_serial == data.kinematics_serial &&
+                    same_bits(qd, data.bias_rates_qd);
+  if (c.rates_in_data) return;
   Eigen::Vector3d omega = Eigen::Vector3d::Zero(), omega_dot = Eigen::Vector3d::Zero();
-  Eigen::Vector3d acc = Eigen::Vector3d::Zero(), vel = Eigen::Vector3d::Zero();
+  Eigen::Vector3d acc = Eigen::Vector3d::Zero();
   for (int i = 0; i <= last; ++i) {
     if (i > 0) {
       const Eigen::Vector3d d = data.origin[i] - data.origin[i - 1];
       acc += omega_dot.cross(d) + omega.cross(omega.cross(d));
-      vel += omega.cross(d);
     }
     const Eigen::Vector3d w_joint = data.axis[i] * qd[i];
     omega_dot += omega.cross(w_joint);
     omega += w_joint;
     c.link_omega.col(i) = omega;
     c.link_omega_dot.col(i) = omega_dot;
-    c.link_velocity.col(i) = vel;
     c.link_acc.col(i) = acc;
   }
 }
 
-// Velocity and Jdot qd of the point x (world) of `link`, from link_rates().
-Eigen::Vector3d rates_velocity(const ContactData& c, const Data& data, int link,
-                               const Eigen::Vector3d& x) {
-  return c.link_velocity.col(link) + c.link_omega.col(link).cross(x - data.origin[link]);
-}
-Eigen::Vector3d rates_jacobian_dot_qd(const ContactData& c, const Data& data, int link,
+// Jdot qd of the point x (world) of `link`, from link_rates(). Rates from
+// bias_torques() carry gravity in the origin's acceleration (-g at the base).
+Eigen::Vector3d rates_jacobian_dot_qd(const Model& model, const Data& data, int link,
                                       const Eigen::Vector3d& x) {
+  const ContactData& c = data.contact;
   const Eigen::Vector3d d = x - data.origin[link];
+  if (c.rates_in_data) {
+    const Eigen::Vector3d& omega = data.omega[link];
+    Eigen::Vector3d acc = data.origin_acc[link];
+    if (model.effects.gravity) acc += model.gravity;
+    return acc + data.omega_dot[link].cross(d) + omega.cross(omega.cross(d));
+  }
   const Eigen::Vector3d omega = c.link_omega.col(link);
   return c.link_acc.col(link) + c.link_omega_dot.col(link).cross(d) + omega.cross(omega.cross(d));
 }
@@ -119,14 +125,18 @@ void normal_row(const Model& model, Data& data, int r, ConstVec qd) {
   const double T = model.contact.baumgarte_time;
   const int k = c.active[r];
   const Primitive& ball = c.primitive_of(k);
-  const Eigen::Vector3d centre = point_position(data, ball.link, c.detected[k].local);
+  const Eigen::Vector3d& local = c.detected[k].local;
+  const Eigen::Vector3d centre = point_position(data, ball.link, local);
+  // The centre's velocity matters only where the normal turns (edge, corner).
   const FeatureDistance f =
-      feature_distance(c, k, centre, rates_velocity(c, data, ball.link, centre));
+      feature_distance(c, k, centre,
+                       c.feature[k] == BoxFeature::face ? Eigen::Vector3d::Zero()
+                                                        : point_velocity(data, ball.link, local, qd));
   c.row_normal.col(r) = f.n;
   project_row(model, data, r, ball.link, centre, f.n, c);
   c.C[r] = f.rho - ball.radius;
   c.Cd[r] = c.Jc.row(r).dot(qd);
-  c.gamma[r] = -f.n.dot(rates_jacobian_dot_qd(c, data, ball.link, centre)) - f.curvature;
+  c.gamma[r] = -f.n.dot(rates_jacobian_dot_qd(model, data, ball.link, centre)) - f.curvature;
   if (model.effects.stabilization == Stabilization::baumgarte)
     c.gamma[r] -= 2.0 / T * c.Cd[r] + c.C[r] / (T * T);
   c.Jf.row(r) = c.Jc.row(r);
@@ -150,7 +160,7 @@ void tangent_row(const Model& model, Data& data, int r, ConstVec qd) {
   project_row(model, data, r, link, point, tangent, c);
   c.C[r] = 0;
   c.Cd[r] = c.Jc.row(r).dot(qd);
-  c.gamma[r] = -tangent.dot(rates_jacobian_dot_qd(c, data, link, point));
+  c.gamma[r] = -tangent.dot(rates_jacobian_dot_qd(model, data, link, point));
   if (model.effects.stabilization == Stabilization::baumgarte)
     c.gamma[r] -= c.Cd[r] / model.contact.baumgarte_time;
   c.Jf.row(r) = c.Jc.row(r);
