@@ -128,10 +128,10 @@ void normal_row(const Model& model, Data& data, int r, ConstVec qd) {
   const Eigen::Vector3d& local = c.detected[k].local;
   const Eigen::Vector3d centre = point_position(data, ball.link, local);
   // The centre's velocity matters only where the normal turns (edge, corner).
-  const FeatureDistance f =
-      feature_distance(c, k, centre,
-                       c.feature[k] == BoxFeature::face ? Eigen::Vector3d::Zero()
-                                                        : point_velocity(data, ball.link, local, qd));
+  const Eigen::Vector3d v = c.feature[k] == BoxFeature::face
+                                ? Eigen::Vector3d::Zero()
+                                : point_velocity(data, ball.link, local, qd);
+  const FeatureDistance f = feature_distance(c, k, centre, v);
   c.row_normal.col(r) = f.n;
   project_row(model, data, r, ball.link, centre, f.n, c);
   c.C[r] = f.rho - ball.radius;
