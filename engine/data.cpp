@@ -45,14 +45,15 @@ Data::Data(const Model& model) : llt(model.dof), contact(make_contact_data(model
   rotation.assign(un, Eigen::Matrix3d::Identity());
   origin.assign(un, Eigen::Vector3d::Zero());
   kinematics_q = Eigen::VectorXd::Constant(n, std::numeric_limits<double>::quiet_NaN());
+  bias_rates_qd = Eigen::VectorXd::Zero(n);
   axis = com = omega = omega_dot = origin_acc = force = moment = origin;
   inertia = rotation;
   mass_matrix = Eigen::MatrixXd::Zero(n, n);
-  bias = tau = zero = unit = D = u = Eigen::VectorXd::Zero(n);
+  bias = tau = zero = unit = D = u = D_inv = Eigen::VectorXd::Zero(n);
   spatial_inertia.assign(un, Matrix6d::Zero());
   articulated_inertia = spatial_inertia;
   motion_subspace.assign(un, Vector6d::Zero());
-  velocity = bias_acc = bias_force = acc = U = motion_subspace;
+  velocity = bias_acc = bias_force = acc = U = U_over_D = motion_subspace;
   q_desired = qd_desired = v_feedforward = Eigen::VectorXd::Zero(n);
   // A step emits at most a landing and a release per elbow per stage, and a
   // warning per link-box pair plus one for dependent rows.

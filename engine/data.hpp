@@ -83,6 +83,7 @@ struct Data {
   // kinematics_model = 0 forces the next call to compute (benchmarks).
   Eigen::VectorXd kinematics_q;
   long kinematics_model = 0;
+  long kinematics_serial = 0;  // counts the recomputations: a stamp for what is derived from them
 
   // --- dynamics scratch ----------------------------------------------------
   Eigen::MatrixXd mass_matrix;     // [n x n] M (+ Jm when rotor inertia is on)
@@ -94,10 +95,19 @@ struct Data {
 
   // Newton-Euler recursion, per link [n]
   std::vector<Eigen::Vector3d> omega, omega_dot, origin_acc, force, moment;
+  // When bias_torques() left them (qdd = 0; origin_acc with gravity as -g):
+  // the kinematics_serial and the rates qd they are for, so that the contact
+  // rows can read each link's rates instead of sweeping again; -1: not.
+  long bias_rates_serial = -1;
+  Eigen::VectorXd bias_rates_qd;  // [n]
   // Spatial (Plucker, world origin) quantities of CRBA/ABA, per link [n]
   std::vector<Matrix6d> spatial_inertia, articulated_inertia;
   std::vector<Vector6d> motion_subspace, velocity, bias_acc, bias_force, acc, U;
   Eigen::VectorXd D, u;  // [n] ABA joint-space scratch
+  // U_i / D_i and 1 / D_i (ABA's inward pass): the response sweeps multiply
+  // where they would divide, which takes a division off their serial chain.
+  std::vector<Vector6d> U_over_D;
+  Eigen::VectorXd D_inv;
 
   // --- integrator state ----------------------------------------------------
   // x = [q; qd; i (motor: full); energy integrals] (run/state_layout.hpp)

@@ -1,5 +1,7 @@
 #include "engine/contact/constraint_rows.hpp"
 
+#include <algorithm>
+
 #include "engine/contact/friction.hpp"
 #include "engine/dynamics/kinematics.hpp"
 
@@ -41,10 +43,54 @@ FeatureDistance feature_distance(const ContactData& c, int k, const Eigen::Vecto
   return f;
 }
 
-// t^T J for the 3 x n Jacobian in c.J3, into row r of Jc (column by column: a
-// dynamic row times J3 would evaluate into a heap temporary).
-void project_row(ContactData& c, int r, const Eigen::Vector3d& t) {
-  for (Eigen::Index j = 0; j < c.J3.cols(); ++j) c.Jc(r, j) = t.dot(c.J3.col(j));
+// The rates of links 0 .. last with qdd = 0 (the outward recursion of
+// point_jacobian_dot_qd, kinematics.hpp), once per call: every row then reads
+// its point's Jdot qd in O(1) instead of sweeping the chain again. When
+// bias_torques() has just run at this state (the constrained step: it needs
+// the bias anyway), its outward pass holds the same rates and none is swept.
+void link_rates(Data& data, int last, ConstVec qd) {
+  ContactData& c = data.contact;
+  c.rates_in_data = data.bias_rates_serial == data.kinematics_serial &&
+                    same_bits(qd, data.bias_rates_qd);
+  if (c.rates_in_data) return;
+  Eigen::Vector3d omega = Eigen::Vector3d::Zero(), omega_dot = Eigen::Vector3d::Zero();
+  Eigen::Vector3d acc = Eigen::Vector3d::Zero();
+  for (int i = 0; i <= last; ++i) {
+    if (i > 0) {
+      const Eigen::Vector3d d = data.origin[i] - data.origin[i - 1];
+      acc += omega_dot.cross(d) + omega.cross(omega.cross(d));
+    }
+    const Eigen::Vector3d w_joint = data.axis[i] * qd[i];
+    omega_dot += omega.cross(w_joint);
+    omega += w_joint;
+    c.link_omega.col(i) = omega;
+    c.link_omega_dot.col(i) = omega_dot;
+    c.link_acc.col(i) = acc;
+  }
+}
+
+// Jdot qd of the point x (world) of `link`, from link_rates(). Rates from
+// bias_torques() carry gravity in the origin's acceleration (-g at the base).
+Eigen::Vector3d rates_jacobian_dot_qd(const Model& model, const Data& data, int link,
+                                      const Eigen::Vector3d& x) {
+  const ContactData& c = data.contact;
+  const Eigen::Vector3d d = x - data.origin[link];
+  if (c.rates_in_data) {
+    const Eigen::Vector3d& omega = data.omega[link];
+    Eigen::Vector3d acc = data.origin_acc[link];
+    if (model.effects.gravity) acc += model.gravity;
+    return acc + data.omega_dot[link].cross(d) + omega.cross(omega.cross(d));
+  }
+  const Eigen::Vector3d omega = c.link_omega.col(link);
+  return c.link_acc.col(link) + c.link_omega_dot.col(link).cross(d) + omega.cross(omega.cross(d));
+}
+
+// Row r of Jc = t^T J(x) for the point x (world) of `link`: joint j moves x by
+// z_j x (x - o_j) for j <= link, not at all beyond (no 3 x n Jacobian formed).
+void project_row(const Model& model, const Data& data, int r, int link, const Eigen::Vector3d& x,
+                 const Eigen::Vector3d& t, ContactData& c) {
+  for (int j = 0; j <= link; ++j) c.Jc(r, j) = t.dot(data.axis[j].cross(x - data.origin[j]));
+  for (int j = link + 1; j < model.dof; ++j) c.Jc(r, j) = 0.0;
 }
 
 // Sliding friction on normal row r of slot k (normal n): Jf -= mu s^T J_p,
@@ -80,14 +126,17 @@ void normal_row(const Model& model, Data& data, int r, ConstVec qd) {
   const int k = c.active[r];
   const Primitive& ball = c.primitive_of(k);
   const Eigen::Vector3d& local = c.detected[k].local;
-  point_jacobian(model, data, ball.link, local, c.J3);
   const Eigen::Vector3d centre = point_position(data, ball.link, local);
-  const FeatureDistance f = feature_distance(c, k, centre, c.J3 * qd);
+  // The centre's velocity matters only where the normal turns (edge, corner).
+  const Eigen::Vector3d v = c.feature[k] == BoxFeature::face
+                                ? Eigen::Vector3d::Zero()
+                                : point_velocity(data, ball.link, local, qd);
+  const FeatureDistance f = feature_distance(c, k, centre, v);
   c.row_normal.col(r) = f.n;
-  project_row(c, r, f.n);
+  project_row(model, data, r, ball.link, centre, f.n, c);
   c.C[r] = f.rho - ball.radius;
   c.Cd[r] = c.Jc.row(r).dot(qd);
-  c.gamma[r] = -f.n.dot(point_jacobian_dot_qd(data, ball.link, local, qd)) - f.curvature;
+  c.gamma[r] = -f.n.dot(rates_jacobian_dot_qd(model, data, ball.link, centre)) - f.curvature;
   if (model.effects.stabilization == Stabilization::baumgarte)
     c.gamma[r] -= 2.0 / T * c.Cd[r] + c.C[r] / (T * T);
   c.Jf.row(r) = c.Jc.row(r);
@@ -107,12 +156,11 @@ void tangent_row(const Model& model, Data& data, int r, ConstVec qd) {
   tangent_basis(model, n, t[0], t[1]);
   const Eigen::Vector3d& tangent = t[row.axis];
   const int link = c.primitive_of(row.slot).link;
-  const Eigen::Vector3d point = contact_point_local(data, row.slot, n);
-  point_jacobian(model, data, link, point, c.J3);
-  project_row(c, r, tangent);
+  const Eigen::Vector3d point = point_position(data, link, contact_point_local(data, row.slot, n));
+  project_row(model, data, r, link, point, tangent, c);
   c.C[r] = 0;
   c.Cd[r] = c.Jc.row(r).dot(qd);
-  c.gamma[r] = -tangent.dot(point_jacobian_dot_qd(data, link, point, qd));
+  c.gamma[r] = -tangent.dot(rates_jacobian_dot_qd(model, data, link, point));
   if (model.effects.stabilization == Stabilization::baumgarte)
     c.gamma[r] -= c.Cd[r] / model.contact.baumgarte_time;
   c.Jf.row(r) = c.Jc.row(r);
@@ -126,6 +174,10 @@ void constraint_rows(const Model& model, Data& data, ConstVec qd) {
   const int pn = c.normal_rows();
   const int p = pn + static_cast<int>(c.tangent_rows.size());
   c.use_rows(p);  // p changes only between steps
+  int last = -1;
+  for (int r = 0; r < pn; ++r) last = std::max(last, c.primitive_of(c.active[r]).link);
+  for (const TangentRow& row : c.tangent_rows) last = std::max(last, c.primitive_of(row.slot).link);
+  link_rates(data, last, qd);
   for (int r = 0; r < pn; ++r) normal_row(model, data, r, qd);
   for (int r = pn; r < p; ++r) tangent_row(model, data, r, qd);
 }

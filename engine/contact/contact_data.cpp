@@ -52,7 +52,7 @@ ContactData::ContactData(ContactGeometry g, int links, int boxes, int n, int cap
   near_pairs.reserve(geometry.primitives.size() * static_cast<std::size_t>(boxes));
   a_free = Eigen::VectorXd::Zero(n);
   qd_before_impact = Eigen::VectorXd::Zero(n);
-  J3 = Matrix3Xd::Zero(3, n);
+  J3 = link_omega = link_omega_dot = link_acc = Matrix3Xd::Zero(3, n);
   row_normal = row_friction = Matrix3Xd::Zero(3, capacity);
   for (auto* list : {&candidates, &landing, &impact_rows}) list->reserve(slots);
   events_found.reserve(slots);

@@ -126,6 +126,11 @@ struct ContactData {
   Eigen::VectorXd a_free;        // [n] scratch: L^-1 (tau - B_J)
   Eigen::VectorXd qd_before_impact;  // [n] scratch: the rates an impact started from
   Matrix3Xd J3;                  // [3 x n] scratch point Jacobian
+  // [3 x n] scratch of constraint_rows: each link's angular velocity and, with
+  // qdd = 0, angular acceleration and its origin's acceleration (when
+  // bias_torques() has not left them in Data at this state)
+  Matrix3Xd link_omega, link_omega_dot, link_acc;
+  bool rates_in_data = false;  // constraint_rows: read them from bias_torques()' pass instead
   Matrix3Xd row_normal;          // [3 x capacity] each normal row's normal at the last constraint_rows
   Matrix3Xd row_friction;        // [3 x capacity] its sliding friction force per newton of fn (world)
   bool dependent = false;        // last solve met dependent rows

@@ -1,5 +1,8 @@
 #include "engine/contact/min_norm_solve.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace elbowsim {
 
 namespace {
@@ -18,6 +21,44 @@ void reflect(Vector x, const Essential& v, double tau) {
   tmp += x[0];
   x[0] -= tau * tmp;
   for (Eigen::Index i = 0; i + 1 < x.size(); ++i) x[i + 1] -= (tau * v[i]) * tmp;
+}
+
+// The Delassus solve without friction for p <= kSmallRows rows, on the stack:
+// Cholesky A = L L^T (Eigen's unblocked LLT, written out), then the two
+// substitutions. Eigen's dynamic-size LLT costs more in calls and bookkeeping
+// than these few dozen flops. False (fn untouched) when A is not positive
+// definite or a pivot L_kk^2 is at most tol times the largest: dependent rows.
+constexpr int kSmallRows = 4;
+bool small_cholesky_solve(const ContactData& c, double tol, Eigen::Ref<Eigen::VectorXd> fn) {
+  const int p = static_cast<int>(c.A.rows());
+  double L[kSmallRows][kSmallRows];
+  double largest = 0, smallest = 0;
+  for (int k = 0; k < p; ++k) {
+    double d = c.A(k, k);
+    for (int j = 0; j < k; ++j) d -= L[k][j] * L[k][j];
+    if (!(d > 0)) return false;
+    largest = k == 0 ? d : std::max(largest, d);
+    smallest = k == 0 ? d : std::min(smallest, d);
+    L[k][k] = std::sqrt(d);
+    for (int i = k + 1; i < p; ++i) {
+      double x = c.A(i, k);
+      for (int j = 0; j < k; ++j) x -= L[i][j] * L[k][j];
+      L[i][k] = x / L[k][k];
+    }
+  }
+  if (!(smallest > tol * largest)) return false;
+  double y[kSmallRows];
+  for (int i = 0; i < p; ++i) {
+    double x = c.rhs[i];
+    for (int j = 0; j < i; ++j) x -= L[i][j] * y[j];
+    y[i] = x / L[i][i];
+  }
+  for (int i = p - 1; i >= 0; --i) {
+    double x = y[i];
+    for (int j = i + 1; j < p; ++j) x -= L[j][i] * fn[j];
+    fn[i] = x / L[i][i];
+  }
+  return true;
 }
 
 }  // namespace
@@ -68,6 +109,8 @@ void rank_revealing_solve(const Model& model, ContactData& c) {
     const auto pivots = ws.lu.matrixLU().diagonal().cwiseAbs();
     independent = pivots.minCoeff() > tol * pivots.maxCoeff();
     if (independent) c.fn = ws.lu.solve(c.rhs);
+  } else if (c.rows() <= kSmallRows) {
+    independent = small_cholesky_solve(c, tol, c.fn);
   } else {
     ws.llt.compute(c.A);
     const auto pivots = ws.llt.matrixLLT().diagonal().cwiseAbs2();

@@ -34,6 +34,8 @@ void articulated_pass(const Model& model, Data& data, ConstVec qd,
     double u = tau[i] - S.dot(data.bias_force[i]);
     if (model.effects.damping) u -= model.viscous[i] * qd[i];
     data.u[i] = u;
+    data.D_inv[i] = 1.0 / data.D[i];
+    data.U_over_D[i] = data.U[i] / data.D[i];
     if (i == 0) continue;
     const Matrix6d Ia = data.articulated_inertia[i] - data.U[i] * data.U[i].transpose() / data.D[i];
     data.articulated_inertia[i - 1] += Ia;
@@ -62,40 +64,40 @@ void forward_dynamics_aba(const Model& model, Data& data, ConstVec qd,
   acceleration_pass(model, data, qdd);
 }
 
-// Pass 2 alone (Featherstone's I^A_i, projected): U_i = I^A_i S_i, D_i = S_i^T U_i + Jm_i,
-// and I^A_{i-1} += I^A_i - U_i U_i^T / D_i. The parent's own spatial inertia
-// is added on the way in, so one 6 x 6 accumulator serves the whole chain.
+// Pass 2 alone (Featherstone's I^A_i): U_i = I^A_i S_i, D_i = S_i^T U_i + Jm_i,
+// I^A_{i-1} = I_{i-1} + I^A_i - U_i U_i^T / D_i. One 6 x 6 accumulator serves
+// the whole chain. The child's projection is applied to U_i as
+//   U_i = (I_i + I^A_{i+1}) S_i - U_{i+1} ((U_{i+1} / D_{i+1})^T S_i)
+// rather than to the matrix first: the product with S_i then does not wait for
+// the child's division, which leaves a 6-dot, not a 6 x 6 update and product,
+// on the chain from one joint to the next.
 void articulated_inertias(const Model& model, Data& data) {
-  Matrix6d Ia = Matrix6d::Zero();
+  // I^A_{i+1}, not yet projected. Kept in memory (Data's scratch), not in
+  // registers: 36 doubles do not fit the 16 SSE registers, and the compiler's
+  // register copies and spills of a local 6 x 6 doubled the instructions.
+  Matrix6d& Ia = data.articulated_inertia[0];
+  Ia.setZero();
+  Vector6d U_child = Vector6d::Zero(), U_over_D_child = Vector6d::Zero();
   for (int i = model.dof - 1; i >= 0; --i) {
     const Vector6d S = revolute_subspace(data.axis[i], data.origin[i]);
     data.motion_subspace[i] = S;
     add_spatial_inertia(model.links[i].mass, data.com[i], data.inertia[i], Ia);
-    const Vector6d U = Ia * S;
+    // Ia S as a sum of columns: packet-wise adds, where Eigen's product of a
+    // fixed 6 x 6 would take six horizontal row dots.
+    const Vector6d W = Ia.col(0) * S[0] + Ia.col(1) * S[1] + Ia.col(2) * S[2] +
+                       Ia.col(3) * S[3] + Ia.col(4) * S[4] + Ia.col(5) * S[5];
+    const Vector6d U = W - U_child * U_over_D_child.dot(S);
     const double D = S.dot(U) + (model.has_armature() ? model.armature[i] : 0.0);
+    // Now I^A_i; the last joint has no child to project, joint 0 no parent to pass it to.
+    if (i > 0 && i < model.dof - 1) Ia.noalias() -= U_child * U_over_D_child.transpose();
+    const double D_inv = 1.0 / D;
+    const Vector6d U_over_D = U * D_inv;
     data.U[i] = U;
     data.D[i] = D;
-    Ia.noalias() -= U * (U.transpose() / D);
-  }
-}
-
-// ABA's passes 2 and 3 with zero velocity and gravity, the inertias known:
-// inward u_i = tau_i - S_i^T p, p += U_i u_i / D_i (the force the subtree
-// passes to its parent); outward x_i = (u_i - U_i^T a) / D_i, a += S_i x_i.
-void aba_response(const Model& model, const Data& data, ConstVec tau,
-                  Eigen::Ref<Eigen::VectorXd> x) {
-  int last = model.dof - 1;
-  while (last >= 0 && tau[last] == 0.0) x[last--] = 0.0;  // u = 0 there, p stays 0
-  Vector6d p = Vector6d::Zero();
-  for (int i = last; i >= 0; --i) {
-    const double u = tau[i] - data.motion_subspace[i].dot(p);
-    x[i] = u;
-    p += data.U[i] * (u / data.D[i]);
-  }
-  Vector6d a = Vector6d::Zero();
-  for (int i = 0; i < model.dof; ++i) {
-    x[i] = (x[i] - data.U[i].dot(a)) / data.D[i];
-    a += data.motion_subspace[i] * x[i];
+    data.D_inv[i] = D_inv;
+    data.U_over_D[i] = U_over_D;
+    U_child = U;
+    U_over_D_child = U_over_D;
   }
 }
 

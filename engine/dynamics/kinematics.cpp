@@ -26,6 +26,7 @@ void forward_kinematics(const Model& model, Data& data, ConstVec q) {
   }
   data.kinematics_q = q;
   data.kinematics_model = model.id;
+  ++data.kinematics_serial;
 }
 
 Eigen::Vector3d point_position(const Data& data, int link, const Eigen::Vector3d& point) {

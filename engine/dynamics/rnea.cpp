@@ -55,6 +55,7 @@ void inward_pass(const Model& model, Data& data, Eigen::Ref<Eigen::VectorXd> tau
 void inverse_dynamics(const Model& model, Data& data, ConstVec qd,
                       ConstVec qdd, InverseDynamicsTerms terms,
                       Eigen::Ref<Eigen::VectorXd> tau) {
+  data.bias_rates_serial = -1;  // bias_torques() stamps them again
   outward_pass(model, data, qd, qdd, terms);
   inward_pass(model, data, tau);
   // Motor-reflected terms of eq. (51): Jm qdd + (D + Dm) qd.

@@ -15,6 +15,8 @@ void mass_matrix_walker_orin(const Model& model, Data& data) {
 
 void bias_torques(const Model& model, Data& data, ConstVec qd) {
   inverse_dynamics(model, data, qd, data.zero, InverseDynamicsTerms{}, data.bias);
+  data.bias_rates_serial = data.kinematics_serial;
+  data.bias_rates_qd = qd;
 }
 
 }  // namespace elbowsim

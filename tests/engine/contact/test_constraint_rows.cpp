@@ -7,6 +7,7 @@
 
 #include "engine/contact/constraint_rows.hpp"
 #include "engine/dynamics/kinematics.hpp"
+#include "engine/dynamics/walker_orin.hpp"
 #include "engine/run/simulator.hpp"
 #include "support/allocations.hpp"
 #include "support/approx.hpp"
@@ -167,4 +168,43 @@ TEST_CASE("constraint_rows calls the C allocator zero times, with and without fr
     CAPTURE(friction);
     CHECK(calls == 0);
   }
+}
+
+TEST_CASE("constraint_rows: the link rates bias_torques left are used only at their state") {
+  // After bias_torques() at the same kinematics and qd the rows read its outward
+  // pass (no sweep of their own): the same rows to rounding. At another qd, or
+  // after the kinematics moved on, they must sweep afresh: bit for bit the rows
+  // of a Data that never ran bias_torques.
+  const Model m = chain_with_elbows(9, 3, 811);
+  const Eigen::VectorXd q = 2 * Eigen::VectorXd::Random(9), q2 = 2 * Eigen::VectorXd::Random(9);
+  const Eigen::VectorXd qd = Eigen::VectorXd::Random(9), qd2 = Eigen::VectorXd::Random(9);
+  const auto fresh = [&](const Eigen::VectorXd& at_q, const Eigen::VectorXd& at_qd, Data& like) {
+    Data d(m);
+    forward_kinematics(m, d, at_q);
+    d.contact.active = like.contact.active;
+    d.contact.resting = like.contact.resting;
+    d.contact.normal = like.contact.normal;
+    d.contact.surface = like.contact.surface;
+    d.contact.detected = like.contact.detected;
+    d.contact.feature = like.contact.feature;
+    constraint_rows(m, d, at_qd);
+    return Eigen::VectorXd(d.contact.gamma);
+  };
+  Data data(m);
+  forward_kinematics(m, data, q);
+  set_random_contacts(m, data);
+  bias_torques(m, data, qd);
+  constraint_rows(m, data, qd);
+  CHECK(data.contact.rates_in_data);
+  const Eigen::VectorXd expected = fresh(q, qd, data);
+  const double scale = expected.cwiseAbs().maxCoeff();
+  CHECK(approx(Eigen::VectorXd(data.contact.gamma), expected, 1e-12 * scale));
+  constraint_rows(m, data, qd2);  // other rates
+  CHECK_FALSE(data.contact.rates_in_data);
+  CHECK(approx(Eigen::VectorXd(data.contact.gamma), fresh(q, qd2, data), 0.0));
+  bias_torques(m, data, qd);
+  forward_kinematics(m, data, q2);  // other kinematics, same rates
+  constraint_rows(m, data, qd);
+  CHECK_FALSE(data.contact.rates_in_data);
+  CHECK(approx(Eigen::VectorXd(data.contact.gamma), fresh(q2, qd, data), 0.0));
 }

@@ -81,29 +81,3 @@ TEST_CASE("aba: a single-link pendulum gets qdd = (tau - m g lc cos q - D qd) / 
     }
   }
 }
-
-TEST_CASE("aba_response: x = (M + Jm)^-1 tau from the articulated inertias, == CRBA + Cholesky (1e-10)") {
-  // Chains of 1-30 joints with armature; tau dense, with trailing zeros (the inward
-  // sweep starts at its last non-zero entry), and x aliasing tau.
-  for (int n : {1, 2, 7, 30}) {
-    CAPTURE(n);
-    const Model model = random_chain(n, static_cast<std::uint32_t>(60 + n));
-    REQUIRE(model.has_armature());
-    Data data(model);
-    forward_kinematics(model, data, Eigen::VectorXd::Random(n));
-    mass_matrix_crba(model, data);
-    articulated_inertias(model, data);
-    const Eigen::LLT<Eigen::MatrixXd> llt(data.mass_matrix);
-    for (int last = n - 1; last >= 0; last -= std::max(1, n / 3)) {
-      CAPTURE(last);
-      Eigen::VectorXd tau = Eigen::VectorXd::Zero(n);
-      tau.head(last + 1).setRandom();
-      const Eigen::VectorXd expected = llt.solve(tau);
-      Eigen::VectorXd x(n);
-      aba_response(model, data, tau, x);
-      CHECK(approx(x, expected, 1e-10 * expected.cwiseAbs().maxCoeff()));
-      aba_response(model, data, tau, tau);  // in place
-      CHECK(approx(tau, x, 0.0));
-    }
-  }
-}
