@@ -43,8 +43,8 @@ FeatureDistance feature_distance(const ContactData& c, int k, const Eigen::Vecto
   return f;
 }
 
-// The rates of links 0 .. last with qdd = 0 (the outward recursion of
-// point_jacobian_dot_qd, kinematics.hpp), once per call: every row then reads
+// The rates of links 0 .. last with qdd = 0 (outward_rates, kinematics.hpp),
+// once per call: every row then reads
 // its point's Jdot qd in O(1) instead of sweeping the chain again. When
 // bias_torques() has just run at this state (the constrained step: it needs
 // the bias anyway), its outward pass holds the same rates and none is swept.
@@ -53,20 +53,7 @@ void link_rates(Data& data, int last, ConstVec qd) {
   c.rates_in_data = data.bias_rates_serial == data.kinematics_serial &&
                     same_bits(qd, data.bias_rates_qd);
   if (c.rates_in_data) return;
-  Eigen::Vector3d omega = Eigen::Vector3d::Zero(), omega_dot = Eigen::Vector3d::Zero();
-  Eigen::Vector3d acc = Eigen::Vector3d::Zero();
-  for (int i = 0; i <= last; ++i) {
-    if (i > 0) {
-      const Eigen::Vector3d d = data.origin[i] - data.origin[i - 1];
-      acc += omega_dot.cross(d) + omega.cross(omega.cross(d));
-    }
-    const Eigen::Vector3d w_joint = data.axis[i] * qd[i];
-    omega_dot += omega.cross(w_joint);
-    omega += w_joint;
-    c.link_omega.col(i) = omega;
-    c.link_omega_dot.col(i) = omega_dot;
-    c.link_acc.col(i) = acc;
-  }
+  outward_rates(data, last, qd, c.link_omega, c.link_omega_dot, c.link_acc);
 }
 
 // Jdot qd of the point x (world) of `link`, from link_rates(). Rates from

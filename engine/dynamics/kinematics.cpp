@@ -55,11 +55,11 @@ Eigen::Vector3d point_velocity(const Data& data, int link, const Eigen::Vector3d
 // Outward recursion of the Newton-Euler velocity/acceleration pass with
 // qdd = 0: omega_i = omega_{i-1} + z_i qd_i, omegadot_i = omegadot_{i-1} +
 // omega_{i-1} x z_i qd_i, and the origin acceleration carried along the links.
-Eigen::Vector3d point_jacobian_dot_qd(const Data& data, int link, const Eigen::Vector3d& point,
-                                      ConstVec qd) {
+void outward_rates(const Data& data, int last, ConstVec qd, Eigen::Ref<Matrix3Xd> omega_out,
+                   Eigen::Ref<Matrix3Xd> omega_dot_out, Eigen::Ref<Matrix3Xd> acc_out) {
   Eigen::Vector3d omega = Eigen::Vector3d::Zero(), omega_dot = Eigen::Vector3d::Zero();
   Eigen::Vector3d acc = Eigen::Vector3d::Zero();
-  for (int i = 0; i <= link; ++i) {
+  for (int i = 0; i <= last; ++i) {
     if (i > 0) {
       const Eigen::Vector3d d = data.origin[i] - data.origin[i - 1];
       acc += omega_dot.cross(d) + omega.cross(omega.cross(d));
@@ -67,9 +67,19 @@ Eigen::Vector3d point_jacobian_dot_qd(const Data& data, int link, const Eigen::V
     const Eigen::Vector3d w_joint = data.axis[i] * qd[i];
     omega_dot += omega.cross(w_joint);
     omega += w_joint;
+    omega_out.col(i) = omega;
+    omega_dot_out.col(i) = omega_dot;
+    acc_out.col(i) = acc;
   }
+}
+
+Eigen::Vector3d point_jacobian_dot_qd(const Data& data, int link, const Eigen::Vector3d& point,
+                                      ConstVec qd) {
+  Matrix3Xd omega(3, link + 1), omega_dot(3, link + 1), acc(3, link + 1);
+  outward_rates(data, link, qd, omega, omega_dot, acc);
   const Eigen::Vector3d d = point_position(data, link, point) - data.origin[link];
-  return acc + omega_dot.cross(d) + omega.cross(omega.cross(d));
+  return acc.col(link) + omega_dot.col(link).cross(d) +
+         omega.col(link).cross(omega.col(link).cross(d));
 }
 
 }  // namespace elbowsim

@@ -16,6 +16,12 @@ Eigen::Vector3d point_position(const Data& data, int link, const Eigen::Vector3d
 void point_jacobian(const Model& model, const Data& data, int link, const Eigen::Vector3d& point,
                     Eigen::Ref<Matrix3Xd> J);
 
+// The outward Newton-Euler pass with qdd = 0 over links 0 .. last: column i
+// of omega, omega_dot and acc gets link i's angular velocity, angular
+// acceleration and origin acceleration [world]. Needs forward_kinematics.
+void outward_rates(const Data& data, int last, ConstVec qd, Eigen::Ref<Matrix3Xd> omega,
+                   Eigen::Ref<Matrix3Xd> omega_dot, Eigen::Ref<Matrix3Xd> acc);
+
 // dJ/dt * qd for the same point [m/s^2, world]: its acceleration when qdd = 0
 // and gravity is off. Needs forward_kinematics.
 Eigen::Vector3d point_jacobian_dot_qd(const Data& data, int link, const Eigen::Vector3d& point,
