@@ -104,6 +104,8 @@ TEST_CASE("a run whose steps shrink to nothing stops as stalled (exit 3, in seco
   CHECK(r.exit_code == 3);
   CHECK(has(r.output, "the run stalled at t = "));
   CHECK(has(r.output, "contact.events: step"));
+  // It names the point that grazes (the experiment's elbow is called "elbow").
+  CHECK(has(r.output, "(at elbow, where the last event was located"));
   const auto summary = nlohmann::json::parse(t::slurp(dir / "elbow_on" / "summary.json"));
   CHECK(summary["completed"] == false);
   CHECK(summary["final_time"].get<double>() < 4.8);

@@ -141,6 +141,7 @@ struct ContactData {
   double max_abs_Cd = 0;         // [m/s]
   long dependent_steps = 0;      // steps whose active rows were dependent
   bool dependent_warned = false; // the dependent-rows warning was given
+  int last_located_slot = -1;    // the slot of the last event located inside a step (stall messages)
   // --- scratch of the stages (capacities reserved) ---------------------------
   std::vector<int> candidates, landing, impact_rows;  // slot indices
   std::vector<std::pair<int, int>> events_found;      // slot and event at a step's end (events.cpp)

@@ -140,6 +140,7 @@ void locate_first_event(const Model& model, Data& data, double t0) {
     if (tau < first_time || first < 0) first = k, first_time = tau, first_event = event;
   }
   if (first < 0) return;
+  c.last_located_slot = first;
   redo_step(model, data, t0, first_time);
   apply_event(model, data, first, first_event);
   detect_contacts(model, data);

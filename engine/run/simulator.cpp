@@ -24,6 +24,22 @@ double thread_cpu_seconds() {
 
 namespace {
 
+// The slot with the most events in events[from..], the lowest on a tie
+// (stall messages name it: an elbow, or e.g. the hand's end of the last link).
+void busiest_slot(const std::vector<ContactEvent>& events, std::size_t from, Failure& failure) {
+  std::vector<long> count;
+  for (std::size_t k = from; k < events.size(); ++k) {
+    const std::size_t slot = static_cast<std::size_t>(events[k].slot);
+    if (slot >= count.size()) count.resize(slot + 1, 0);
+    ++count[slot];
+  }
+  for (std::size_t slot = 0; slot < count.size(); ++slot)
+    if (count[slot] > failure.slot_events) {
+      failure.slot = static_cast<int>(slot);
+      failure.slot_events = count[slot];
+    }
+}
+
 // Moves what the last step reported into the result.
 void collect_log(const Model& model, const Data& data, RunResult& result) {
   result.events.insert(result.events.end(), data.log.events.begin(), data.log.events.end());
@@ -161,12 +177,14 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
       // Adaptive steps may be short for accuracy alone: only a window full of
       // events (a tenth of its steps) is a stall there.
       const bool zeno = !adaptive || result.events.size() - window_events >= kStallSteps / 10;
-      window_events = result.events.size();
       if (zeno && data.t - window_start < stall_share * kStallSteps * model.options.step) {
         data.failure = Failure{Failure::Kind::stalled, data.t, data.step_count};
         data.failure.value = data.t - window_start;
         data.failure.limit = kStallSteps;
+        busiest_slot(result.events, window_events, data.failure);
+        if (data.failure.slot < 0) data.failure.slot = data.contact.last_located_slot;
       }
+      window_events = result.events.size();
       window_start = data.t;
     }
     collect_log(model, data, result);

@@ -134,6 +134,7 @@ void reset(const Model& model, Data& data) {
   if (model.effects.contact) {
     if (!data.contact.world)
       data.contact.world = std::make_shared<CollisionWorld>(model, data.contact.geometry);
+    data.contact.last_located_slot = -1;
     select_active_set(model, data);
   }
   evaluate_outputs(model, data);

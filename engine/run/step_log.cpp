@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "engine/contact/primitives.hpp"
 #include "engine/model.hpp"
 
 namespace elbowsim {
@@ -161,9 +162,17 @@ std::string describe(const Model& model, const Failure& f) {
       msg << "the run stalled at " << at_time(f.t) << ": its last " << f.limit << " steps advanced "
           << quantity(f.value, "s") << " in all, under "
           << (is_adaptive(model.options.integrator) ? "0.01" : "1")
-          << " % of simulation.step each on average; "
-          << "located events keep cutting the steps (an elbow grazing or chattering on the table?): "
-             "try contact.events: step, or a larger contact.locate_tolerance";
+          << " % of simulation.step each on average; located events keep cutting the steps ";
+      if (f.slot >= 0 && f.slot_events > 0)
+        msg << "(" << slot_name(model, contact_geometry(model), f.slot) << ": " << f.slot_events
+            << " landings, releases, sticks or slips in those steps: grazing or chattering on the "
+               "table)";
+      else if (f.slot >= 0)
+        msg << "(at " << slot_name(model, contact_geometry(model), f.slot)
+            << ", where the last event was located: grazing the table)";
+      else
+        msg << "(a point grazing or chattering on the table?)";
+      msg << ": try contact.events: step, or a larger contact.locate_tolerance";
       return msg.str();
     case Failure::Kind::step_underflow:
       msg << "the " << to_string(model.options.integrator) << " integrator could not go on at "

@@ -66,6 +66,8 @@ struct Failure {
   double stable_step = 0;  // [s] estimated largest stable step at the failure; 0: not estimated
   bool diverging = false;  // the check is a divergence signature (the run blew up)
   double since = std::nan("");  // [s] energy_balance: when the residual first went beyond the bound
+  int slot = -1;         // stalled: the contact slot with the most events in the stalled window
+  long slot_events = 0;  // stalled: that slot's events in the window
   explicit operator bool() const { return kind != Kind::none; }
 };
 
