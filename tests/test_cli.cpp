@@ -263,3 +263,25 @@ TEST_CASE("cli: validate prints where each elbow is against the table, per varia
   CHECK(r.output.find("on the table (box 0", on) < off);
   CHECK(r.output.find("20 mm above box 0", off) != std::string::npos);
 }
+
+TEST_CASE("cli: render of a variant's folder draws what run drew (the title names the variant)") {
+  // scenario.yaml is the variant as run, without its name; summary.json keeps
+  // it. Without it the re-rendered title lost ": elbow_off" and the frames differed.
+  const std::string experiment = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_experiment.yaml";
+  const fs::path dir = scratch("cli", "variant_render");
+  const Outcome first = run("run " + experiment + " --out " + dir.string() +
+                            " --no-report --set simulation.duration=0.1 --set 'render.size=[160,96]'"
+                            " --set render.fps=10 --set output.video=false --set output.frames=true"
+                            " --set 'variants={elbow_off: {task.elbow_clearance: 0.02}}'");
+  INFO(first.output);
+  REQUIRE(first.exit_code == 0);
+  const fs::path frames = dir / "elbow_off" / "frames";
+  const std::string drawn = slurp(frames / "frame_00001.png");
+  const auto summary = nlohmann::json::parse(slurp(dir / "elbow_off" / "summary.json"));
+  CHECK(summary["variant"] == "elbow_off");
+  fs::remove_all(frames);
+  const Outcome again = run("render " + (dir / "elbow_off").string());
+  INFO(again.output);
+  REQUIRE(again.exit_code == 0);
+  CHECK(slurp(frames / "frame_00001.png") == drawn);
+}

@@ -74,8 +74,11 @@ std::string load_run(const fs::path& folder, Scenario& scenario, Recording& reco
   if (!fs::is_regular_file(yaml))
     return folder.string() + ": no scenario.yaml (written by elbowsim run since version 0.1.0)";
   try {
-    load_run_folder(folder);  // refuses cut or mismatched files (InconsistentRunFolder)
+    const report::RunData run = load_run_folder(folder);  // refuses cut or mismatched files
     scenario = load_scenario(yaml.string());
+    // scenario.yaml is the variant as run, without its name: summary.json keeps it.
+    if (run.summary.is_object() && run.summary.contains("variant"))
+      scenario.variant = run.summary["variant"].get<std::string>();
     std::ifstream in(csv, std::ios::binary);
     recording = read_trajectory_csv(in, csv.string());
   } catch (const std::exception& e) {

@@ -86,6 +86,7 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   const double e_in = result.energy_final.electrical_in;
   nlohmann::ordered_json j;
   j["scenario"] = m.name;
+  if (!scenario.variant.empty()) j["variant"] = scenario.variant;  // `render` titles frames by it
   j["description"] = scenario.description;
   j["file"] = scenario.file;
   j["effects"] = m.active_effects();
