@@ -3,7 +3,8 @@
 # evaluation with motors, p = 2, at s = 7 and s = 60, per solver: counts do not
 # move with the machine's load, so a regression shows even on a noisy machine.
 # Writes bench/results/<machine>/callgrind.json (or --out DIR) with the
-# instructions per evaluation inside nonstiff_rates (--toggle-collect).
+# instructions per evaluation inside nonstiff_rates (--toggle-collect); the
+# counts the file held before, with their commit, are kept as "previous".
 #
 #   bench/callgrind.sh [--out DIR]        needs build/bench/count_derivative
 set -euo pipefail
@@ -13,7 +14,7 @@ out=""
 while (($#)); do
   case $1 in
     --out) out=${2:?--out needs a folder}; shift ;;
-    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "callgrind.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -44,12 +45,28 @@ for s in 7 60; do
   done
 done
 commit=$(git -C "$root" rev-parse HEAD 2>/dev/null || echo unknown)
+# The counts the file held, unless they are of this same commit (a rerun).
+previous=""
+if [[ -f $out/callgrind.json ]]; then
+  previous=$(COMMIT=$commit /usr/bin/python3 - "$out/callgrind.json" <<'EOF'
+import json, os, sys
+doc = json.load(open(sys.argv[1]))
+if doc.get("git_commit") == os.environ["COMMIT"]:
+    doc = doc.get("previous")
+if doc:
+    rows = ",\n".join("      " + json.dumps(r) for r in doc["counts"])
+    print('  "previous": {\n    "git_commit": "%s",\n    "counts": [\n%s\n    ]\n  },'
+          % (doc["git_commit"], rows))
+EOF
+  )
+fi
 {
   echo "{"
   echo "  \"what\": \"instructions per derivative evaluation (nonstiff_rates, full motors, p resting elbows), callgrind --toggle-collect\","
   echo "  \"valgrind\": \"$(valgrind --version)\","
   echo "  \"git_commit\": \"$commit\","
   echo "  \"evaluations\": $reps,"
+  [[ -n $previous ]] && echo "$previous"
   echo "  \"counts\": ["
   for i in "${!rows[@]}"; do
     sep=","; ((i == ${#rows[@]} - 1)) && sep=""

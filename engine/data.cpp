@@ -49,7 +49,7 @@ Data::Data(const Model& model) : llt(model.dof), contact(make_contact_data(model
   axis = com = omega = omega_dot = origin_acc = force = moment = origin;
   inertia = rotation;
   mass_matrix = Eigen::MatrixXd::Zero(n, n);
-  bias = tau = zero = unit = D = u = D_inv = Eigen::VectorXd::Zero(n);
+  bias = tau = zero = unit = D = u = D_inv = coupling = Eigen::VectorXd::Zero(n);
   spatial_inertia.assign(un, Matrix6d::Zero());
   articulated_inertia = spatial_inertia;
   motion_subspace.assign(un, Vector6d::Zero());

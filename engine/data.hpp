@@ -108,6 +108,9 @@ struct Data {
   // where they would divide, which takes a division off their serial chain.
   std::vector<Vector6d> U_over_D;
   Eigen::VectorXd D_inv;
+  // e_i = S_i^T U_{i+1} / D_{i+1} (0 for the last joint): the coupling of each
+  // joint to its child, which the response sweeps split off their chains.
+  Eigen::VectorXd coupling;
 
   // --- integrator state ----------------------------------------------------
   // x = [q; qd; i (motor: full); energy integrals] (run/state_layout.hpp)

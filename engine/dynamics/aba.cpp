@@ -36,7 +36,9 @@ void articulated_pass(const Model& model, Data& data, ConstVec qd,
     data.u[i] = u;
     data.D_inv[i] = 1.0 / data.D[i];
     data.U_over_D[i] = data.U[i] / data.D[i];
+    if (i == model.dof - 1) data.coupling[i] = 0.0;
     if (i == 0) continue;
+    data.coupling[i - 1] = data.motion_subspace[i - 1].dot(data.U_over_D[i]);
     const Matrix6d Ia = data.articulated_inertia[i] - data.U[i] * data.U[i].transpose() / data.D[i];
     data.articulated_inertia[i - 1] += Ia;
     data.bias_force[i - 1] += data.bias_force[i] + Ia * data.bias_acc[i] + data.U[i] * (u / data.D[i]);
@@ -62,43 +64,6 @@ void forward_dynamics_aba(const Model& model, Data& data, ConstVec qd,
   velocity_pass(model, data, qd);
   articulated_pass(model, data, qd, tau);
   acceleration_pass(model, data, qdd);
-}
-
-// Pass 2 alone (Featherstone's I^A_i): U_i = I^A_i S_i, D_i = S_i^T U_i + Jm_i,
-// I^A_{i-1} = I_{i-1} + I^A_i - U_i U_i^T / D_i. One 6 x 6 accumulator serves
-// the whole chain. The child's projection is applied to U_i as
-//   U_i = (I_i + I^A_{i+1}) S_i - U_{i+1} ((U_{i+1} / D_{i+1})^T S_i)
-// rather than to the matrix first: the product with S_i then does not wait for
-// the child's division, which leaves a 6-dot, not a 6 x 6 update and product,
-// on the chain from one joint to the next.
-void articulated_inertias(const Model& model, Data& data) {
-  // I^A_{i+1}, not yet projected. Kept in memory (Data's scratch), not in
-  // registers: 36 doubles do not fit the 16 SSE registers, and the compiler's
-  // register copies and spills of a local 6 x 6 doubled the instructions.
-  Matrix6d& Ia = data.articulated_inertia[0];
-  Ia.setZero();
-  Vector6d U_child = Vector6d::Zero(), U_over_D_child = Vector6d::Zero();
-  for (int i = model.dof - 1; i >= 0; --i) {
-    const Vector6d S = revolute_subspace(data.axis[i], data.origin[i]);
-    data.motion_subspace[i] = S;
-    add_spatial_inertia(model.links[i].mass, data.com[i], data.inertia[i], Ia);
-    // Ia S as a sum of columns: packet-wise adds, where Eigen's product of a
-    // fixed 6 x 6 would take six horizontal row dots.
-    const Vector6d W = Ia.col(0) * S[0] + Ia.col(1) * S[1] + Ia.col(2) * S[2] +
-                       Ia.col(3) * S[3] + Ia.col(4) * S[4] + Ia.col(5) * S[5];
-    const Vector6d U = W - U_child * U_over_D_child.dot(S);
-    const double D = S.dot(U) + (model.has_armature() ? model.armature[i] : 0.0);
-    // Now I^A_i; the last joint has no child to project, joint 0 no parent to pass it to.
-    if (i > 0 && i < model.dof - 1) Ia.noalias() -= U_child * U_over_D_child.transpose();
-    const double D_inv = 1.0 / D;
-    const Vector6d U_over_D = U * D_inv;
-    data.U[i] = U;
-    data.D[i] = D;
-    data.D_inv[i] = D_inv;
-    data.U_over_D[i] = U_over_D;
-    U_child = U;
-    U_over_D_child = U_over_D;
-  }
 }
 
 }  // namespace elbowsim

@@ -12,12 +12,13 @@ void forward_dynamics_aba(const Model& model, Data& data, ConstVec qd,
                           ConstVec tau, Eigen::Ref<Eigen::VectorXd> qdd);
 
 // The inward pass of ABA without velocities or torques: the articulated
-// inertias' projections data.U [n] and data.D [n] (+ Jm) at the current q,
-// all that the response below needs. Needs forward_kinematics(q). O(n).
+// inertias' projections data.U [n] and data.D [n] (+ Jm), U / D, 1 / D and
+// the coupling e_i at the current q, all that the response below needs.
+// Needs forward_kinematics(q). O(n). (dynamics/articulated_inertias.cpp)
 void articulated_inertias(const Model& model, Data& data);
 
 // x [n] = (M + Jm)^-1 tau for joint torques tau [n] (no velocity, gravity or
-// damping terms), from the U, D (U_over_D, D_inv) of the last
+// damping terms), from the U, D (U_over_D, D_inv, coupling) of the last
 // articulated_inertias() or forward_dynamics_aba() at the same q: one inward
 // and one outward sweep of 6-vectors, O(n); the inward sweep starts at tau's
 // last non-zero entry (a contact row's torques end at its link).
