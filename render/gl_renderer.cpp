@@ -127,7 +127,14 @@ void draw_grid(GlRenderer::Gl& g, const LineSet& grid, const Eigen::Matrix4f& vi
   glBindBuffer(GL_ARRAY_BUFFER, g.line_vbo);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(lines.size() * sizeof(float)), lines.data(),
                GL_STREAM_DRAW);
+  // Smooth lines (coverage in alpha, blended) when the frame has one sample
+  // per pixel; GL ignores this under multisampling.
+  glEnable(GL_LINE_SMOOTH);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDrawArrays(GL_LINES, 0, GLsizei(lines.size() / 3));
+  glDisable(GL_BLEND);
+  glDisable(GL_LINE_SMOOTH);
   glBindVertexArray(0);
 }
 

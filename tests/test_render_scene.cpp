@@ -123,9 +123,8 @@ TEST_CASE("render scene: the whole desired hand path in grey, only when hand_d_*
   const Playback playback(model, rec);
   const SceneOptions options;
   // Mid-run the scene already holds the whole desired path, not only up to t.
-  const Scene scene =
-      build_scene(model, playback.at(0.3), playback.hand_path(0.3), options,
-                  playback.desired_hand_path());
+  const Scene scene = build_scene(model, playback.at(0.3), playback.hand_path(0.3), options,
+                                  playback.desired_hand_path());
   const Polyline& desired = scene.desired_hand_path;
   REQUIRE(desired.points.size() == 11);
   CHECK(approx(desired.points.front(), Vector3d(0.75, 0, 0), 1e-12));
@@ -251,7 +250,8 @@ TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
   CHECK(plain.render.width == 1280);
   CHECK(plain.render.height == 720);
   CHECK(plain.render.fps == 30);
-  CHECK(plain.render.msaa == 4);
+  CHECK(plain.render.antialiasing == Antialiasing::fxaa);
+  CHECK(plain.render.samples() == 1);
   CHECK_FALSE(plain.render.supersample);
   CHECK_FALSE(plain.render.force_scale.has_value());  // automatic
   CHECK(plain.render.shadows);
@@ -280,6 +280,8 @@ TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
   CHECK(s.render.width == 640);
   CHECK(s.render.fps == 25);
   CHECK(s.render.msaa == 2);
+  CHECK(s.render.antialiasing == Antialiasing::msaa);  // msaa alone asks for it
+  CHECK(s.render.samples() == 2);
   CHECK(s.render.supersample);
   CHECK(s.render.force_scale == 0.02);
   CHECK(s.render.camera.follow == CameraFollow::hand);
@@ -291,6 +293,13 @@ TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
   CHECK(s.output.frames);
   CHECK(load_scenario_text(base + "render: {camera: {preset: top}}\n", "x.yaml")
             .render.camera.preset == CameraPreset::top);
+  auto aa = [&](const std::string& keys) {
+    return load_scenario_text(base + "render: {" + keys + "}\n", "x.yaml").render;
+  };
+  CHECK(aa("msaa: 1").antialiasing == Antialiasing::none);
+  CHECK(aa("antialiasing: msaa").samples() == 4);
+  CHECK(aa("antialiasing: fxaa, msaa: 4").samples() == 1);
+  CHECK(aa("antialiasing: none").antialiasing == Antialiasing::none);
   CHECK_FALSE(load_scenario_text(base + "render: {force_scale: auto}\n", "x.yaml")
                   .render.force_scale.has_value());
 
@@ -305,6 +314,10 @@ TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
   };
   const std::string l = "x.yaml:" + std::to_string(line);
   CHECK(error("render: {msaa: 3}\n") == l + ":16: render.msaa: must be 1 (off), 2 or 4 (got 3)");
+  CHECK(error("render: {antialiasing: msaa, msaa: 1}\n") ==
+        l + ":36: render.msaa: must be 2 or 4 with antialiasing msaa (got 1)");
+  CHECK(error("render: {antialiasing: smaa}\n")
+            .find(l + ":24: render.antialiasing: must be one of fxaa, msaa, none") == 0);
   CHECK(error("render: {size: [641, 480]}\n").find(l + ":17: render.size[0]: must be even") == 0);
   CHECK(error("render: {camera: {preset: diagonal}}\n")
             .find("render.camera.preset: must be one of front, side, top, three_quarter") !=
