@@ -16,7 +16,7 @@ namespace elbowsim {
 
 // Buffers reused from frame to frame (sized on first use).
 struct FxaaScratch {
-  std::vector<std::uint8_t> luma;  // width * height
+  std::vector<std::uint8_t> luma;  // the frame's luma with a border (fxaa.cpp)
   std::vector<std::uint8_t> mask;  // width: which pixels of a row are on an edge
   struct Blend {
     std::uint32_t pixel;  // index of the pixel changed
