@@ -82,7 +82,9 @@ void FrameWriter::write(const ReadFrame& frame, std::vector<std::uint8_t>& rgb) 
   if (out_.encoder) out_.encoder->write(rgb.data());
   if (out_.frames)
     write_png(*out_.frames / frame_file_name(frame.index), width_, height_, rgb.data());
-  if (out_.side_by_side) out_.side_by_side->put(out_.panel, frame.index, rgb.data());
+  if (out_.side_by_side)
+    out_.side_by_side->put(out_.panel, frame.index, rgb.data(),
+                           out_.encoder ? out_.encoder->yuv() : nullptr);
   output_seconds += seconds_since(start);
 }
 

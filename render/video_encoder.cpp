@@ -134,9 +134,13 @@ VideoEncoder::~VideoEncoder() {
 
 void VideoEncoder::write(const std::uint8_t* rgb) {
   rgb_to_yuv420(rgb, width_, height_, yuv_.data());
+  write_yuv(yuv_.data());
+}
+
+void VideoEncoder::write_yuv(const std::uint8_t* yuv) {
   std::size_t done = 0;
   while (done < yuv_.size()) {
-    const ssize_t n = ::write(pipe_, yuv_.data() + done, yuv_.size() - done);
+    const ssize_t n = ::write(pipe_, yuv + done, yuv_.size() - done);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) throw std::runtime_error("ffmpeg stopped reading frames" + log_tail());
     done += std::size_t(n);
