@@ -20,7 +20,10 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
   g.depth = link_program(shaders::kDepthVertex, shaders::kDepthFragment);
   g.meshes[sphere] = upload(unit_sphere(32, 16));
   g.meshes[cylinder] = upload(unit_cylinder(32));
-  g.meshes[tube] = upload(unit_cylinder(8));
+  // Paths and drop lines: a few pixels wide, so 6 sides and no caps (the
+  // next segment covers the joint) are as good as more, at a third of the
+  // triangles of 8 capped sides.
+  g.meshes[tube] = upload(unit_tube(6));
   g.meshes[cone] = upload(unit_cone(32));
   g.meshes[box] = upload(unit_box());
   g.meshes[ring] = upload(unit_torus(48, 8, kRingTube));

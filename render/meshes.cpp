@@ -58,6 +58,13 @@ Mesh unit_sphere(int slices, int stacks) {
 }
 
 Mesh unit_cylinder(int slices) {
+  Mesh m = unit_tube(slices);
+  add_disc(m, slices, 1, true);
+  add_disc(m, slices, 0, false);
+  return m;
+}
+
+Mesh unit_tube(int slices) {
   Mesh m;
   for (int j = 0; j <= slices; ++j) {
     const double phi = 2 * std::numbers::pi * j / slices;
@@ -70,8 +77,6 @@ Mesh unit_cylinder(int slices) {
     add_triangle(m, a, b, c);
     add_triangle(m, a, c, d);
   }
-  add_disc(m, slices, 1, true);
-  add_disc(m, slices, 0, false);
   return m;
 }
 

@@ -242,6 +242,19 @@ TEST_CASE("render meshes: closed, outward-facing (signed volume) unit shapes") {
   CHECK(volume(unit_cylinder(64)) == doctest::Approx(pi).epsilon(0.01));
   CHECK(volume(unit_cone(64)) == doctest::Approx(pi / 3).epsilon(0.01));
   CHECK(volume(unit_torus(96, 32, 0.1)) == doctest::Approx(2 * pi * pi * 0.01).epsilon(0.01));
+  // The open tube (paths): the cylinder's side only, every vertex on the
+  // unit circle at z 0 or 1 with a radial normal; the cylinder adds two caps.
+  const Mesh tube = unit_tube(6);
+  CHECK(tube.indices.size() == 3 * 2 * 6);
+  CHECK(unit_cylinder(6).indices.size() == tube.indices.size() + 3 * 2 * 6);
+  for (std::size_t i = 0; i < tube.vertices.size(); i += 6) {
+    const float* v = &tube.vertices[i];
+    CHECK(std::hypot(v[0], v[1]) == doctest::Approx(1.0));
+    CHECK((v[2] == 0.0f || v[2] == 1.0f));
+    CHECK(v[3] == doctest::Approx(v[0]));
+    CHECK(v[4] == doctest::Approx(v[1]));
+    CHECK(v[5] == 0.0f);
+  }
 }
 
 TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
