@@ -18,8 +18,10 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
   g.lit = link_program(shaders::kLitVertex, shaders::kLitFragment);
   g.flat = link_program(shaders::kFlatVertex, shaders::kFlatFragment);
   g.depth = link_program(shaders::kDepthVertex, shaders::kDepthFragment);
-  g.meshes[sphere] = upload(unit_sphere(32, 16));
-  g.meshes[cylinder] = upload(unit_cylinder(32));
+  // 24 slices: a sphere or cylinder 60 px across is then within 0.3 px of
+  // round (the inset's magnified, faded forearm shows its facets a little).
+  g.meshes[sphere] = upload(unit_sphere(24, 12));
+  g.meshes[cylinder] = upload(unit_cylinder(24));
   // Paths and drop lines: a few pixels wide, so 6 sides and no caps (the
   // next segment covers the joint) are as good as more, at a third of the
   // triangles of 8 capped sides.
