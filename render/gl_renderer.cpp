@@ -170,8 +170,10 @@ void draw_inset(GlRenderer::Gl& g, const Inset& inset, const Camera& main, const
   glUniform1f(glGetUniformLocation(g.lit, "fade"), inset.fade);
   glUniform3f(glGetUniformLocation(g.lit, "fade_color"), inset.background.r, inset.background.g,
               inset.background.b);
-  draw_shapes(g, g.instances[arm]);
-  draw_shapes(g, g.instances[ground]);
+  for (const Group group : {arm, ground}) {
+    cull_to_window(g.instances[group], inset.camera, g.culled);
+    draw_shapes(g, g.culled);
+  }
   glUniform1f(glGetUniformLocation(g.lit, "fade"), 0.0f);
   glUniform1i(glGetUniformLocation(g.lit, "unlit"), 1);
   glDisable(GL_DEPTH_TEST);

@@ -1,6 +1,7 @@
 #include "render/instances.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace elbowsim {
 
@@ -78,7 +79,51 @@ void add_ground(const Scene& s, ShapeInstances& out) {
   }
 }
 
+// Each unit shape's bounding sphere (meshes.hpp): centre and radius.
+struct Bound {
+  Eigen::Vector3f centre;
+  float radius;
+};
+
+Bound unit_bound(int shape) {
+  switch (shape) {
+    case cylinder:
+    case tube:
+    case cone:
+      return {{0, 0, 0.5f}, std::sqrt(1.25f)};  // radius 1, z from 0 to 1
+    case box:
+      return {{0, 0, 0}, std::sqrt(0.75f)};  // [-1/2, 1/2]^3
+    case ring:
+      return {{0, 0, 0}, float(1 + kRingTube)};
+    default:
+      return {{0, 0, 0}, 1.0f};  // the unit sphere
+  }
+}
+
 }  // namespace
+
+void cull_to_window(const ShapeInstances& in, const Camera& camera, ShapeInstances& out) {
+  const Eigen::Vector3d back = (camera.eye - camera.target).normalized();
+  const Eigen::Vector3f right = camera.up.cross(back).normalized().cast<float>();
+  const Eigen::Vector3f up = back.cast<float>().cross(right);
+  const Eigen::Vector3f target = camera.target.cast<float>();
+  const float half_h = float(0.5 * camera.ortho_height), half_w = half_h * float(camera.aspect);
+  for (int s = 0; s < shape_count; ++s) {
+    const std::vector<float>& from = in[std::size_t(s)];
+    std::vector<float>& to = out[std::size_t(s)];
+    to.clear();
+    const Bound b = unit_bound(s);
+    for (std::size_t k = 0; k + kInstanceFloats <= from.size(); k += kInstanceFloats) {
+      const Eigen::Map<const Eigen::Matrix4f> model(from.data() + k);
+      // The bounding sphere's centre from the window's, and its radius.
+      const Eigen::Vector3f d = (model * b.centre.homogeneous()).head<3>() - target;
+      const float r = b.radius * model.topLeftCorner<3, 3>().colwise().norm().maxCoeff();
+      if (std::abs(d.dot(right)) <= half_w + r && std::abs(d.dot(up)) <= half_h + r)
+        to.insert(to.end(), from.begin() + std::ptrdiff_t(k),
+                  from.begin() + std::ptrdiff_t(k + kInstanceFloats));
+    }
+  }
+}
 
 void add_instance(std::vector<float>& out, const Eigen::Matrix3d& linear, const Eigen::Vector3d& t,
                   const Color& color) {

@@ -34,6 +34,11 @@ void collect(const Scene& scene, Instances& out);
 // (each segment a ribbon facing the inset's camera), then the hand.
 std::array<ShapeInstances, 3> inset_instances(const Inset& inset);
 
+// The instances of `in` whose bounding sphere reaches into the window of
+// the orthographic `camera` (ortho_height > 0), into `out` (cleared first):
+// what the inset can show of the scene, so that only that is transformed.
+void cull_to_window(const ShapeInstances& in, const Camera& camera, ShapeInstances& out);
+
 // One instance: model matrix [linear t; 0 1] and normal matrix linear^-T.
 void add_instance(std::vector<float>& out, const Eigen::Matrix3d& linear, const Eigen::Vector3d& t,
                   const Color& color);
