@@ -29,6 +29,7 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
   g.meshes[cone] = upload(unit_cone(32));
   g.meshes[box] = upload(unit_box());
   g.meshes[ring] = upload(unit_torus(48, 8, kRingTube));
+  g.meshes[square] = upload(unit_square());
   make_line_buffer(g);
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);

@@ -30,10 +30,10 @@ void add_path(ShapeInstances& out, const Polyline& path) {
     add_along(out[tube], p[k - 1], p[k], path.radius, path.color);
 }
 
-// Each piece's segments as flat ribbons (boxes of width 2 radius and depth
-// radius, broad side toward `back`, each a radius longer at both ends so
-// that bends stay closed): drawn flat, a ribbon looks like a tube at a sixth
-// of its triangles.
+// Each piece's segments as flat ribbons (squares stretched to width 2
+// radius, facing `back`, each a radius longer at both ends so that bends
+// stay closed): drawn flat, a ribbon looks like a tube at a small part of
+// its triangles.
 void add_inset_path(ShapeInstances& out, const InsetPath& path, const Eigen::Vector3d& back) {
   const double r = path.radius;
   for (const std::vector<Eigen::Vector3d>& p : path.pieces)
@@ -43,7 +43,7 @@ void add_inset_path(ShapeInstances& out, const InsetPath& path, const Eigen::Vec
       if (d.norm() < 1e-12 || across.norm() < 1e-12) continue;
       Eigen::Matrix3d linear;
       linear << 2 * r * across.normalized(), r * back, d + 2 * r * d.normalized();
-      add_instance(out[box], linear, 0.5 * (p[k - 1] + p[k]), path.color);
+      add_instance(out[square], linear, 0.5 * (p[k - 1] + p[k]), path.color);
     }
 }
 
@@ -95,6 +95,8 @@ Bound unit_bound(int shape) {
       return {{0, 0, 0}, std::sqrt(0.75f)};  // [-1/2, 1/2]^3
     case ring:
       return {{0, 0, 0}, float(1 + kRingTube)};
+    case square:
+      return {{0, 0, 0}, std::sqrt(0.5f)};
     default:
       return {{0, 0, 0}, 1.0f};  // the unit sphere
   }

@@ -114,6 +114,23 @@ Mesh unit_box() {
   return m;
 }
 
+Mesh unit_square() {
+  Mesh m;
+  for (const double side : {1.0, -1.0}) {  // a face toward +y, then one toward -y
+    const std::uint32_t first = std::uint32_t(m.vertices.size() / 6);
+    for (const auto& [x, z] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+      add_vertex(m, 0.5 * x, 0, 0.5 * z, 0, side, 0);
+    if (side > 0) {  // counter-clockwise seen from +y: x to z is clockwise there
+      add_triangle(m, first, first + 2, first + 1);
+      add_triangle(m, first, first + 3, first + 2);
+    } else {
+      add_triangle(m, first, first + 1, first + 2);
+      add_triangle(m, first, first + 2, first + 3);
+    }
+  }
+  return m;
+}
+
 Mesh unit_torus(int slices, int sides, double minor) {
   Mesh m;
   for (int i = 0; i <= slices; ++i) {

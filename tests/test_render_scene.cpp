@@ -255,6 +255,24 @@ TEST_CASE("render meshes: closed, outward-facing (signed volume) unit shapes") {
     CHECK(v[4] == doctest::Approx(v[1]));
     CHECK(v[5] == 0.0f);
   }
+  // The square (the inset's ribbons): two faces, each wound counter-clockwise
+  // seen from the side its normal points to, so one is drawn from either side.
+  const Mesh square = unit_square();
+  REQUIRE(square.indices.size() == 3 * 4);
+  int up = 0, down = 0;
+  for (std::size_t k = 0; k < square.indices.size(); k += 3) {
+    auto p = [&](int j) {
+      const float* v = &square.vertices[6 * square.indices[k + std::size_t(j)]];
+      return Vector3d(v[0], v[1], v[2]);
+    };
+    const Vector3d n = (p(1) - p(0)).cross(p(2) - p(0));
+    const float ny = square.vertices[6 * square.indices[k] + 4];
+    CHECK(n.y() * ny > 0);
+    (ny > 0 ? up : down) += 1;
+    for (int j = 0; j < 3; ++j) CHECK(p(j).cwiseAbs().maxCoeff() == doctest::Approx(0.5));
+  }
+  CHECK(up == 2);
+  CHECK(down == 2);
 }
 
 TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
