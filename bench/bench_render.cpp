@@ -134,8 +134,8 @@ void write_json_row(std::FILE* f, const Config& c, std::vector<RenderStats> runs
                "\"end\": %.4f, \"fetch\": %.4f, \"compose\": %.4f, \"output\": %.4f},\n"
                "     \"fps_per_run\": [",
                c.width, c.height, c.label().c_str(), c.video ? "mp4" : "none", c.width, c.height,
-               to_string(c.antialiasing), m.samples, m.samples, c.video ? "mp4" : "none", m.frames, m.ffmpeg_missing ? "true" : "false",
-               runs.size(), m.frames / m.wall_seconds,
+               to_string(c.antialiasing), m.samples, m.samples, c.video ? "mp4" : "none", m.frames,
+               m.ffmpeg_missing ? "true" : "false", runs.size(), m.frames / m.wall_seconds,
                runs.back().frames / runs.back().wall_seconds,
                runs.front().frames / runs.front().wall_seconds, m.wall_seconds * per,
                m.scene_seconds * per, m.draw_seconds * per, m.finish_seconds * per,
@@ -171,10 +171,10 @@ int main(int argc, char** argv) {
   settings.fps = 30;
   constexpr Antialiasing none = Antialiasing::none, msaa = Antialiasing::msaa,
                          fxaa = Antialiasing::fxaa;
-  const std::vector<Config> configs = {
-      {640, 480, none, 1, true},   {640, 480, msaa, 4, true},   {1280, 720, none, 1, true},
-      {1280, 720, msaa, 4, true},  {1280, 720, fxaa, 1, true},  {1280, 720, none, 1, false},
-      {1280, 720, msaa, 4, false}, {1280, 720, fxaa, 1, false}};
+  const std::vector<Config> configs = {{640, 480, none, 1, true},   {640, 480, msaa, 4, true},
+                                       {1280, 720, none, 1, true},  {1280, 720, msaa, 4, true},
+                                       {1280, 720, fxaa, 1, true},  {1280, 720, none, 1, false},
+                                       {1280, 720, msaa, 4, false}, {1280, 720, fxaa, 1, false}};
   bool warmed = false;
   std::vector<std::vector<RenderStats>> all;
   std::string gl;
@@ -188,7 +188,8 @@ int main(int argc, char** argv) {
     if (!warmed) render_run(source, settings, request), warmed = true;
     std::vector<RenderStats> stats;
     for (int r = 0; r < runs; ++r) stats.push_back(render_run(source, settings, request));
-    if (c.width == 1280 && c.antialiasing == msaa && c.video) std::printf("(%s)\n", stats[0].gl.c_str());
+    if (c.width == 1280 && c.antialiasing == msaa && c.video)
+      std::printf("(%s)\n", stats[0].gl.c_str());
     print_row(c, stats);
     gl = stats[0].gl;
     all.push_back(std::move(stats));

@@ -192,7 +192,7 @@ TEST_CASE("run with variants: the frames piped to compare/'s encoder are the var
   CHECK(both == yuv_side_by_side(on, off, 160, 96));
 }
 
-TEST_CASE("render side by side: panels without a video of their own, its frames piped as their YUV") {
+TEST_CASE("render side by side: panels without a video, its piped frames are their YUV") {
   // The panels write PNG frames only, the side-by-side a video (through an
   // ffmpeg that keeps its raw YUV input) and PNG frames: it converts the
   // panels itself, and what it pipes is the YUV of its own PNG frames.
