@@ -8,7 +8,8 @@
 // Prototype scene: an 8-link planar arm (8 capsules) swinging over a table,
 // with 3 elbow spheres (two resting with force arrows, contact cues), the
 // hand path and a desired one (so the hand-path inset is drawn), shadows and
-// the ground grid: the render settings' defaults. Protocol: one warm-up render, then 3 timed renders per
+// the ground grid: the render settings' defaults; anti-aliasing none, MSAA
+// 4x and (at 1280x720) FXAA, the default. Protocol: one warm-up render, then 3 timed renders per
 // configuration; reports the median and where the time went in that run.
 //
 // Run: build/bench/bench_render [runs] [--json FILE]
@@ -71,8 +72,14 @@ Recording prototype_recording(const Model& model) {
 }
 
 struct Config {
-  int width, height, msaa;
+  int width, height;
+  Antialiasing antialiasing;
+  int msaa;  // samples with antialiasing msaa
   bool video;
+  std::string label() const {  // "none", "msaa4", "fxaa"
+    return antialiasing == Antialiasing::msaa ? "msaa" + std::to_string(msaa)
+                                              : to_string(antialiasing);
+  }
 };
 
 // Runs sorted by wall time, fastest first; the median is the middle one.
@@ -87,9 +94,9 @@ void print_row(const Config& c, std::vector<RenderStats> runs) {
   const RenderStats& m = runs[runs.size() / 2];
   const double per = 1000.0 / m.frames;  // ms per frame
   std::printf(
-      "%5dx%-4d  msaa %d  %-4s  %6.1f fps (%5.1f .. %5.1f)  ms/frame: scene %4.2f  "
+      "%5dx%-4d  %-5s  %-4s  %6.1f fps (%5.1f .. %5.1f)  ms/frame: scene %4.2f  "
       "draw %5.2f  end %5.2f  fetch %5.2f | writer: compose %4.2f  output %5.2f\n",
-      c.width, c.height, m.samples, c.video ? "mp4" : "none", m.frames / m.wall_seconds,
+      c.width, c.height, c.label().c_str(), c.video ? "mp4" : "none", m.frames / m.wall_seconds,
       runs.back().frames / runs.back().wall_seconds,
       runs.front().frames / runs.front().wall_seconds, m.scene_seconds * per, m.draw_seconds * per,
       m.finish_seconds * per, m.readback_seconds * per, m.compose_seconds * per,
@@ -118,16 +125,17 @@ void write_json_row(std::FILE* f, const Config& c, std::vector<RenderStats> runs
   const RenderStats& m = runs[runs.size() / 2];
   const double per = 1000.0 / m.frames;
   std::fprintf(f,
-               "    {\"name\": \"%dx%d_msaa%d_%s\", \"width\": %d, \"height\": %d, "
-               "\"msaa\": %d, \"samples\": %d, \"output\": \"%s\", \"frames\": %d,\n"
+               "    {\"name\": \"%dx%d_%s_%s\", \"width\": %d, \"height\": %d, "
+               "\"antialiasing\": \"%s\", \"msaa\": %d, \"samples\": %d, \"output\": \"%s\", "
+               "\"frames\": %d,\n"
                "     \"ffmpeg_missing\": %s, \"runs\": %zu,\n"
                "     \"median_fps\": %.4f, \"min_fps\": %.4f, \"max_fps\": %.4f,\n"
                "     \"median_ms_per_frame\": {\"wall\": %.4f, \"scene\": %.4f, \"draw\": %.4f, "
                "\"end\": %.4f, \"fetch\": %.4f, \"compose\": %.4f, \"output\": %.4f},\n"
                "     \"fps_per_run\": [",
-               c.width, c.height, c.msaa, c.video ? "mp4" : "none", c.width, c.height, c.msaa,
-               m.samples, c.video ? "mp4" : "none", m.frames, m.ffmpeg_missing ? "true" : "false",
-               runs.size(), m.frames / m.wall_seconds,
+               c.width, c.height, c.label().c_str(), c.video ? "mp4" : "none", c.width, c.height,
+               to_string(c.antialiasing), m.samples, m.samples, c.video ? "mp4" : "none", m.frames,
+               m.ffmpeg_missing ? "true" : "false", runs.size(), m.frames / m.wall_seconds,
                runs.back().frames / runs.back().wall_seconds,
                runs.front().frames / runs.front().wall_seconds, m.wall_seconds * per,
                m.scene_seconds * per, m.draw_seconds * per, m.finish_seconds * per,
@@ -161,22 +169,27 @@ int main(int argc, char** argv) {
 
   RenderSettings settings;
   settings.fps = 30;
-  const std::vector<Config> configs = {{640, 480, 1, true},   {640, 480, 4, true},
-                                       {1280, 720, 1, true},  {1280, 720, 4, true},
-                                       {1280, 720, 1, false}, {1280, 720, 4, false}};
+  constexpr Antialiasing none = Antialiasing::none, msaa = Antialiasing::msaa,
+                         fxaa = Antialiasing::fxaa;
+  const std::vector<Config> configs = {{640, 480, none, 1, true},   {640, 480, msaa, 4, true},
+                                       {1280, 720, none, 1, true},  {1280, 720, msaa, 4, true},
+                                       {1280, 720, fxaa, 1, true},  {1280, 720, none, 1, false},
+                                       {1280, 720, msaa, 4, false}, {1280, 720, fxaa, 1, false}};
   bool warmed = false;
   std::vector<std::vector<RenderStats>> all;
   std::string gl;
   for (const Config& c : configs) {
     settings.width = c.width;
     settings.height = c.height;
+    settings.antialiasing = c.antialiasing;
     settings.msaa = c.msaa;
     const FrameSource source(model, recording, settings, "prototype");
     const RenderRequest request{folder, c.video, false};
     if (!warmed) render_run(source, settings, request), warmed = true;
     std::vector<RenderStats> stats;
     for (int r = 0; r < runs; ++r) stats.push_back(render_run(source, settings, request));
-    if (c.width == 1280 && c.msaa == 4 && c.video) std::printf("(%s)\n", stats[0].gl.c_str());
+    if (c.width == 1280 && c.antialiasing == msaa && c.video)
+      std::printf("(%s)\n", stats[0].gl.c_str());
     print_row(c, stats);
     gl = stats[0].gl;
     all.push_back(std::move(stats));

@@ -34,8 +34,8 @@ void to_rgb(const std::uint8_t* rgba, int width, int height, int scale, std::uin
   }
 }
 
-FrameWriter::FrameWriter(int width, int height, int scale, FrameOutputs outputs)
-    : width_(width), height_(height), scale_(scale), out_(std::move(outputs)) {
+FrameWriter::FrameWriter(int width, int height, int scale, bool fxaa, FrameOutputs outputs)
+    : width_(width), height_(height), scale_(scale), fxaa_(fxaa), out_(std::move(outputs)) {
   const std::size_t bytes =
       std::size_t(width) * std::size_t(height) * std::size_t(scale * scale) * 4;
   for (int k = 0; k < 3; ++k) free_.push(std::vector<std::uint8_t>(bytes));
@@ -73,6 +73,7 @@ void FrameWriter::run() {
 void FrameWriter::write(const ReadFrame& frame, std::vector<std::uint8_t>& rgb) {
   Clock::time_point start = Clock::now();
   to_rgb(frame.rgba.data(), width_, height_, scale_, rgb.data());
+  if (fxaa_) fxaa(rgb.data(), width_, height_, fxaa_scratch_);
   if (frame.text.inset) draw_inset_overlay(rgb.data(), width_, height_, *frame.text.inset);
   box_width_ = draw_overlay(rgb.data(), width_, height_, {0, 0, width_, height_}, frame.text.lines,
                             box_width_);
@@ -81,7 +82,9 @@ void FrameWriter::write(const ReadFrame& frame, std::vector<std::uint8_t>& rgb) 
   if (out_.encoder) out_.encoder->write(rgb.data());
   if (out_.frames)
     write_png(*out_.frames / frame_file_name(frame.index), width_, height_, rgb.data());
-  if (out_.side_by_side) out_.side_by_side->put(out_.panel, frame.index, rgb.data());
+  if (out_.side_by_side)
+    out_.side_by_side->put(out_.panel, frame.index, rgb.data(),
+                           out_.encoder ? out_.encoder->yuv() : nullptr);
   output_seconds += seconds_since(start);
 }
 

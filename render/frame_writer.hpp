@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "render/fxaa.hpp"
 #include "render/overlay.hpp"
 #include "render/side_by_side.hpp"
 #include "render/video_encoder.hpp"
@@ -82,8 +83,9 @@ struct FrameOutputs {
 // Joined (after the frames queued so far) when it goes out of scope.
 class FrameWriter {
  public:
-  // Output frames width x height [px], read back at `scale` times that.
-  FrameWriter(int width, int height, int scale, FrameOutputs outputs);
+  // Output frames width x height [px], read back at `scale` times that;
+  // `fxaa`: anti-alias them (fxaa.hpp) before the overlay goes on.
+  FrameWriter(int width, int height, int scale, bool fxaa, FrameOutputs outputs);
   ~FrameWriter() { join(); }
 
   std::vector<std::uint8_t> buffer() { return *free_.pop(); }  // waits for a free one
@@ -102,6 +104,8 @@ class FrameWriter {
   void write(const ReadFrame& frame, std::vector<std::uint8_t>& rgb);
 
   int width_, height_, scale_;
+  bool fxaa_;
+  FxaaScratch fxaa_scratch_;
   FrameOutputs out_;
   int box_width_ = 0;  // the overlay box only grows during a render
   Channel<ReadFrame> queue_;

@@ -18,12 +18,18 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
   g.lit = link_program(shaders::kLitVertex, shaders::kLitFragment);
   g.flat = link_program(shaders::kFlatVertex, shaders::kFlatFragment);
   g.depth = link_program(shaders::kDepthVertex, shaders::kDepthFragment);
-  g.meshes[sphere] = upload(unit_sphere(32, 16));
-  g.meshes[cylinder] = upload(unit_cylinder(32));
-  g.meshes[tube] = upload(unit_cylinder(8));
+  // 24 slices: a sphere or cylinder 60 px across is then within 0.3 px of
+  // round (the inset's magnified, faded forearm shows its facets a little).
+  g.meshes[sphere] = upload(unit_sphere(24, 12));
+  g.meshes[cylinder] = upload(unit_cylinder(24));
+  // Paths and drop lines: a few pixels wide, so 6 sides and no caps (the
+  // next segment covers the joint) are as good as more, at a third of the
+  // triangles of 8 capped sides.
+  g.meshes[tube] = upload(unit_tube(6));
   g.meshes[cone] = upload(unit_cone(32));
   g.meshes[box] = upload(unit_box());
   g.meshes[ring] = upload(unit_torus(48, 8, kRingTube));
+  g.meshes[square] = upload(unit_square());
   make_line_buffer(g);
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
@@ -127,7 +133,14 @@ void draw_grid(GlRenderer::Gl& g, const LineSet& grid, const Eigen::Matrix4f& vi
   glBindBuffer(GL_ARRAY_BUFFER, g.line_vbo);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(lines.size() * sizeof(float)), lines.data(),
                GL_STREAM_DRAW);
+  // Smooth lines (coverage in alpha, blended) when the frame has one sample
+  // per pixel; GL ignores this under multisampling.
+  glEnable(GL_LINE_SMOOTH);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glDrawArrays(GL_LINES, 0, GLsizei(lines.size() / 3));
+  glDisable(GL_BLEND);
+  glDisable(GL_LINE_SMOOTH);
   glBindVertexArray(0);
 }
 
@@ -158,8 +171,10 @@ void draw_inset(GlRenderer::Gl& g, const Inset& inset, const Camera& main, const
   glUniform1f(glGetUniformLocation(g.lit, "fade"), inset.fade);
   glUniform3f(glGetUniformLocation(g.lit, "fade_color"), inset.background.r, inset.background.g,
               inset.background.b);
-  draw_shapes(g, g.instances[arm]);
-  draw_shapes(g, g.instances[ground]);
+  for (const Group group : {arm, ground}) {
+    cull_to_window(g.instances[group], inset.camera, g.culled);
+    draw_shapes(g, g.culled);
+  }
   glUniform1f(glGetUniformLocation(g.lit, "fade"), 0.0f);
   glUniform1i(glGetUniformLocation(g.lit, "unlit"), 1);
   glDisable(GL_DEPTH_TEST);

@@ -24,6 +24,7 @@ struct GlRenderer::Gl {
   GLuint lit = 0, flat = 0, depth = 0;  // programs
   std::array<MeshBuffers, shape_count> meshes;
   Instances instances;
+  ShapeInstances culled;  // a group's instances in the inset's window
   GLuint line_vao = 0, line_vbo = 0;
   GLuint draw_fbo = 0, draw_color = 0, draw_depth = 0;  // multisampled (or the resolve one)
   GLuint resolve_fbo = 0, resolve_color = 0;

@@ -1,6 +1,7 @@
 #include "render/instances.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace elbowsim {
 
@@ -29,10 +30,10 @@ void add_path(ShapeInstances& out, const Polyline& path) {
     add_along(out[tube], p[k - 1], p[k], path.radius, path.color);
 }
 
-// Each piece's segments as flat ribbons (boxes of width 2 radius and depth
-// radius, broad side toward `back`, each a radius longer at both ends so
-// that bends stay closed): drawn flat, a ribbon looks like a tube at a sixth
-// of its triangles.
+// Each piece's segments as flat ribbons (squares stretched to width 2
+// radius, facing `back`, each a radius longer at both ends so that bends
+// stay closed): drawn flat, a ribbon looks like a tube at a small part of
+// its triangles.
 void add_inset_path(ShapeInstances& out, const InsetPath& path, const Eigen::Vector3d& back) {
   const double r = path.radius;
   for (const std::vector<Eigen::Vector3d>& p : path.pieces)
@@ -42,7 +43,7 @@ void add_inset_path(ShapeInstances& out, const InsetPath& path, const Eigen::Vec
       if (d.norm() < 1e-12 || across.norm() < 1e-12) continue;
       Eigen::Matrix3d linear;
       linear << 2 * r * across.normalized(), r * back, d + 2 * r * d.normalized();
-      add_instance(out[box], linear, 0.5 * (p[k - 1] + p[k]), path.color);
+      add_instance(out[square], linear, 0.5 * (p[k - 1] + p[k]), path.color);
     }
 }
 
@@ -78,7 +79,53 @@ void add_ground(const Scene& s, ShapeInstances& out) {
   }
 }
 
+// Each unit shape's bounding sphere (meshes.hpp): centre and radius.
+struct Bound {
+  Eigen::Vector3f centre;
+  float radius;
+};
+
+Bound unit_bound(int shape) {
+  switch (shape) {
+    case cylinder:
+    case tube:
+    case cone:
+      return {{0, 0, 0.5f}, std::sqrt(1.25f)};  // radius 1, z from 0 to 1
+    case box:
+      return {{0, 0, 0}, std::sqrt(0.75f)};  // [-1/2, 1/2]^3
+    case ring:
+      return {{0, 0, 0}, float(1 + kRingTube)};
+    case square:
+      return {{0, 0, 0}, std::sqrt(0.5f)};
+    default:
+      return {{0, 0, 0}, 1.0f};  // the unit sphere
+  }
+}
+
 }  // namespace
+
+void cull_to_window(const ShapeInstances& in, const Camera& camera, ShapeInstances& out) {
+  const Eigen::Vector3d back = (camera.eye - camera.target).normalized();
+  const Eigen::Vector3f right = camera.up.cross(back).normalized().cast<float>();
+  const Eigen::Vector3f up = back.cast<float>().cross(right);
+  const Eigen::Vector3f target = camera.target.cast<float>();
+  const float half_h = float(0.5 * camera.ortho_height), half_w = half_h * float(camera.aspect);
+  for (int s = 0; s < shape_count; ++s) {
+    const std::vector<float>& from = in[std::size_t(s)];
+    std::vector<float>& to = out[std::size_t(s)];
+    to.clear();
+    const Bound b = unit_bound(s);
+    for (std::size_t k = 0; k + kInstanceFloats <= from.size(); k += kInstanceFloats) {
+      const Eigen::Map<const Eigen::Matrix4f> model(from.data() + k);
+      // The bounding sphere's centre from the window's, and its radius.
+      const Eigen::Vector3f d = (model * b.centre.homogeneous()).head<3>() - target;
+      const float r = b.radius * model.topLeftCorner<3, 3>().colwise().norm().maxCoeff();
+      if (std::abs(d.dot(right)) <= half_w + r && std::abs(d.dot(up)) <= half_h + r)
+        to.insert(to.end(), from.begin() + std::ptrdiff_t(k),
+                  from.begin() + std::ptrdiff_t(k + kInstanceFloats));
+    }
+  }
+}
 
 void add_instance(std::vector<float>& out, const Eigen::Matrix3d& linear, const Eigen::Vector3d& t,
                   const Color& color) {

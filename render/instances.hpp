@@ -17,7 +17,7 @@ inline constexpr int kInstanceFloats = 16 + 9 + 4;
 // The ring shape's tube radius over its radius (unit_torus).
 inline constexpr double kRingTube = 0.06;
 
-enum Shape { sphere, cylinder, tube, cone, box, ring, shape_count };
+enum Shape { sphere, cylinder, tube, cone, box, ring, square, shape_count };
 // arm: the robot, its elbows and force arrows (casts shadows); ground: the
 // table and the contact cues; paths: the hand's paths (only receive).
 enum Group { arm, ground, paths, group_count };
@@ -33,6 +33,11 @@ void collect(const Scene& scene, Instances& out);
 // The inset's paths, in drawing order: the desired band, the traced line
 // (each segment a ribbon facing the inset's camera), then the hand.
 std::array<ShapeInstances, 3> inset_instances(const Inset& inset);
+
+// The instances of `in` whose bounding sphere reaches into the window of
+// the orthographic `camera` (ortho_height > 0), into `out` (cleared first):
+// what the inset can show of the scene, so that only that is transformed.
+void cull_to_window(const ShapeInstances& in, const Camera& camera, ShapeInstances& out);
 
 // One instance: model matrix [linear t; 0 1] and normal matrix linear^-T.
 void add_instance(std::vector<float>& out, const Eigen::Matrix3d& linear, const Eigen::Vector3d& t,

@@ -58,6 +58,13 @@ Mesh unit_sphere(int slices, int stacks) {
 }
 
 Mesh unit_cylinder(int slices) {
+  Mesh m = unit_tube(slices);
+  add_disc(m, slices, 1, true);
+  add_disc(m, slices, 0, false);
+  return m;
+}
+
+Mesh unit_tube(int slices) {
   Mesh m;
   for (int j = 0; j <= slices; ++j) {
     const double phi = 2 * std::numbers::pi * j / slices;
@@ -70,8 +77,6 @@ Mesh unit_cylinder(int slices) {
     add_triangle(m, a, b, c);
     add_triangle(m, a, c, d);
   }
-  add_disc(m, slices, 1, true);
-  add_disc(m, slices, 0, false);
   return m;
 }
 
@@ -105,6 +110,23 @@ Mesh unit_box() {
                  0.5 * (f[2] + su * f[5] + sv * f[8]), f[0], f[1], f[2]);
     add_triangle(m, first, first + 1, first + 2);
     add_triangle(m, first, first + 2, first + 3);
+  }
+  return m;
+}
+
+Mesh unit_square() {
+  Mesh m;
+  for (const double side : {1.0, -1.0}) {  // a face toward +y, then one toward -y
+    const std::uint32_t first = std::uint32_t(m.vertices.size() / 6);
+    for (const auto& [x, z] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+      add_vertex(m, 0.5 * x, 0, 0.5 * z, 0, side, 0);
+    if (side > 0) {  // counter-clockwise seen from +y: x to z is clockwise there
+      add_triangle(m, first, first + 2, first + 1);
+      add_triangle(m, first, first + 3, first + 2);
+    } else {
+      add_triangle(m, first, first + 1, first + 2);
+      add_triangle(m, first, first + 2, first + 3);
+    }
   }
   return m;
 }

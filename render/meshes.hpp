@@ -15,8 +15,10 @@ struct Mesh {
 
 Mesh unit_sphere(int slices, int stacks);  // radius 1 about the origin
 Mesh unit_cylinder(int slices);            // radius 1, z from 0 to 1, capped
+Mesh unit_tube(int slices);                // unit_cylinder's side only (open ends)
 Mesh unit_cone(int slices);                // base radius 1 at z = 0, apex at z = 1, capped
 Mesh unit_box();                           // [-1/2, 1/2]^3
+Mesh unit_square();  // [-1/2, 1/2] in x and z at y = 0, both sides (normals +-y)
 // A ring about the z axis: centre line of radius 1 in the x-y plane, tube of
 // radius `minor` (< 1).
 Mesh unit_torus(int slices, int sides, double minor);

@@ -34,6 +34,7 @@ void composite(cairo_surface_t* surface, std::uint8_t* rgb, int width, int heigh
       std::uint8_t* dst =
           rgb + (std::size_t(y0 + y) * std::size_t(width) + std::size_t(x0 + x)) * 3;
       const std::uint32_t p = src[x];
+      if (p == 0) continue;  // transparent (most of the inset's overlay)
       const unsigned keep = 255 - (p >> 24);
       dst[0] = std::uint8_t(((p >> 16) & 255) + (dst[0] * keep + 127) / 255);
       dst[1] = std::uint8_t(((p >> 8) & 255) + (dst[1] * keep + 127) / 255);

@@ -144,7 +144,7 @@ void draw_jobs(const std::vector<Running*>& jobs, SideBySide* side) {
     for (Running* r : jobs) {
       const RenderSettings& s = r->job->settings;
       renderers.push_back(
-          std::make_unique<GlRenderer>(s.width * r->scale, s.height * r->scale, s.msaa));
+          std::make_unique<GlRenderer>(s.width * r->scale, s.height * r->scale, s.samples()));
       r->stats.samples = renderers.back()->samples();
       r->stats.gl = context.description();
       frames = std::max(frames, r->times.size());
@@ -180,10 +180,11 @@ void start(Running& r, const RenderJob& job, SideBySide* side, int panel) {
   r.stats.height = s.height;
   r.stats.fps = s.fps;
   r.scale = s.supersample ? 2 : 1;
+  r.stats.fxaa = s.antialiasing == Antialiasing::fxaa;
   r.times = frame_times(job.source->end_time(), s.fps);
   try {
     r.outputs.emplace(job.request, s.width, s.height, s.fps, r.stats);
-    r.writer = std::make_unique<FrameWriter>(s.width, s.height, r.scale,
+    r.writer = std::make_unique<FrameWriter>(s.width, s.height, r.scale, r.stats.fxaa,
                                              r.outputs->frame_outputs(side, panel));
   } catch (const std::exception& e) {
     r.stats.error = e.what();
@@ -287,7 +288,8 @@ RenderResults render_jobs(const std::vector<RenderJob>& jobs,
     for (int w : widths) side_stats->width += w;
     side_stats->height = first.height;
     side_stats->fps = first.fps;
-    side_stats->samples = first.msaa;
+    side_stats->samples = first.samples();
+    side_stats->fxaa = first.antialiasing == Antialiasing::fxaa;
     try {
       side_outputs.emplace(*side_by_side, side_stats->width, first.height, first.fps, *side_stats);
       const FrameOutputs o = side_outputs->frame_outputs(nullptr, 0);

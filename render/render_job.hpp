@@ -36,6 +36,7 @@ struct RenderStats {
   int frames = 0;             // frames written
   int width = 0, height = 0;  // [px] of the output
   int samples = 1;            // MSAA samples per pixel in use
+  bool fxaa = false;          // frames anti-aliased by FXAA after drawing
   double fps = 0;
   bool video_written = false;   // folder/video.mp4
   bool frames_written = false;  // folder/frames/

@@ -56,18 +56,39 @@ struct InsetSettings {
   double scale_bar = 0;    // [m] length of its scale bar; 0: a 1-2-5 length, at most 0.3 x width
 };
 
+// How frames are anti-aliased: FXAA (one sample per pixel, edges smoothed
+// after drawing, render/fxaa.hpp; grid lines drawn smooth), multisampling
+// (`msaa` samples per pixel, resolved by GL) or not at all.
+enum class Antialiasing { fxaa, msaa, none };
+
+inline const char* to_string(Antialiasing a) {
+  switch (a) {
+    case Antialiasing::fxaa:
+      return "fxaa";
+    case Antialiasing::msaa:
+      return "msaa";
+    case Antialiasing::none:
+      return "none";
+  }
+  return "?";
+}
+
 struct RenderSettings {
   CameraSettings camera;
-  int width = 1280;           // [px] even (H.264 with yuv420p)
-  int height = 720;           // [px] even
-  double fps = 30.0;          // [1/s] frames per second of simulation time
-  int msaa = 4;               // samples per pixel: 1 (off), 2 or 4
-  bool supersample = false;   // render 2w x 2h and average 2x2 blocks (for stills)
+  int width = 1280;   // [px] even (H.264 with yuv420p)
+  int height = 720;   // [px] even
+  double fps = 30.0;  // [1/s] frames per second of simulation time
+  Antialiasing antialiasing = Antialiasing::fxaa;
+  int msaa = 4;              // samples per pixel with antialiasing msaa: 2 or 4
+  bool supersample = false;  // render 2w x 2h and average 2x2 blocks (for stills)
   // [m/N] length of a normal-force arrow per newton (0: no arrows); unset: a
   // 1-2-5 scale at which the largest recorded force fits in the frame.
   std::optional<double> force_scale;
   bool shadows = true;  // shadow mapping from the key light
   InsetSettings inset;
+
+  // Samples per pixel GL draws with.
+  int samples() const { return antialiasing == Antialiasing::msaa ? msaa : 1; }
 };
 
 }  // namespace elbowsim

@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "render/png_writer.hpp"
+#include "render/yuv.hpp"
 
 namespace elbowsim {
 
@@ -20,18 +21,49 @@ SideBySide::SideBySide(std::vector<int> widths, int height, VideoEncoder* encode
     offsets_.push_back(width_);
     width_ += w;
   }
-  rgb_.assign(std::size_t(width_) * std::size_t(height_) * 3, 0);
+  if (frames_dir_) rgb_.assign(std::size_t(width_) * std::size_t(height_) * 3, 0);
+  if (encoder_) {
+    yuv_.assign(yuv420_bytes(width_, height_), 0);
+    panel_yuv_.resize(widths_.size());
+  }
 }
 
-void SideBySide::put(int panel, int index, const std::uint8_t* rgb) {
+namespace {
+
+// Each plane of a panel's YUV 4:2:0 frame (w x h) copied into the composed
+// frame's (total_w x h) at column x0 (even): Y at full size, U and V at half.
+void copy_planes(const std::uint8_t* from, int w, int h, std::uint8_t* to, int total_w, int x0) {
+  const std::uint8_t* src = from;
+  std::uint8_t* dst = to;
+  for (const int k : {1, 2, 2}) {  // Y, U, V: sizes divided by k
+    const std::size_t pw = std::size_t(w / k), tw = std::size_t(total_w / k);
+    for (int y = 0; y < h / k; ++y)
+      std::memcpy(dst + std::size_t(y) * tw + std::size_t(x0 / k), src + std::size_t(y) * pw, pw);
+    src += pw * std::size_t(h / k);
+    dst += tw * std::size_t(h / k);
+  }
+}
+
+}  // namespace
+
+void SideBySide::put(int panel, int index, const std::uint8_t* rgb, const std::uint8_t* yuv) {
+  const std::size_t p = std::size_t(panel);
+  if (encoder_ && !yuv) {  // converted here, before waiting for the lock
+    panel_yuv_[p].resize(yuv420_bytes(widths_[p], height_));
+    rgb_to_yuv420(rgb, widths_[p], height_, panel_yuv_[p].data());
+    yuv = panel_yuv_[p].data();
+  }
   std::unique_lock lock(mutex_);
   next_.wait(lock, [&] { return aborted_ || index_ == index; });
   if (aborted_) return;
-  const std::size_t row = std::size_t(widths_[std::size_t(panel)]) * 3;
-  const std::size_t stride = std::size_t(width_) * 3;
-  const std::size_t offset = std::size_t(offsets_[std::size_t(panel)]) * 3;
-  for (int y = 0; y < height_; ++y)
-    std::memcpy(rgb_.data() + std::size_t(y) * stride + offset, rgb + std::size_t(y) * row, row);
+  if (frames_dir_) {
+    const std::size_t row = std::size_t(widths_[p]) * 3;
+    const std::size_t stride = std::size_t(width_) * 3;
+    const std::size_t offset = std::size_t(offsets_[p]) * 3;
+    for (int y = 0; y < height_; ++y)
+      std::memcpy(rgb_.data() + std::size_t(y) * stride + offset, rgb + std::size_t(y) * row, row);
+  }
+  if (encoder_) copy_planes(yuv, widths_[p], height_, yuv_.data(), width_, offsets_[p]);
   next_index_[std::size_t(panel)] = index + 1;
   if (complete()) write_frame();
 }
@@ -62,7 +94,7 @@ void SideBySide::abort() {
 void SideBySide::write_frame() {
   const auto start = std::chrono::steady_clock::now();
   try {
-    if (encoder_) encoder_->write(rgb_.data());
+    if (encoder_) encoder_->write_yuv(yuv_.data());
     if (frames_dir_)
       write_png(*frames_dir_ / frame_file_name(index_), width_, height_, rgb_.data());
     ++frames_;

@@ -30,6 +30,10 @@ std::string format_fps(double fps) {
 
 // ffmpeg's options in its own order: input (raw YUV on stdin), then output.
 const char* const kPreset = "veryfast";  // x264 speed/size trade-off; crf 20 looks clean
+// Sub-pixel motion refinement 1 instead of veryfast's 2 (superfast's): on
+// the experiment's video 22 % less encoding CPU for 8 % more bytes, PSNR
+// 50.8 instead of 51.3 dB (superfast: 20 % less CPU, 2.3 times the bytes).
+const char* const kX264Params = "subme=1";
 const char* const kCrf = "20";
 const char* const kEncoderThreads = "2";  // see ffmpeg_arguments
 // The colour matrix, primaries, transfer and range the video's header names
@@ -63,8 +67,9 @@ std::vector<std::string> ffmpeg_arguments(const std::filesystem::path& output, i
   args.insert(args.end(), std::begin(kColour), std::end(kColour));
   // x264 picks its thread count from the cores, and its bitstream depends on
   // it: a fixed count keeps the mp4 the same bytes on every machine.
-  for (const char* a : {"-i", "pipe:0", "-an", "-c:v", "libx264", "-preset", kPreset, "-crf", kCrf,
-                        "-threads", kEncoderThreads, "-pix_fmt", "yuv420p"})
+  for (const char* a :
+       {"-i", "pipe:0", "-an", "-c:v", "libx264", "-preset", kPreset, "-x264-params", kX264Params,
+        "-crf", kCrf, "-threads", kEncoderThreads, "-pix_fmt", "yuv420p"})
     args.emplace_back(a);
   args.insert(args.end(), std::begin(kColour), std::end(kColour));
   for (const char* a : {"-movflags", "+faststart", "-f", "mp4"}) args.emplace_back(a);
@@ -77,7 +82,7 @@ std::string frames_to_video_command(const std::filesystem::path& frames,
   std::string colour;
   for (const char* a : kColour) colour += std::string(" ") + a;
   return "ffmpeg -framerate " + format_fps(fps) + " -i '" + (frames / "frame_%05d.png").string() +
-         "' -c:v libx264 -preset " + kPreset + " -crf " + kCrf +
+         "' -c:v libx264 -preset " + kPreset + " -x264-params " + kX264Params + " -crf " + kCrf +
          " -vf scale=out_color_matrix=bt709:out_range=tv -pix_fmt yuv420p" + colour +
          " -movflags +faststart '" + video.string() + "'";
 }
@@ -129,9 +134,13 @@ VideoEncoder::~VideoEncoder() {
 
 void VideoEncoder::write(const std::uint8_t* rgb) {
   rgb_to_yuv420(rgb, width_, height_, yuv_.data());
+  write_yuv(yuv_.data());
+}
+
+void VideoEncoder::write_yuv(const std::uint8_t* yuv) {
   std::size_t done = 0;
   while (done < yuv_.size()) {
-    const ssize_t n = ::write(pipe_, yuv_.data() + done, yuv_.size() - done);
+    const ssize_t n = ::write(pipe_, yuv + done, yuv_.size() - done);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) throw std::runtime_error("ffmpeg stopped reading frames" + log_tail());
     done += std::size_t(n);

@@ -41,6 +41,10 @@ class VideoEncoder {
   // YUV in the calling thread). Throws if ffmpeg has stopped (its last
   // messages in what()).
   void write(const std::uint8_t* rgb);
+  // One frame already in YUV 4:2:0 (yuv420_bytes(width, height) bytes, as rgb_to_yuv420 gives).
+  void write_yuv(const std::uint8_t* yuv);
+  // The last frame write() converted (its planes), for a side-by-side to reuse.
+  const std::uint8_t* yuv() const { return yuv_.data(); }
   // Closes the pipe and waits for ffmpeg; throws with its messages if it failed.
   void finish();
 

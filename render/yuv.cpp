@@ -1,5 +1,7 @@
 #include "render/yuv.hpp"
 
+#include <vector>
+
 namespace elbowsim {
 
 namespace {
@@ -13,8 +15,43 @@ constexpr int kUr = -6596, kUg = -22189, kUb = 28785;  // sum 0 (grey has no col
 constexpr int kVr = 28784, kVg = -26145, kVb = -2639;  // sum 0; 28784 = 65536 * 224 / 255 / 2
 constexpr int kHalf = 1 << 15;
 
-std::uint8_t luma(const std::uint8_t* p) {
-  return std::uint8_t(16 + ((kYr * p[0] + kYg * p[1] + kYb * p[2] + kHalf) >> 16));
+// The loops over every pixel, also compiled for AVX2 where the CPU has it
+// (GCC picks the version at load time; integer arithmetic: the same bytes).
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+#define ELBOWSIM_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define ELBOWSIM_VECTOR_CLONES
+#endif
+
+// One row of RGB triples -> the channels as separate rows (the loops below then vectorise).
+ELBOWSIM_VECTOR_CLONES void split(const std::uint8_t* rgb, std::size_t w, std::int32_t* r,
+                                  std::int32_t* g, std::int32_t* b) {
+  for (std::size_t x = 0; x < w; ++x)
+    r[x] = rgb[3 * x], g[x] = rgb[3 * x + 1], b[x] = rgb[3 * x + 2];
+}
+
+ELBOWSIM_VECTOR_CLONES void luma_row(const std::int32_t* r, const std::int32_t* g,
+                                     const std::int32_t* b, std::size_t w, std::uint8_t* out) {
+  for (std::size_t x = 0; x < w; ++x)
+    out[x] = std::uint8_t(16 + ((kYr * r[x] + kYg * g[x] + kYb * b[x] + kHalf) >> 16));
+}
+
+// The two rows' channels summed (into `top`), for the chroma of 2x2 blocks.
+ELBOWSIM_VECTOR_CLONES void add_rows(std::int32_t* top, const std::int32_t* bottom, std::size_t n) {
+  for (std::size_t x = 0; x < n; ++x) top[x] += bottom[x];
+}
+
+// Chroma of 2x2 blocks from the column sums of two rows: sums of 4 pixels,
+// so the coefficients carry a factor 4 (>> 18, not >> 16).
+ELBOWSIM_VECTOR_CLONES void chroma_row(const std::int32_t* r, const std::int32_t* g,
+                                       const std::int32_t* b, std::size_t half, std::uint8_t* u,
+                                       std::uint8_t* v) {
+  for (std::size_t x = 0; x < half; ++x) {
+    const int sr = r[2 * x] + r[2 * x + 1], sg = g[2 * x] + g[2 * x + 1],
+              sb = b[2 * x] + b[2 * x + 1];
+    u[x] = std::uint8_t(128 + ((kUr * sr + kUg * sg + kUb * sb + (1 << 17)) >> 18));
+    v[x] = std::uint8_t(128 + ((kVr * sr + kVg * sg + kVb * sb + (1 << 17)) >> 18));
+  }
 }
 
 }  // namespace
@@ -24,24 +61,19 @@ void rgb_to_yuv420(const std::uint8_t* rgb, int width, int height, std::uint8_t*
   std::uint8_t* y_plane = yuv;
   std::uint8_t* u_plane = yuv + w * std::size_t(height);
   std::uint8_t* v_plane = u_plane + (w / 2) * std::size_t(height / 2);
+  // Two rows' channels as 32-bit integers, per thread (kept between frames).
+  thread_local std::vector<std::int32_t> channels;
+  channels.resize(6 * w);
+  std::int32_t* c[2][3];
+  for (int k = 0; k < 6; ++k) c[k / 3][k % 3] = channels.data() + std::size_t(k) * w;
   for (int y = 0; y < height; ++y) {
-    const std::uint8_t* p = rgb + std::size_t(y) * row;
-    std::uint8_t* out = y_plane + std::size_t(y) * w;
-    for (std::size_t x = 0; x < w; ++x) out[x] = luma(p + 3 * x);
-  }
-  for (int y = 0; y < height / 2; ++y) {
-    const std::uint8_t* top = rgb + std::size_t(2 * y) * row;
-    const std::uint8_t* bottom = top + row;
-    std::uint8_t* u = u_plane + std::size_t(y) * (w / 2);
-    std::uint8_t* v = v_plane + std::size_t(y) * (w / 2);
-    for (std::size_t x = 0; x < w / 2; ++x) {
-      // Sums of 4 pixels: the coefficients then carry a factor 4 (>> 18, not >> 16).
-      int s[3];
-      for (int c = 0; c < 3; ++c)
-        s[c] = top[6 * x + c] + top[6 * x + 3 + c] + bottom[6 * x + c] + bottom[6 * x + 3 + c];
-      u[x] = std::uint8_t(128 + ((kUr * s[0] + kUg * s[1] + kUb * s[2] + (1 << 17)) >> 18));
-      v[x] = std::uint8_t(128 + ((kVr * s[0] + kVg * s[1] + kVb * s[2] + (1 << 17)) >> 18));
-    }
+    std::int32_t* const* ch = c[y % 2];
+    split(rgb + std::size_t(y) * row, w, ch[0], ch[1], ch[2]);
+    luma_row(ch[0], ch[1], ch[2], w, y_plane + std::size_t(y) * w);
+    if (y % 2 == 0) continue;
+    for (int k = 0; k < 3; ++k) add_rows(c[0][k], c[1][k], w);
+    chroma_row(c[0][0], c[0][1], c[0][2], w / 2, u_plane + std::size_t(y / 2) * (w / 2),
+               v_plane + std::size_t(y / 2) * (w / 2));
   }
 }
 

@@ -123,9 +123,8 @@ TEST_CASE("render scene: the whole desired hand path in grey, only when hand_d_*
   const Playback playback(model, rec);
   const SceneOptions options;
   // Mid-run the scene already holds the whole desired path, not only up to t.
-  const Scene scene =
-      build_scene(model, playback.at(0.3), playback.hand_path(0.3), options,
-                  playback.desired_hand_path());
+  const Scene scene = build_scene(model, playback.at(0.3), playback.hand_path(0.3), options,
+                                  playback.desired_hand_path());
   const Polyline& desired = scene.desired_hand_path;
   REQUIRE(desired.points.size() == 11);
   CHECK(approx(desired.points.front(), Vector3d(0.75, 0, 0), 1e-12));
@@ -243,6 +242,37 @@ TEST_CASE("render meshes: closed, outward-facing (signed volume) unit shapes") {
   CHECK(volume(unit_cylinder(64)) == doctest::Approx(pi).epsilon(0.01));
   CHECK(volume(unit_cone(64)) == doctest::Approx(pi / 3).epsilon(0.01));
   CHECK(volume(unit_torus(96, 32, 0.1)) == doctest::Approx(2 * pi * pi * 0.01).epsilon(0.01));
+  // The open tube (paths): the cylinder's side only, every vertex on the
+  // unit circle at z 0 or 1 with a radial normal; the cylinder adds two caps.
+  const Mesh tube = unit_tube(6);
+  CHECK(tube.indices.size() == 3 * 2 * 6);
+  CHECK(unit_cylinder(6).indices.size() == tube.indices.size() + 3 * 2 * 6);
+  for (std::size_t i = 0; i < tube.vertices.size(); i += 6) {
+    const float* v = &tube.vertices[i];
+    CHECK(std::hypot(v[0], v[1]) == doctest::Approx(1.0));
+    CHECK((v[2] == 0.0f || v[2] == 1.0f));
+    CHECK(v[3] == doctest::Approx(v[0]));
+    CHECK(v[4] == doctest::Approx(v[1]));
+    CHECK(v[5] == 0.0f);
+  }
+  // The square (the inset's ribbons): two faces, each wound counter-clockwise
+  // seen from the side its normal points to, so one is drawn from either side.
+  const Mesh square = unit_square();
+  REQUIRE(square.indices.size() == 3 * 4);
+  int up = 0, down = 0;
+  for (std::size_t k = 0; k < square.indices.size(); k += 3) {
+    auto p = [&](int j) {
+      const float* v = &square.vertices[6 * square.indices[k + std::size_t(j)]];
+      return Vector3d(v[0], v[1], v[2]);
+    };
+    const Vector3d n = (p(1) - p(0)).cross(p(2) - p(0));
+    const float ny = square.vertices[6 * square.indices[k] + 4];
+    CHECK(n.y() * ny > 0);
+    (ny > 0 ? up : down) += 1;
+    for (int j = 0; j < 3; ++j) CHECK(p(j).cwiseAbs().maxCoeff() == doctest::Approx(0.5));
+  }
+  CHECK(up == 2);
+  CHECK(down == 2);
 }
 
 TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
@@ -251,7 +281,8 @@ TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
   CHECK(plain.render.width == 1280);
   CHECK(plain.render.height == 720);
   CHECK(plain.render.fps == 30);
-  CHECK(plain.render.msaa == 4);
+  CHECK(plain.render.antialiasing == Antialiasing::fxaa);
+  CHECK(plain.render.samples() == 1);
   CHECK_FALSE(plain.render.supersample);
   CHECK_FALSE(plain.render.force_scale.has_value());  // automatic
   CHECK(plain.render.shadows);
@@ -280,6 +311,8 @@ TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
   CHECK(s.render.width == 640);
   CHECK(s.render.fps == 25);
   CHECK(s.render.msaa == 2);
+  CHECK(s.render.antialiasing == Antialiasing::msaa);  // msaa alone asks for it
+  CHECK(s.render.samples() == 2);
   CHECK(s.render.supersample);
   CHECK(s.render.force_scale == 0.02);
   CHECK(s.render.camera.follow == CameraFollow::hand);
@@ -291,6 +324,13 @@ TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
   CHECK(s.output.frames);
   CHECK(load_scenario_text(base + "render: {camera: {preset: top}}\n", "x.yaml")
             .render.camera.preset == CameraPreset::top);
+  auto aa = [&](const std::string& keys) {
+    return load_scenario_text(base + "render: {" + keys + "}\n", "x.yaml").render;
+  };
+  CHECK(aa("msaa: 1").antialiasing == Antialiasing::none);
+  CHECK(aa("antialiasing: msaa").samples() == 4);
+  CHECK(aa("antialiasing: fxaa, msaa: 4").samples() == 1);
+  CHECK(aa("antialiasing: none").antialiasing == Antialiasing::none);
   CHECK_FALSE(load_scenario_text(base + "render: {force_scale: auto}\n", "x.yaml")
                   .render.force_scale.has_value());
 
@@ -305,6 +345,10 @@ TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
   };
   const std::string l = "x.yaml:" + std::to_string(line);
   CHECK(error("render: {msaa: 3}\n") == l + ":16: render.msaa: must be 1 (off), 2 or 4 (got 3)");
+  CHECK(error("render: {antialiasing: msaa, msaa: 1}\n") ==
+        l + ":36: render.msaa: must be 2 or 4 with antialiasing msaa (got 1)");
+  CHECK(error("render: {antialiasing: smaa}\n")
+            .find(l + ":24: render.antialiasing: must be one of fxaa, msaa, none") == 0);
   CHECK(error("render: {size: [641, 480]}\n").find(l + ":17: render.size[0]: must be even") == 0);
   CHECK(error("render: {camera: {preset: diagonal}}\n")
             .find("render.camera.preset: must be one of front, side, top, three_quarter") !=

@@ -4,6 +4,7 @@
 // on several threads give the same bytes as runs drawn on one.
 #include <doctest/doctest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -189,6 +190,46 @@ TEST_CASE("run with variants: the frames piped to compare/'s encoder are the var
   CHECK(on != off);
   REQUIRE(both.size() == 2 * on.size());
   CHECK(both == yuv_side_by_side(on, off, 160, 96));
+}
+
+TEST_CASE("render side by side: panels without a video, its piped frames are their YUV") {
+  // The panels write PNG frames only, the side-by-side a video (through an
+  // ffmpeg that keeps its raw YUV input) and PNG frames: it converts the
+  // panels itself, and what it pipes is the YUV of its own PNG frames.
+  const fs::path bin = scratch("render", "keeping_ffmpeg_panels");
+  std::ofstream(bin / "ffmpeg") << "#!/bin/sh\nfor a; do out=$a; done\nexec cat > \"$out\"\n";
+  fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
+  const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+  ::setenv("PATH", (bin.string() + ":" + path).c_str(), 1);
+  const Model model = render_fixture::arm();
+  const Recording recording = render_fixture::recording();
+  RenderSettings settings;
+  settings.width = kWidth;
+  settings.height = kHeight;
+  settings.fps = 5;
+  RenderSettings narrow = settings;
+  narrow.width = 120;
+  const FrameSource left(model, recording, settings, "left");
+  const FrameSource right(model, recording, narrow, "right");
+  const fs::path dir = scratch("render", "side_by_side_own_yuv");
+  for (const char* sub : {"left", "right", "both"}) fs::create_directories(dir / sub);
+  const RenderResults results = render_jobs({{&left, settings, {dir / "left", false, true}},
+                                             {&right, narrow, {dir / "right", false, true}}},
+                                            RenderRequest{dir / "both", true, true}, 2);
+  ::setenv("PATH", path.c_str(), 1);
+  REQUIRE(results.side_by_side);
+  CHECK(results.side_by_side->error == "");
+  int w = 0, h = 0;
+  const auto frames = read_frames(dir / "both" / "frames", w, h);
+  REQUIRE(frames.size() == 6);
+  REQUIRE(w == kWidth + 120);
+  std::string expected;
+  std::vector<std::uint8_t> yuv(yuv420_bytes(w, h));
+  for (const auto& rgb : frames) {
+    rgb_to_yuv420(rgb.data(), w, h, yuv.data());
+    expected.append(yuv.begin(), yuv.end());
+  }
+  CHECK(elbowsim::testing::slurp(dir / "both" / "video.mp4") == expected);
 }
 
 TEST_CASE("render_jobs: runs drawn on 2 threads write the same bytes as on 1, mp4s included") {

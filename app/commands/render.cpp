@@ -20,10 +20,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
+std::string antialiasing(const RenderStats& s) {
+  if (s.samples > 1) return "MSAA " + std::to_string(s.samples) + "x" + (s.fxaa ? " + FXAA" : "");
+  return s.fxaa ? "FXAA" : "no anti-aliasing";
+}
+
 void print_stats(const RenderStats& s, const fs::path& folder) {
   char what[160];
-  std::snprintf(what, sizeof what, "%d frames, %dx%d, %g fps, MSAA %dx, %.1f s", s.frames, s.width,
-                s.height, s.fps, s.samples, s.wall_seconds);
+  std::snprintf(what, sizeof what, "%d frames, %dx%d, %g fps, %s, %.1f s", s.frames, s.width,
+                s.height, s.fps, antialiasing(s).c_str(), s.wall_seconds);
   if (s.video_written)
     std::cout << "video: " << (folder / "video.mp4").string() << " (" << what << ")\n";
   if (s.frames_written && !s.ffmpeg_missing)

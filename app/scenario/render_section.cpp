@@ -104,20 +104,27 @@ std::optional<double> read_force_scale(const Value& v) {
 RenderSettings read_render(const Value& render) {
   RenderSettings out;
   if (!render.present()) return out;
-  render.allow_keys(
-      {"camera", "size", "fps", "msaa", "supersample", "force_scale", "shadows", "inset"});
+  render.allow_keys({"camera", "size", "fps", "antialiasing", "msaa", "supersample", "force_scale",
+                     "shadows", "inset"});
   out.camera = read_camera(render.get("camera"));
   read_size(render.get("size"), out);
   Value fps = render.get("fps");
   out.fps = value_or(fps, out.fps, positive);
   if (out.fps > 240) fps.fail("must be <= 240 (got " + format_number(out.fps) + ")");
-  Value msaa = render.get("msaa");
+  // `msaa` alone (as before there was a choice) asks for multisampling, 1 for none.
+  Value msaa = render.get("msaa"), antialiasing = render.get("antialiasing");
   if (msaa.present()) {
     const long samples = msaa.integer();
     if (samples != 1 && samples != 2 && samples != 4)
       msaa.fail("must be 1 (off), 2 or 4 (got " + std::to_string(samples) + ")");
     out.msaa = int(samples);
+    out.antialiasing = samples > 1 ? Antialiasing::msaa : Antialiasing::none;
   }
+  if (antialiasing.present())
+    out.antialiasing =
+        choose(antialiasing, {Antialiasing::fxaa, Antialiasing::msaa, Antialiasing::none});
+  if (out.antialiasing == Antialiasing::msaa && out.msaa == 1)
+    msaa.fail("must be 2 or 4 with antialiasing msaa (got 1)");
   out.supersample = value_or(render.get("supersample"), out.supersample, boolean);
   out.force_scale = read_force_scale(render.get("force_scale"));
   out.shadows = value_or(render.get("shadows"), out.shadows, boolean);
