@@ -101,6 +101,15 @@ std::string yuv_side_by_side(const std::string& left, const std::string& right, 
   return out;
 }
 
+// A panel of the side-by-side tests: `width` wide, kHeight high, 5 frames per second.
+RenderSettings panel_settings(int width) {
+  RenderSettings settings;
+  settings.width = width;
+  settings.height = kHeight;
+  settings.fps = 5;
+  return settings;
+}
+
 }  // namespace
 
 TEST_CASE("render side by side: its frames are the runs' own frames placed side by side") {
@@ -110,12 +119,7 @@ TEST_CASE("render side by side: its frames are the runs' own frames placed side 
   const Recording full = render_fixture::recording();
   Recording cut = full;
   cut.values.resize(7 * std::size_t(cut.layout.size()));
-  RenderSettings settings;
-  settings.width = kWidth;
-  settings.height = kHeight;
-  settings.fps = 5;
-  RenderSettings narrow = settings;
-  narrow.width = 120;
+  const RenderSettings settings = panel_settings(kWidth), narrow = panel_settings(120);
   const FrameSource left(model, full, settings, "left");
   const FrameSource right(model, cut, narrow, "right");
   for (int threads : {1, 2}) {
@@ -203,12 +207,7 @@ TEST_CASE("render side by side: panels without a video, its piped frames are the
   ::setenv("PATH", (bin.string() + ":" + path).c_str(), 1);
   const Model model = render_fixture::arm();
   const Recording recording = render_fixture::recording();
-  RenderSettings settings;
-  settings.width = kWidth;
-  settings.height = kHeight;
-  settings.fps = 5;
-  RenderSettings narrow = settings;
-  narrow.width = 120;
+  const RenderSettings settings = panel_settings(kWidth), narrow = panel_settings(120);
   const FrameSource left(model, recording, settings, "left");
   const FrameSource right(model, recording, narrow, "right");
   const fs::path dir = scratch("render", "side_by_side_own_yuv");
