@@ -7,22 +7,18 @@
 
 namespace elbowsim {
 
-namespace {
-
-double tan_half(double fov_deg) { return std::tan(0.5 * fov_deg * std::numbers::pi / 180.0); }
-
-// Orthonormal camera basis: right, true up, and back (from target toward eye).
-struct Basis {
-  Eigen::Vector3d right, up, back;
-};
-
-Basis basis(const Eigen::Vector3d& eye, const Eigen::Vector3d& target, const Eigen::Vector3d& up) {
-  Basis b;
+CameraBasis camera_basis(const Eigen::Vector3d& eye, const Eigen::Vector3d& target,
+                         const Eigen::Vector3d& up) {
+  CameraBasis b;
   b.back = (eye - target).normalized();
   b.right = up.cross(b.back).normalized();
   b.up = b.back.cross(b.right);
   return b;
 }
+
+namespace {
+
+double tan_half(double fov_deg) { return std::tan(0.5 * fov_deg * std::numbers::pi / 180.0); }
 
 std::array<Eigen::Vector3d, 8> corners(const Eigen::AlignedBox3d& box) {
   std::array<Eigen::Vector3d, 8> out;
@@ -34,7 +30,7 @@ std::array<Eigen::Vector3d, 8> corners(const Eigen::AlignedBox3d& box) {
 // projects inside the view: for a corner at (x, y, z) in the camera basis
 // relative to the centre, the eye at distance D sees it at depth D - z, so
 // |x| <= (D - z) tan_h and |y| <= (D - z) tan_v.
-double framing_distance(const Basis& b, const Eigen::AlignedBox3d& frame,
+double framing_distance(const CameraBasis& b, const Eigen::AlignedBox3d& frame,
                         const Eigen::Vector3d& centre, double tan_v, double tan_h) {
   double distance = 0;
   for (const Eigen::Vector3d& c : corners(frame)) {
@@ -49,7 +45,7 @@ double framing_distance(const Basis& b, const Eigen::AlignedBox3d& frame,
 // The frame seen along -back, centred in the image: perspective makes its
 // near side look bigger, so the target moves sideways until the projected
 // extents are symmetric (a few fixed-point steps), then the distance is refit.
-void frame_view(Camera& camera, const Basis& b, const Eigen::AlignedBox3d& frame, double tan_v,
+void frame_view(Camera& camera, const CameraBasis& b, const Eigen::AlignedBox3d& frame, double tan_v,
                 double tan_h) {
   Eigen::Vector3d centre = frame.center();
   double distance = 0;
@@ -72,7 +68,7 @@ void frame_view(Camera& camera, const Basis& b, const Eigen::AlignedBox3d& frame
 }  // namespace
 
 Eigen::Matrix4d Camera::view() const {
-  const Basis b = basis(eye, target, up);
+  const CameraBasis b = camera_basis(eye, target, up);
   Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
   m.block<1, 3>(0, 0) = b.right.transpose();
   m.block<1, 3>(1, 0) = b.up.transpose();
@@ -170,7 +166,7 @@ Camera make_camera(const CameraSettings& settings, const Eigen::AlignedBox3d& fr
     const double tan_h = tan_v * aspect;
     const Eigen::Vector3d back = preset_direction(settings.preset);
     camera.up = preset_up(settings.preset);
-    frame_view(camera, basis(back, Eigen::Vector3d::Zero(), camera.up), frame, tan_v, tan_h);
+    frame_view(camera, camera_basis(back, Eigen::Vector3d::Zero(), camera.up), frame, tan_v, tan_h);
   }
   Eigen::AlignedBox3d everything = depth;
   everything.extend(frame);

@@ -11,6 +11,14 @@
 
 namespace elbowsim {
 
+// Orthonormal camera basis: right, true up, and back (from target toward eye).
+struct CameraBasis {
+  Eigen::Vector3d right, up, back;
+};
+
+CameraBasis camera_basis(const Eigen::Vector3d& eye, const Eigen::Vector3d& target,
+                         const Eigen::Vector3d& up);
+
 struct Camera {
   Eigen::Vector3d eye = Eigen::Vector3d(0, -2, 0);   // [m] world
   Eigen::Vector3d target = Eigen::Vector3d::Zero();  // [m] world, centre of the view
@@ -22,6 +30,7 @@ struct Camera {
   // (fov_deg unused); 0: perspective.
   double ortho_height = 0;
 
+  CameraBasis basis() const { return camera_basis(eye, target, up); }
   // World -> camera (right-handed, looking down -z): the usual lookAt.
   Eigen::Matrix4d view() const;
   // Camera -> clip space (OpenGL: depth -1 at near, +1 at far).

@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "render/vector_clones.hpp"
+
 namespace elbowsim {
 
 namespace {
@@ -23,14 +25,7 @@ constexpr float kSubpix = 0.75f;
 constexpr int kSteps[] = {1, 1, 1, 1, 1, 2, 2, 2, 2, 4, 8};
 constexpr int kPad = 27;
 
-// The two loops over every pixel, also compiled for AVX2 where the CPU has
-// it (GCC picks the version at load time; both give the same bytes):
-// SSE2 alone has no byte shuffle for the RGB triples.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-#define ELBOWSIM_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define ELBOWSIM_VECTOR_CLONES
-#endif
+// The two loops over every pixel are vector clones (vector_clones.hpp).
 
 // Luma with Rec. 601 weights in 1/256 (FXAA needs an ordering of
 // brightness, not a standard), in 16-bit arithmetic so that it vectorises.

@@ -66,8 +66,8 @@ Eigen::Vector3d view_up(const Eigen::Vector3d& back) {
 // (so that its segments reach the edge).
 std::vector<std::vector<Eigen::Vector3d>> in_window(const std::vector<Eigen::Vector3d>& path,
                                                     const Camera& c) {
-  const Eigen::Vector3d back = (c.eye - c.target).normalized();
-  const Eigen::Vector3d right = c.up.cross(back).normalized(), up = back.cross(right);
+  const CameraBasis basis = c.basis();
+  const Eigen::Vector3d &right = basis.right, &up = basis.up;
   const double half_h = 0.7 * c.ortho_height, half_w = half_h * c.aspect;
   auto inside = [&](std::size_t k) {
     const Eigen::Vector3d d = path[k] - c.target;

@@ -105,9 +105,8 @@ Bound unit_bound(int shape) {
 }  // namespace
 
 void cull_to_window(const ShapeInstances& in, const Camera& camera, ShapeInstances& out) {
-  const Eigen::Vector3d back = (camera.eye - camera.target).normalized();
-  const Eigen::Vector3f right = camera.up.cross(back).normalized().cast<float>();
-  const Eigen::Vector3f up = back.cast<float>().cross(right);
+  const CameraBasis basis = camera.basis();
+  const Eigen::Vector3f right = basis.right.cast<float>(), up = basis.up.cast<float>();
   const Eigen::Vector3f target = camera.target.cast<float>();
   const float half_h = float(0.5 * camera.ortho_height), half_w = half_h * float(camera.aspect);
   for (int s = 0; s < shape_count; ++s) {

@@ -7,8 +7,8 @@
 namespace elbowsim {
 
 Lighting view_lighting(const Camera& camera) {
-  const Eigen::Vector3d back = (camera.eye - camera.target).normalized();
-  const Eigen::Vector3d right = camera.up.cross(back).normalized();
+  const CameraBasis basis = camera.basis();
+  const Eigen::Vector3d &back = basis.back, &right = basis.right;
   Lighting out;
   out.key = (0.7 * Eigen::Vector3d::UnitZ() + 0.35 * back - 0.4 * right).normalized();
   out.fill = (0.8 * right + 0.2 * back).normalized();

@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "render/vector_clones.hpp"
+
 namespace elbowsim {
 
 namespace {
@@ -15,13 +17,7 @@ constexpr int kUr = -6596, kUg = -22189, kUb = 28785;  // sum 0 (grey has no col
 constexpr int kVr = 28784, kVg = -26145, kVb = -2639;  // sum 0; 28784 = 65536 * 224 / 255 / 2
 constexpr int kHalf = 1 << 15;
 
-// The loops over every pixel, also compiled for AVX2 where the CPU has it
-// (GCC picks the version at load time; integer arithmetic: the same bytes).
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-#define ELBOWSIM_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define ELBOWSIM_VECTOR_CLONES
-#endif
+// The loops over every pixel are vector clones (vector_clones.hpp).
 
 // One row of RGB triples -> the channels as separate rows (the loops below then vectorise).
 ELBOWSIM_VECTOR_CLONES void split(const std::uint8_t* rgb, std::size_t w, std::int32_t* r,
