@@ -1,7 +1,6 @@
 #include "render/gl_renderer.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <stdexcept>
 #include <vector>
 
@@ -204,10 +203,8 @@ void GlRenderer::draw(const Scene& scene, const Camera& camera, const Viewport& 
   draw_grid(g, scene.grid, (camera.projection() * camera.view()).cast<float>());
 }
 
-void GlRenderer::end_frame() {
+void GlRenderer::end_frame(std::uint8_t* rgba) {
   Gl& g = *gl_;
-  if (pending_.size() >= g.pbo.size())
-    throw std::logic_error("GlRenderer: fetch() a frame before ending another");
   if (g.draw_fbo != g.resolve_fbo) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, g.draw_fbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, g.resolve_fbo);
@@ -215,25 +212,8 @@ void GlRenderer::end_frame() {
                       GL_NEAREST);
   }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, g.resolve_fbo);
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, g.pbo[std::size_t(next_pbo_)]);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-  pending_.push_back(next_pbo_);
-  next_pbo_ = (next_pbo_ + 1) % int(g.pbo.size());
-}
-
-bool GlRenderer::fetch(std::uint8_t* rgba) {
-  if (pending_.empty()) return false;
-  const GLuint pbo = gl_->pbo[std::size_t(pending_.front())];
-  pending_.pop_front();
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, pbo);
-  const std::size_t bytes = std::size_t(width_) * std::size_t(height_) * 4;
-  const void* data = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0, GLsizeiptr(bytes), GL_MAP_READ_BIT);
-  if (!data) throw std::runtime_error("GL could not map the read-back buffer");
-  std::memcpy(rgba, data, bytes);
-  glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-  return true;
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  if (glGetError() != GL_NO_ERROR) throw std::runtime_error("GL could not read the frame back");
 }
 
 }  // namespace elbowsim

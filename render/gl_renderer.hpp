@@ -4,14 +4,13 @@
 // Each frame: begin_frame clears; draw() renders one scene into a viewport
 // (several viewports make side-by-side panels), first its shadow map when the
 // scene asks for shadows and its inset; end_frame resolves the
-// multisampled buffer into a single-sample one (glBlitFramebuffer) and starts
-// reading it into a pixel-buffer object; fetch() copies a read frame out.
-// Up to two frames may be pending, so frame k can be fetched while frame k+1
-// is drawn.
+// multisampled buffer into a single-sample one (glBlitFramebuffer) and reads
+// it into memory. Straight into memory, not through pixel-buffer objects:
+// llvmpipe fills those with a shader pass over every pixel, which cost 9 %
+// of a video's CPU and more wall time than the overlap it bought.
 #pragma once
 
 #include <cstdint>
-#include <deque>
 #include <memory>
 
 #include "render/camera.hpp"
@@ -50,20 +49,15 @@ class GlRenderer {
   };
   void draw(const Scene& scene, const Camera& camera, const Viewport& viewport,
             const InsetView* inset = nullptr);
-  // Resolves and starts the read-back; at most two frames may be pending.
-  void end_frame();
-  // Copies the oldest pending frame into rgba (width * height * 4 bytes, RGBA,
-  // rows bottom-up as GL stores them). Returns false if none is pending.
-  bool fetch(std::uint8_t* rgba);
-  int pending() const { return int(pending_.size()); }
+  // Resolves the frame and reads it into rgba (width * height * 4 bytes,
+  // RGBA, rows bottom-up as GL stores them), once drawn.
+  void end_frame(std::uint8_t* rgba);
 
   struct Gl;  // GL object names and per-shape instance lists (opaque: gl_renderer.cpp)
 
  private:
   std::unique_ptr<Gl> gl_;
   int width_, height_, samples_ = 1;
-  std::deque<int> pending_;  // pixel-buffer objects holding frames not yet fetched
-  int next_pbo_ = 0;
 };
 
 }  // namespace elbowsim

@@ -121,12 +121,6 @@ void make_framebuffers(GlRenderer::Gl& g, int width, int height, int samples) {
   g.draw_depth = renderbuffer(samples, GL_DEPTH_COMPONENT24, width, height);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, g.draw_depth);
   check_framebuffer("draw");
-  glGenBuffers(2, g.pbo.data());
-  for (GLuint pbo : g.pbo) {
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, pbo);
-    glBufferData(GL_PIXEL_PACK_BUFFER, GLsizeiptr(width) * height * 4, nullptr, GL_STREAM_READ);
-  }
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
 }
 
 void make_shadow_map(GlRenderer::Gl& g) {
@@ -158,7 +152,6 @@ void delete_all(GlRenderer::Gl& g) {
   }
   glDeleteBuffers(1, &g.line_vbo);
   glDeleteVertexArrays(1, &g.line_vao);
-  glDeleteBuffers(2, g.pbo.data());
   const GLuint rbs[3] = {g.draw_color, g.draw_depth, g.resolve_color};
   glDeleteRenderbuffers(3, rbs);
   if (g.draw_fbo != g.resolve_fbo) glDeleteFramebuffers(1, &g.draw_fbo);

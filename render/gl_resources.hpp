@@ -28,7 +28,6 @@ struct GlRenderer::Gl {
   GLuint line_vao = 0, line_vbo = 0;
   GLuint draw_fbo = 0, draw_color = 0, draw_depth = 0;  // multisampled (or the resolve one)
   GLuint resolve_fbo = 0, resolve_color = 0;
-  std::array<GLuint, 2> pbo{};
   GLuint shadow_fbo = 0, shadow_map = 0;  // made on first use
   Eigen::Matrix4f light_view_projection = Eigen::Matrix4f::Identity();
   float shadow_texel = 0;  // [m] world size of one texel

@@ -69,6 +69,21 @@ float key_visibility(vec3 n) {
   return mix(shadow_keep, 1.0, lit);
 }
 
+// The light i's diffuse and specular terms; zero where the light is behind
+// the face (so the key's visibility need not be looked up there).
+vec3 light_term(int i, vec3 n, vec3 v) {
+  vec3 l = light_direction[i];
+  float diffuse = max(dot(n, l), 0.0);
+  // (n.h)^48 by squaring: cheaper than pow() on llvmpipe.
+  float s1 = max(dot(n, normalize(l + v)), 0.0);
+  float s2 = s1 * s1, s4 = s2 * s2, s8 = s4 * s4, s16 = s8 * s8;
+  float shine = diffuse > 0.0 ? s16 * s16 * s16 : 0.0;
+  return light_color[i] * (diffuse * base_color + specular * shine);
+}
+
+// No loop and no branch around the shadow lookup: llvmpipe runs every branch
+// of a group of fragments under a mask, so a lookup inside a loop over the
+// lights would be paid once per light.
 void main() {
   if (unlit == 1) {
     frag_color = vec4(base_color, 1.0);
@@ -77,16 +92,8 @@ void main() {
   vec3 n = normalize(world_normal);
   vec3 v = normalize(eye - world_position);
   vec3 c = ambient * base_color;
-  for (int i = 0; i < 2; ++i) {
-    vec3 l = light_direction[i];
-    float diffuse = max(dot(n, l), 0.0);
-    // (n.h)^48 by squaring: cheaper than pow() on llvmpipe.
-    float s1 = max(dot(n, normalize(l + v)), 0.0);
-    float s2 = s1 * s1, s4 = s2 * s2, s8 = s4 * s4, s16 = s8 * s8;
-    float shine = diffuse > 0.0 ? s16 * s16 * s16 : 0.0;
-    float seen = (i == 0 && diffuse > 0.0) ? key_visibility(n) : 1.0;
-    c += seen * light_color[i] * (diffuse * base_color + specular * shine);
-  }
+  c += key_visibility(n) * light_term(0, n, v);
+  c += light_term(1, n, v);
   frag_color = vec4(mix(min(c, vec3(1.0)), fade_color, fade), 1.0);
 }
 )";

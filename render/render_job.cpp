@@ -6,7 +6,6 @@
 #include <chrono>
 #include <exception>
 #include <memory>
-#include <queue>
 #include <stdexcept>
 #include <thread>
 
@@ -91,7 +90,6 @@ struct Running {
   int scale = 1;
   std::optional<OpenOutputs> outputs;
   std::unique_ptr<FrameWriter> writer;
-  std::queue<ReadFrame> in_flight;  // drawn, read-back started, not yet fetched
 
   bool drawing() const { return writer && !writer->failed() && stats.error.empty(); }
 };
@@ -99,7 +97,7 @@ struct Running {
 // Panel i of n across the frame, in pixels: one panel, the whole frame.
 PixelRect whole(const RenderSettings& s) { return {0, 0, s.width, s.height}; }
 
-// Frame k of `r` drawn and its read-back started.
+// Frame k of `r` drawn, read into one of its writer's buffers and handed over.
 void draw_frame(Running& r, GlRenderer& renderer, int k) {
   Clock::time_point t0 = Clock::now();
   ReadFrame frame{k, {}, {}};
@@ -111,31 +109,16 @@ void draw_frame(Running& r, GlRenderer& renderer, int k) {
   frame.text = std::move(f.text);
   r.stats.draw_seconds += seconds_since(t0);
   t0 = Clock::now();
-  renderer.end_frame();
-  r.stats.finish_seconds += seconds_since(t0);
-  r.in_flight.push(std::move(frame));
-}
-
-// The oldest frame in flight copied out and handed to the writer.
-void fetch_one(Running& r, GlRenderer& renderer) {
-  const Clock::time_point t0 = Clock::now();
-  ReadFrame frame = std::move(r.in_flight.front());
-  r.in_flight.pop();
   frame.rgba = r.writer->buffer();
-  renderer.fetch(frame.rgba.data());
   r.stats.readback_seconds += seconds_since(t0);
+  t0 = Clock::now();
+  renderer.end_frame(frame.rgba.data());
+  r.stats.finish_seconds += seconds_since(t0);
   r.writer->push(std::move(frame));
 }
 
-// The job's last frames fetched and its writer told there are no more.
-void end_job(Running& r, GlRenderer& renderer) {
-  while (!r.in_flight.empty() && r.drawing()) fetch_one(r, renderer);
-  r.writer->close();
-}
-
-// Draws `jobs` in turns, frame by frame, in a context of this thread: frame
-// k of a job is drawn and its read-back started before its frame k-1 is
-// fetched. A GL failure stops them all (they share the context).
+// Draws `jobs` in turns, frame by frame, in a context of this thread. A GL
+// failure stops them all (they share the context).
 void draw_jobs(const std::vector<Running*>& jobs, SideBySide* side) {
   try {
     OsmesaContext context;
@@ -154,10 +137,9 @@ void draw_jobs(const std::vector<Running*>& jobs, SideBySide* side) {
         Running& r = *jobs[j];
         if (k >= r.times.size() || !r.drawing()) continue;
         draw_frame(r, *renderers[j], int(k));
-        if (r.in_flight.size() > 1) fetch_one(r, *renderers[j]);
         // A job that has ended is closed at once: a side-by-side's longer
         // panels wait for its frames until it is.
-        if (k + 1 == r.times.size()) end_job(r, *renderers[j]);
+        if (k + 1 == r.times.size()) r.writer->close();
       }
   } catch (const std::exception& e) {
     for (Running* r : jobs) r->stats.error = e.what();

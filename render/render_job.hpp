@@ -47,10 +47,10 @@ struct RenderStats {
   std::string gl;     // GL renderer and version used
   std::string error;  // why this render failed ("" if it did not): nothing of it was kept
   // Where the time went [s]. Drawing thread: building scenes, issuing the
-  // draws (llvmpipe transforms and bins the triangles), end of frame (llvmpipe
-  // rasterizes and shades there, then the MSAA resolve blit and glReadPixels
-  // into a pixel-buffer object), fetch (mapping it, copying the pixels out,
-  // waiting for a free buffer when the writer is behind). Writer thread:
+  // draws (llvmpipe transforms and bins the triangles), waiting for a free
+  // buffer when the writer is behind ("readback"), end of frame (llvmpipe
+  // rasterizes and shades there, then the MSAA resolve blit and
+  // glReadPixels into the buffer). Writer thread:
   // RGBA -> RGB (and 2x2 averaging) plus overlay, then output (YUV
   // conversion and pipe writes, which wait for ffmpeg's encoder; PNG
   // encoding; handing the frame to a side-by-side composition). A

@@ -64,9 +64,8 @@ Image still(const FrameSource& source, double t, PanelFrame& panel) {
   GlRenderer renderer(kWidth, kHeight, 4);
   renderer.begin_frame(panel.scene.background);
   draw_panel(renderer, panel, 1);
-  renderer.end_frame();
   Image image{kWidth, kHeight, std::vector<std::uint8_t>(kWidth * kHeight * 4)};
-  REQUIRE(renderer.fetch(image.rgba.data()));
+  renderer.end_frame(image.rgba.data());
   return image;
 }
 
