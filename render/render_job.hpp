@@ -5,13 +5,13 @@
 // creates GL contexts, so a run that does not ask for frames never pays for one.
 //
 // Pipeline of one render: a drawing thread builds scenes, draws and reads
-// frame k back (pixel-buffer objects, one frame in flight) while the
-// render's writer thread (frame_writer.hpp) finishes frame k-1 and pipes it
-// to ffmpeg (another process, which encodes in parallel) or writes it as
-// PNG. Several renders are drawn by up to `threads` drawing threads, each
-// with its own OSMesa context (llvmpipe then rasterises each context's
-// frames with its own threads); a thread with several renders draws them
-// in turns, frame by frame.
+// frame k back into one of the writer's buffers while the render's writer
+// thread (frame_writer.hpp) finishes frame k-1 and pipes it to ffmpeg
+// (another process, which encodes in parallel) or writes it as PNG. Several
+// renders are drawn by up to `threads` drawing threads, each with its own
+// OSMesa context; a thread with several renders draws them in turns, frame
+// by frame. llvmpipe rasterises with threads of its own while there are
+// fewer drawing threads than cores, else in the drawing threads.
 #pragma once
 
 #include <filesystem>

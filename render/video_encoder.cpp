@@ -35,7 +35,7 @@ const char* const kPreset = "veryfast";  // x264 speed/size trade-off; crf 20 lo
 // 50.8 instead of 51.3 dB (superfast: 20 % less CPU, 2.3 times the bytes).
 const char* const kX264Params = "subme=1";
 const char* const kCrf = "20";
-const char* const kEncoderThreads = "2";  // see ffmpeg_arguments
+const char* const kEncoderThreads = "1";  // see ffmpeg_arguments
 // The colour matrix, primaries, transfer and range the video's header names
 // (those rgb_to_yuv420 converts with; sRGB shares BT.709's primaries).
 const char* const kColour[] = {"-colorspace", "bt709", "-color_primaries", "bt709",
@@ -66,7 +66,10 @@ std::vector<std::string> ffmpeg_arguments(const std::filesystem::path& output, i
                                    "-framerate", format_fps(fps)};
   args.insert(args.end(), std::begin(kColour), std::end(kColour));
   // x264 picks its thread count from the cores, and its bitstream depends on
-  // it: a fixed count keeps the mp4 the same bytes on every machine.
+  // it: a fixed count keeps the mp4 the same bytes on every machine. One:
+  // the encoder keeps up with drawing (over 200 frames/s at 1280 x 720),
+  // a render's encoders and drawing threads already share the cores, and a
+  // second thread costs 5-10 % more CPU in hand-offs and frames in flight.
   for (const char* a :
        {"-i", "pipe:0", "-an", "-c:v", "libx264", "-preset", kPreset, "-x264-params", kX264Params,
         "-crf", kCrf, "-threads", kEncoderThreads, "-pix_fmt", "yuv420p"})
