@@ -21,6 +21,8 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
   // round (the inset's magnified, faded forearm shows its facets a little).
   g.meshes[sphere] = upload(unit_sphere(24, 12));
   g.meshes[cylinder] = upload(unit_cylinder(24));
+  g.meshes[dome] = upload(unit_dome(24, 6));
+  g.meshes[shaft] = upload(unit_tube(24));
   // Paths and drop lines: a few pixels wide, so 6 sides and no caps (the
   // next segment covers the joint) are as good as more, at a third of the
   // triangles of 8 capped sides.

@@ -24,6 +24,13 @@ void add_sphere(std::vector<float>& out, const Eigen::Vector3d& c, double r, con
   if (r > 0) add_instance(out, r * Eigen::Matrix3d::Identity(), c, color);
 }
 
+// Half a sphere of radius r about c, bulging toward `outward`.
+void add_dome(ShapeInstances& out, const Eigen::Vector3d& c, const Eigen::Vector3d& outward,
+              double r, const Color& color) {
+  if (outward.norm() < 1e-9) return add_sphere(out[sphere], c, r, color);
+  if (r > 0) add_instance(out[dome], r * frame_with_z(outward.normalized()), c, color);
+}
+
 void add_path(ShapeInstances& out, const Polyline& path) {
   const auto& p = path.points;
   for (std::size_t k = 1; k < p.size(); ++k)
@@ -49,10 +56,12 @@ void add_inset_path(ShapeInstances& out, const InsetPath& path, const Eigen::Vec
 
 void add_arm(const Scene& s, ShapeInstances& out) {
   add_instance(out[box], s.base.rotation * s.base.size.asDiagonal(), s.base.center, s.base.color);
+  // A capsule as an open shaft and a dome at each end: a capped cylinder and
+  // two whole spheres drew twice the triangles, half of them hidden inside.
   for (const Capsule& c : s.links) {
-    add_along(out[cylinder], c.a, c.b, c.radius, c.color);
-    add_sphere(out[sphere], c.a, c.radius, c.color);
-    add_sphere(out[sphere], c.b, c.radius, c.color);
+    add_along(out[shaft], c.a, c.b, c.radius, c.color);
+    add_dome(out, c.a, c.a - c.b, c.radius, c.color);
+    add_dome(out, c.b, c.b - c.a, c.radius, c.color);
   }
   for (const Cylinder& c : s.joints) add_along(out[cylinder], c.a, c.b, c.radius, c.color);
   for (const ElbowMarker& e : s.elbows)
@@ -90,6 +99,7 @@ Bound unit_bound(int shape) {
     case cylinder:
     case tube:
     case cone:
+    case shaft:
       return {{0, 0, 0.5f}, std::sqrt(1.25f)};  // radius 1, z from 0 to 1
     case box:
       return {{0, 0, 0}, std::sqrt(0.75f)};  // [-1/2, 1/2]^3

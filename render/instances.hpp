@@ -17,7 +17,9 @@ inline constexpr int kInstanceFloats = 16 + 9 + 4;
 // The ring shape's tube radius over its radius (unit_torus).
 inline constexpr double kRingTube = 0.06;
 
-enum Shape { sphere, cylinder, tube, cone, box, ring, square, shape_count };
+// dome: half a sphere; shaft: a cylinder's side, as round as `cylinder`
+// (tube: 6 sides, for thin paths).
+enum Shape { sphere, cylinder, tube, cone, box, ring, square, dome, shaft, shape_count };
 // arm: the robot, its elbows and force arrows (casts shadows); ground: the
 // table and the contact cues; paths: the hand's paths (only receive).
 enum Group { arm, ground, paths, group_count };

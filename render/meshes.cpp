@@ -36,9 +36,13 @@ void add_disc(Mesh& m, int slices, double z, bool up) {
 
 }  // namespace
 
-Mesh unit_sphere(int slices, int stacks) {
+namespace {
+
+// The first `drawn` stacks (from +z down) of a unit sphere cut into
+// `slices` x `stacks`: all of them for a sphere, half for a dome.
+Mesh sphere_stacks(int slices, int stacks, int drawn) {
   Mesh m;
-  for (int i = 0; i <= stacks; ++i) {
+  for (int i = 0; i <= drawn; ++i) {
     const double theta = std::numbers::pi * i / stacks;  // from +z down
     for (int j = 0; j <= slices; ++j) {
       const double phi = 2 * std::numbers::pi * j / slices;
@@ -48,14 +52,22 @@ Mesh unit_sphere(int slices, int stacks) {
     }
   }
   const int row = slices + 1;
-  for (int i = 0; i < stacks; ++i)
+  for (int i = 0; i < drawn; ++i)
     for (int j = 0; j < slices; ++j) {
+      // Quad a b c d; at a pole two of its corners are the pole, and only
+      // the triangle without both is kept (keeping the other left a hole).
       const std::uint32_t a = i * row + j, b = (i + 1) * row + j, c = b + 1, d = a + 1;
-      if (i != 0) add_triangle(m, a, b, c);
-      if (i != stacks - 1) add_triangle(m, a, c, d);
+      if (i != stacks - 1) add_triangle(m, a, b, c);
+      if (i != 0) add_triangle(m, a, c, d);
     }
   return m;
 }
+
+}  // namespace
+
+Mesh unit_sphere(int slices, int stacks) { return sphere_stacks(slices, stacks, stacks); }
+
+Mesh unit_dome(int slices, int stacks) { return sphere_stacks(slices, 2 * stacks, stacks); }
 
 Mesh unit_cylinder(int slices) {
   Mesh m = unit_tube(slices);

@@ -14,6 +14,8 @@ struct Mesh {
 };
 
 Mesh unit_sphere(int slices, int stacks);  // radius 1 about the origin
+// unit_sphere(slices, 2 stacks)'s half with z >= 0, open at z = 0.
+Mesh unit_dome(int slices, int stacks);
 Mesh unit_cylinder(int slices);            // radius 1, z from 0 to 1, capped
 Mesh unit_tube(int slices);                // unit_cylinder's side only (open ends)
 Mesh unit_cone(int slices);                // base radius 1 at z = 0, apex at z = 1, capped

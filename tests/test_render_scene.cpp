@@ -2,8 +2,11 @@
 // the camera maths, the overlay text, the unit meshes and the render: keys.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <utility>
 
 #include "app/scenario/scenario.hpp"
 #include "render/camera.hpp"
@@ -236,6 +239,40 @@ TEST_CASE("render meshes: closed, outward-facing (signed volume) unit shapes") {
       v += p(m.indices[k]).dot(p(m.indices[k + 1]).cross(p(m.indices[k + 2]))) / 6;
     return v;
   };
+  // Edges by their ends' positions: in a closed mesh each is used once in
+  // each direction; `open` counts those used once (a boundary), `bad` the
+  // rest (a hole at a sphere's poles showed here, not in the volume).
+  auto edges = [](const Mesh& m, int& open, int& bad) {
+    std::map<std::pair<std::array<long, 3>, std::array<long, 3>>, int> uses;
+    auto key = [&](std::uint32_t i) {
+      std::array<long, 3> k;
+      for (int c = 0; c < 3; ++c) k[std::size_t(c)] = std::lround(1e6 * m.vertices[6 * i + c]);
+      return k;
+    };
+    for (std::size_t t = 0; t < m.indices.size(); t += 3)
+      for (int e = 0; e < 3; ++e) {
+        const auto a = key(m.indices[t + std::size_t(e)]);
+        const auto b = key(m.indices[t + std::size_t((e + 1) % 3)]);
+        if (a != b) ++uses[{a, b}];
+      }
+    open = bad = 0;
+    for (const auto& [edge, n] : uses) {
+      const auto back = uses.find({edge.second, edge.first});
+      const int m_back = back == uses.end() ? 0 : back->second;
+      if (n == 1 && m_back == 0) ++open;
+      else if (n != 1 || m_back != 1) ++bad;
+    }
+  };
+  int open = 0, bad = 0;
+  edges(unit_sphere(24, 12), open, bad);
+  CHECK(open == 0);
+  CHECK(bad == 0);
+  // The dome (a capsule's end): open along its rim only, the 24 edges at z = 0.
+  const Mesh dome = unit_dome(24, 6);
+  edges(dome, open, bad);
+  CHECK(open == 24);
+  CHECK(bad == 0);
+  for (std::size_t i = 0; i < dome.vertices.size(); i += 6) CHECK(dome.vertices[i + 2] >= -1e-6f);
   const double pi = std::numbers::pi;
   CHECK(volume(unit_box()) == doctest::Approx(1.0));
   CHECK(volume(unit_sphere(64, 32)) == doctest::Approx(4 * pi / 3).epsilon(0.01));
