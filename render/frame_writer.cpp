@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "render/png_writer.hpp"
+#include "render/vector_clones.hpp"
 
 namespace elbowsim {
 
@@ -15,14 +16,32 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// One row of RGBA pixels -> RGB. Each pixel is copied as 4 bytes and the
-// next overwrites the alpha (a byte loop cost 1 ns per pixel, 5 % of a
-// render); the last pixel is copied as 3.
-void drop_alpha(const std::uint8_t* rgba, int width, std::uint8_t* rgb) {
-  if (width <= 0) return;
-  for (int x = 0; x + 1 < width; ++x, rgba += 4, rgb += 3) std::memcpy(rgb, rgba, 4);
-  std::memcpy(rgb, rgba, 3);
+// One row of RGBA pixels -> RGB (a byte loop cost 1 ns per pixel, 5 % of a
+// render). Four pixels at a time by a byte shuffle where the compiler has
+// one (GCC's vector extension: a vector clone, vector_clones.hpp), each
+// 16-byte store's last 4 bytes overwritten by the next; then a pixel at a
+// time as 4 bytes, the next overwriting the alpha; the last as 3.
+#if defined(__GNUC__) && !defined(__clang__)
+using Bytes16 = std::uint8_t __attribute__((vector_size(16)));
+ELBOWSIM_VECTOR_CLONES void drop_alpha(const std::uint8_t* rgba, int width, std::uint8_t* rgb) {
+  const Bytes16 pick = {0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, 15, 15, 15, 15};
+  int x = 0;
+  for (; x + 6 <= width; x += 4) {  // the store ends 2 bytes short of the row's end, or more
+    Bytes16 four;
+    std::memcpy(&four, rgba + 4 * x, 16);
+    const Bytes16 three = __builtin_shuffle(four, pick);
+    std::memcpy(rgb + 3 * x, &three, 16);
+  }
+  for (; x + 1 < width; ++x) std::memcpy(rgb + 3 * x, rgba + 4 * x, 4);
+  if (x < width) std::memcpy(rgb + 3 * x, rgba + 4 * x, 3);
 }
+#else
+void drop_alpha(const std::uint8_t* rgba, int width, std::uint8_t* rgb) {
+  int x = 0;
+  for (; x + 1 < width; ++x) std::memcpy(rgb + 3 * x, rgba + 4 * x, 4);
+  if (x < width) std::memcpy(rgb + 3 * x, rgba + 4 * x, 3);
+}
+#endif
 
 }  // namespace
 

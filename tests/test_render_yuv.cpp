@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "render/frame_writer.hpp"
 #include "render/yuv.hpp"
 
 using namespace elbowsim;
@@ -69,4 +70,40 @@ TEST_CASE("rgb_to_yuv420: BT.709 limited range, luma per pixel, chroma per 2x2 b
   rgb_to_yuv420(grey.data(), w, h, yuv.data());
   CHECK(int(u[0]) == 128);
   CHECK(int(v[0]) == 128);
+}
+
+TEST_CASE("to_rgb: GL's bottom-up RGBA rows -> top-down RGB, alpha dropped, 2x2 averaged at scale 2") {
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> byte(0, 255);
+  // Widths around the 4-pixel shuffle's steps and its stopping point, and a frame's.
+  for (const int width : {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 13, 17, 1280}) {
+    for (const int scale : {1, 2}) {
+      CAPTURE(width);
+      CAPTURE(scale);
+      const int height = 3;
+      const int in_width = width * scale, in_height = height * scale;
+      std::vector<std::uint8_t> rgba(std::size_t(in_width) * std::size_t(in_height) * 4);
+      for (std::uint8_t& b : rgba) b = std::uint8_t(byte(random));
+      // One guard byte past the end: nothing may be written there.
+      std::vector<std::uint8_t> rgb(std::size_t(width) * std::size_t(height) * 3 + 1, 0xA5);
+      to_rgb(rgba.data(), width, height, scale, rgb.data());
+      bool same = true;
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+          for (int c = 0; c < 3; ++c) {
+            int sum = 0;
+            for (int dy = 0; dy < scale; ++dy)
+              for (int dx = 0; dx < scale; ++dx) {
+                const int row = in_height - 1 - (y * scale + dy);  // GL's rows are bottom-up
+                sum += rgba[(std::size_t(row) * std::size_t(in_width) + std::size_t(x * scale + dx)) * 4 +
+                            std::size_t(c)];
+              }
+            const int expected = scale == 1 ? sum : (sum + 2) / 4;
+            same = same && rgb[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 +
+                               std::size_t(c)] == expected;
+          }
+      CHECK(same);
+      CHECK(rgb.back() == 0xA5);
+    }
+  }
 }
