@@ -34,4 +34,13 @@ after=$(cd "$disk/old" && sha256sum ./*)
 [ "$before" = "$after" ] || fail "the earlier run's files changed: $after"
 leftovers=$(find "$disk" -name '*.tmp.*')
 [ -z "$leftovers" ] || fail "temporary files left: $leftovers"
+# 3. A report whose plots do not fit: exit 1 with the reason, no partial PNG.
+"$binary" run "$scene" --out "$disk/plots" --no-render --no-report > /dev/null 2>&1 ||
+  fail "the run for the report did not fit"
+message=$("$binary" report "$disk/plots" 2>&1)
+code=$?
+[ "$code" -eq 1 ] || fail "report: exit $code, expected 1: $message"
+grep -q "No space left on device" <<< "$message" || fail "report: the message does not say why: $message"
+leftovers=$(find "$disk" -name '*.tmp')
+[ -z "$leftovers" ] || fail "report: partial plots left: $leftovers"
 echo "full_disk_check: exit 1 with \"No space left on device\", nothing new left behind, the earlier run intact"

@@ -1,6 +1,13 @@
 #include "report/plot/canvas.hpp"
 
+#include <png.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <stdexcept>
+#include <vector>
 
 namespace elbowsim::plot::canvas {
 
@@ -53,14 +60,81 @@ void set_dash(cairo_t* cr, Dash dash, double width) {
     cairo_set_dash(cr, nullptr, 0, 0);
 }
 
+namespace {
+
+// The surface's pixels (cairo's RGB24: one native-endian 0x00RRGGBB word
+// each) as PNG rows. The UP filter and zlib level 3: plots are flat colour
+// and thin lines, and this writes them 2.9 times as fast as cairo's own
+// writer (all filters tried per row, level 6) for 11 % more bytes, measured
+// on a run's 14 plots; writing them was two thirds of a report's time.
+void write_rgb24(cairo_surface_t* surface, std::FILE* file, const std::filesystem::path& png) {
+  const int width = cairo_image_surface_get_width(surface);
+  const int height = cairo_image_surface_get_height(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  std::vector<png_byte> row(std::size_t(width) * 3);
+  // libpng's messages go nowhere (not to stderr): the exception says what failed.
+  const auto quiet = [](png_structp p, png_const_charp) { png_longjmp(p, 1); };
+  const auto no_warning = [](png_structp, png_const_charp) {};
+  png_structp writer = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, quiet, no_warning);
+  png_infop info = writer ? png_create_info_struct(writer) : nullptr;
+  if (!info) {
+    png_destroy_write_struct(&writer, nullptr);
+    throw std::runtime_error(png.string() + ": cannot write PNG: libpng could not start");
+  }
+  // libpng reports errors by longjmp: nothing below owns anything to destroy.
+  errno = 0;
+  if (setjmp(png_jmpbuf(writer))) {
+    const int error_number = errno;  // the failed write's reason, if it was one
+    png_destroy_write_struct(&writer, &info);
+    throw std::runtime_error(png.string() + ": cannot write PNG: " +
+                             (error_number ? std::strerror(error_number) : "libpng failed"));
+  }
+  png_init_io(writer, file);
+  png_set_filter(writer, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
+  png_set_compression_level(writer, 3);
+  png_set_IHDR(writer, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+  png_write_info(writer, info);
+  for (int y = 0; y < height; ++y) {
+    const unsigned char* line = data + std::size_t(y) * std::size_t(stride);
+    for (int x = 0; x < width; ++x) {
+      std::uint32_t pixel;
+      std::memcpy(&pixel, line + 4 * std::size_t(x), 4);
+      row[3 * std::size_t(x)] = png_byte(pixel >> 16);
+      row[3 * std::size_t(x) + 1] = png_byte(pixel >> 8);
+      row[3 * std::size_t(x) + 2] = png_byte(pixel);
+    }
+    png_write_row(writer, row.data());
+  }
+  png_write_end(writer, nullptr);
+  png_destroy_write_struct(&writer, &info);
+}
+
+}  // namespace
+
 void write_surface(cairo_surface_t* surface, const std::filesystem::path& png) {
   cairo_surface_flush(surface);
+  if (cairo_image_surface_get_format(surface) != CAIRO_FORMAT_RGB24)
+    throw std::logic_error("write_surface: an RGB24 image surface is expected");
   // Written under a temporary name and renamed: never a half-written PNG.
   const std::filesystem::path partial = png.string() + ".tmp";
-  const cairo_status_t status = cairo_surface_write_to_png(surface, partial.c_str());
-  if (status != CAIRO_STATUS_SUCCESS)
-    throw std::runtime_error(png.string() +
-                             ": cannot write PNG: " + cairo_status_to_string(status));
+  std::FILE* file = std::fopen(partial.c_str(), "wb");
+  if (!file)
+    throw std::runtime_error(png.string() + ": cannot write PNG: " + std::strerror(errno));
+  try {
+    write_rgb24(surface, file, png);
+  } catch (...) {
+    std::fclose(file);
+    std::filesystem::remove(partial);
+    throw;
+  }
+  const bool flushed = std::fflush(file) == 0 && !std::ferror(file);
+  const int error_number = errno;
+  if (std::fclose(file) != 0 || !flushed) {
+    std::filesystem::remove(partial);
+    throw std::runtime_error(png.string() + ": cannot write PNG: " + std::strerror(error_number));
+  }
   std::error_code error;
   std::filesystem::rename(partial, png, error);
   if (error) throw std::runtime_error(png.string() + ": " + error.message());
