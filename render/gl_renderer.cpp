@@ -17,20 +17,22 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
   g.lit = link_program(shaders::kLitVertex, shaders::kLitFragment);
   g.flat = link_program(shaders::kFlatVertex, shaders::kFlatFragment);
   g.depth = link_program(shaders::kDepthVertex, shaders::kDepthFragment);
-  // 24 slices: a sphere or cylinder 60 px across is then within 0.3 px of
-  // round (the inset's magnified, faded forearm shows its facets a little).
-  g.meshes[sphere] = upload(unit_sphere(24, 12));
-  g.meshes[cylinder] = upload(unit_cylinder(24));
-  g.meshes[dome] = upload(unit_dome(24, 6));
-  g.meshes[shaft] = upload(unit_tube(24));
+  // Round shapes at every level of detail, chosen per instance by its size
+  // on screen (level_of_detail.hpp).
+  for (const int n : kSlices) {
+    g.meshes[sphere].push_back(upload(unit_sphere(n, n / 2)));
+    g.meshes[dome].push_back(upload(unit_dome(n, std::max(n / 4, 2))));
+    g.meshes[cylinder].push_back(upload(unit_cylinder(n)));
+    g.meshes[shaft].push_back(upload(unit_tube(n)));
+  }
   // Paths and drop lines: a few pixels wide, so 6 sides and no caps (the
   // next segment covers the joint) are as good as more, at a third of the
   // triangles of 8 capped sides.
-  g.meshes[tube] = upload(unit_tube(6));
-  g.meshes[cone] = upload(unit_cone(32));
-  g.meshes[box] = upload(unit_box());
-  g.meshes[ring] = upload(unit_torus(48, 8, kRingTube));
-  g.meshes[square] = upload(unit_square());
+  g.meshes[tube] = {upload(unit_tube(6))};
+  g.meshes[cone] = {upload(unit_cone(32))};
+  g.meshes[box] = {upload(unit_box())};
+  g.meshes[ring] = {upload(unit_torus(48, 8, kRingTube))};
+  g.meshes[square] = {upload(unit_square())};
   make_line_buffer(g);
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
@@ -54,17 +56,55 @@ void GlRenderer::begin_frame(const Color& background) {
 
 namespace {
 
-// Uploads each shape's instances and draws them, one instanced call per shape.
-void draw_shapes(GlRenderer::Gl& g, const ShapeInstances& shapes) {
+// The view that sizes shapes on screen: `camera` over `height` pixels,
+// drawn at `contrast` (1 - fade: an outline's error shows that much).
+struct ViewScale {
+  const Camera& camera;
+  int height;
+  double contrast = 1.0;
+};
+
+// Uploads instances into a mesh's instance buffer and draws them.
+void draw_instanced(const MeshBuffers& mesh, const std::vector<float>& inst) {
+  if (inst.empty()) return;
+  glBindVertexArray(mesh.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, mesh.instances);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(inst.size() * sizeof(float)), inst.data(),
+               GL_STREAM_DRAW);
+  glDrawElementsInstanced(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr,
+                          GLsizei(inst.size() / kInstanceFloats));
+}
+
+// A round shape's instances sorted by their level of detail in `view` (the
+// radius: the larger of the model's first two columns, times the view's
+// contrast; measured at the instance's origin, moved half its axis up for
+// the cylinders), each level drawn with one call.
+void draw_by_level(GlRenderer::Gl& g, int shape, const std::vector<float>& inst,
+                   const ViewScale& view) {
+  for (std::vector<float>& v : g.by_level) v.clear();
+  const bool axis = shape == cylinder || shape == shaft;
+  for (std::size_t k = 0; k + kInstanceFloats <= inst.size(); k += kInstanceFloats) {
+    const Eigen::Map<const Eigen::Matrix4f> model(inst.data() + k);
+    const Eigen::Vector3f at = model.col(3).head<3>() + (axis ? 0.5f : 0.0f) * model.col(2).head<3>();
+    const double radius = std::max(model.col(0).head<3>().norm(), model.col(1).head<3>().norm());
+    const double px =
+        radius * view.contrast * view.camera.pixels_per_metre(at.cast<double>(), view.height);
+    std::vector<float>& to = g.by_level[std::size_t(detail_level(px))];
+    to.insert(to.end(), inst.begin() + std::ptrdiff_t(k),
+              inst.begin() + std::ptrdiff_t(k + kInstanceFloats));
+  }
+  for (std::size_t level = 0; level < g.by_level.size(); ++level)
+    draw_instanced(g.meshes[std::size_t(shape)][level], g.by_level[level]);
+}
+
+// Uploads each shape's instances and draws them, one instanced call per
+// shape (per level of detail for the round ones).
+void draw_shapes(GlRenderer::Gl& g, const ShapeInstances& shapes, const ViewScale& view) {
   for (int s = 0; s < shape_count; ++s) {
     const std::vector<float>& inst = shapes[std::size_t(s)];
     if (inst.empty()) continue;
-    glBindVertexArray(g.meshes[std::size_t(s)].vao);
-    glBindBuffer(GL_ARRAY_BUFFER, g.meshes[std::size_t(s)].instances);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(inst.size() * sizeof(float)), inst.data(),
-                 GL_STREAM_DRAW);
-    glDrawElementsInstanced(GL_TRIANGLES, g.meshes[std::size_t(s)].index_count, GL_UNSIGNED_INT,
-                            nullptr, GLsizei(inst.size() / kInstanceFloats));
+    if (is_round(s)) draw_by_level(g, s, inst, view);
+    else draw_instanced(g.meshes[std::size_t(s)].front(), inst);
   }
   glBindVertexArray(0);
 }
@@ -89,7 +129,7 @@ void shadow_pass(GlRenderer::Gl& g, const Scene& scene, const Lighting& lights) 
   glCullFace(GL_FRONT);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.5f, 2.0f);
-  draw_shapes(g, g.instances[arm]);
+  draw_shapes(g, g.instances[arm], {light, kShadowMapSize});
   glDisable(GL_POLYGON_OFFSET_FILL);
   glCullFace(GL_BACK);
   glBindFramebuffer(GL_FRAMEBUFFER, g.draw_fbo);
@@ -174,12 +214,13 @@ void draw_inset(GlRenderer::Gl& g, const Inset& inset, const Camera& main, const
               inset.background.b);
   for (const Group group : {arm, ground}) {
     cull_to_window(g.instances[group], inset.camera, g.culled);
-    draw_shapes(g, g.culled);
+    draw_shapes(g, g.culled, {inset.camera, v.height, 1.0 - inset.fade});
   }
   glUniform1f(glGetUniformLocation(g.lit, "fade"), 0.0f);
   glUniform1i(glGetUniformLocation(g.lit, "unlit"), 1);
   glDisable(GL_DEPTH_TEST);
-  for (const ShapeInstances& layer : inset_instances(inset)) draw_shapes(g, layer);
+  for (const ShapeInstances& layer : inset_instances(inset))
+    draw_shapes(g, layer, {inset.camera, v.height});
   glEnable(GL_DEPTH_TEST);
   // Depth 0 over the inset: the main view's fragments there fail the depth
   // test before they are shaded.
@@ -201,7 +242,7 @@ void GlRenderer::draw(const Scene& scene, const Camera& camera, const Viewport& 
   if (inset) draw_inset(g, inset->inset, camera, inset->viewport, height_);
   set_viewport(v, height_);
   use_lit(g, camera, camera.eye, lights, shadows);
-  for (const ShapeInstances& group : g.instances) draw_shapes(g, group);
+  for (const ShapeInstances& group : g.instances) draw_shapes(g, group, {camera, v.height});
   draw_grid(g, scene.grid, (camera.projection() * camera.view()).cast<float>());
 }
 

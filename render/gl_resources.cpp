@@ -148,11 +148,12 @@ void make_shadow_map(GlRenderer::Gl& g) {
 }
 
 void delete_all(GlRenderer::Gl& g) {
-  for (auto& m : g.meshes) {
-    const GLuint buffers[3] = {m.vertices, m.indices, m.instances};
-    glDeleteBuffers(3, buffers);
-    glDeleteVertexArrays(1, &m.vao);
-  }
+  for (const std::vector<MeshBuffers>& levels : g.meshes)
+    for (const MeshBuffers& m : levels) {
+      const GLuint buffers[3] = {m.vertices, m.indices, m.instances};
+      glDeleteBuffers(3, buffers);
+      glDeleteVertexArrays(1, &m.vao);
+    }
   glDeleteBuffers(1, &g.line_vbo);
   glDeleteVertexArrays(1, &g.line_vao);
   const GLuint rbs[3] = {g.draw_color, g.draw_depth, g.resolve_color};

@@ -8,6 +8,7 @@
 #include "render/gl_api.hpp"
 #include "render/gl_renderer.hpp"
 #include "render/instances.hpp"
+#include "render/level_of_detail.hpp"
 #include "render/meshes.hpp"
 
 namespace elbowsim {
@@ -22,7 +23,10 @@ inline constexpr int kShadowMapSize = 1024;  // [texels] per side
 
 struct GlRenderer::Gl {
   GLuint lit = 0, flat = 0, depth = 0;  // programs
-  std::array<MeshBuffers, shape_count> meshes;
+  // Per shape its meshes: one, or for a round shape (is_round) one per
+  // level of detail (level_of_detail.hpp), coarsest first.
+  std::array<std::vector<MeshBuffers>, shape_count> meshes;
+  std::array<std::vector<float>, kSlices.size()> by_level;  // a shape's instances, sorted
   Instances instances;
   ShapeInstances culled;  // a group's instances in the inset's window
   GLuint line_vao = 0, line_vbo = 0;
@@ -32,6 +36,11 @@ struct GlRenderer::Gl {
   Eigen::Matrix4f light_view_projection = Eigen::Matrix4f::Identity();
   float shadow_texel = 0;  // [m] world size of one texel
 };
+
+// Shapes drawn at several levels of detail: spheres, domes, cylinders, shafts.
+inline bool is_round(int shape) {
+  return shape == sphere || shape == dome || shape == cylinder || shape == shaft;
+}
 
 GLuint link_program(const char* vertex, const char* fragment);  // throws on errors
 MeshBuffers upload(const Mesh& mesh);

@@ -11,6 +11,7 @@
 #include "app/scenario/scenario.hpp"
 #include "render/camera.hpp"
 #include "render/frame_source.hpp"
+#include "render/level_of_detail.hpp"
 #include "render/meshes.hpp"
 #include "render/overlay.hpp"
 #include "render/playback.hpp"
@@ -411,4 +412,23 @@ TEST_CASE("render settings: defaults, every key, and errors at file:line:col") {
         std::string::npos);
   CHECK(error("render: {shadows: 2}\n").find("render.shadows:") != std::string::npos);
   CHECK(error("render: {fsp: 3}\n").find("did you mean \"fps\"") != std::string::npos);
+}
+
+TEST_CASE("render level of detail: the fewest slices within half a pixel of round") {
+  auto error = [](double radius_px, int level) {
+    return radius_px * (1 - std::cos(std::numbers::pi / kSlices[std::size_t(level)]));
+  };
+  int previous = 0;
+  for (double r = 0.5; r < 400; r *= 1.1) {
+    CAPTURE(r);
+    const int level = detail_level(r);
+    CHECK(level >= previous);  // larger on screen: never fewer slices
+    previous = level;
+    if (level + 1 < int(kSlices.size())) CHECK(error(r, level) <= kOutlineError);
+    if (level > 0) CHECK(error(r, level - 1) > kOutlineError);  // and no more than needed
+  }
+  CHECK(kSlices[std::size_t(detail_level(3))] == 8);     // the inset's hand dot
+  CHECK(kSlices[std::size_t(detail_level(17))] == 16);   // a link in the main view
+  CHECK(kSlices[std::size_t(detail_level(1e6))] == 48);  // beyond the finest: the finest
+  CHECK(kSlices[std::size_t(detail_level(std::nan("")))] == 48);
 }
