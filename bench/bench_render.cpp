@@ -1,6 +1,6 @@
 // End-to-end frame rate of the renderer (render/render_job.cpp): scene
-// building, drawing (OSMesa llvmpipe, GL 3.3 core), read-back through
-// pixel-buffer objects, overlay, and piping YUV 4:2:0 frames to ffmpeg (libx264,
+// building, drawing (OSMesa llvmpipe, GL 3.3 core), read-back into the
+// writer's buffers, overlay, and piping YUV 4:2:0 frames to ffmpeg (libx264,
 // yuv420p, mp4), with drawing and encoding overlapped (writer thread + the
 // ffmpeg process). A plain timed program, not Google Benchmark: one
 // measurement is a whole render of 150 frames (5 s at 30 fps).
@@ -95,7 +95,7 @@ void print_row(const Config& c, std::vector<RenderStats> runs) {
   const double per = 1000.0 / m.frames;  // ms per frame
   std::printf(
       "%5dx%-4d  %-5s  %-4s  %6.1f fps (%5.1f .. %5.1f)  ms/frame: scene %4.2f  "
-      "draw %5.2f  end %5.2f  fetch %5.2f | writer: compose %4.2f  output %5.2f\n",
+      "draw %5.2f  end %5.2f  wait %5.2f | writer: compose %4.2f  output %5.2f\n",
       c.width, c.height, c.label().c_str(), c.video ? "mp4" : "none", m.frames / m.wall_seconds,
       runs.back().frames / runs.back().wall_seconds,
       runs.front().frames / runs.front().wall_seconds, m.scene_seconds * per, m.draw_seconds * per,
@@ -131,7 +131,7 @@ void write_json_row(std::FILE* f, const Config& c, std::vector<RenderStats> runs
                "     \"ffmpeg_missing\": %s, \"runs\": %zu,\n"
                "     \"median_fps\": %.4f, \"min_fps\": %.4f, \"max_fps\": %.4f,\n"
                "     \"median_ms_per_frame\": {\"wall\": %.4f, \"scene\": %.4f, \"draw\": %.4f, "
-               "\"end\": %.4f, \"fetch\": %.4f, \"compose\": %.4f, \"output\": %.4f},\n"
+               "\"end\": %.4f, \"wait\": %.4f, \"compose\": %.4f, \"output\": %.4f},\n"
                "     \"fps_per_run\": [",
                c.width, c.height, c.label().c_str(), c.video ? "mp4" : "none", c.width, c.height,
                to_string(c.antialiasing), m.samples, m.samples, c.video ? "mp4" : "none", m.frames,

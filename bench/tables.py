@@ -235,7 +235,8 @@ def render(machine, path, ratios):
                      {"none": "off", "fxaa": "FXAA"}.get(aa, f"MSAA {c['msaa']}×"),
                      c["output"] + (" (ffmpeg missing!)" if c.get("ffmpeg_missing") else ""),
                      f"{c['median_fps']:.1f} ({c['min_fps']:.0f}–{c['max_fps']:.0f})",
-                     f"{ms['draw']:.2f}", f"{ms['end']:.2f}", f"{ms['fetch']:.2f}",
+                     f"{ms['draw']:.2f}", f"{ms['end']:.2f}",
+                     f"{ms['wait'] if 'wait' in ms else ms['fetch']:.2f}",
                      f"{ms['compose']:.2f}", f"{ms['output']:.2f}"])
     r = {f"{c['width']}x{c['height']} {c.get('antialiasing', 'msaa ' + str(c['msaa']))} "
          f"{c['output']}": f"{c['median_fps']:.1f} fps" for c in doc["configs"]}
@@ -245,8 +246,9 @@ def render(machine, path, ratios):
              f"{ctx.get('gl', '?')}): {ctx['frames_per_render']} frames per render, median of "
              f"{ctx['runs_per_config']} renders after one warm-up render, wall clock; fps range "
              f"slowest–fastest render; ms per frame of the median render, drawing thread "
-             f"(draw, end of frame, fetch) and writer thread (compose, output).", ""]
-            + table(["size", "anti-aliasing", "output", "fps (range)", "draw", "end of frame", "fetch",
+             f"(draw; end of frame: rasterising and the read-back; waiting for a free buffer "
+             f"from the writer) and writer thread (compose, output).", ""]
+            + table(["size", "anti-aliasing", "output", "fps (range)", "draw", "end of frame", "wait",
                      "compose", "output"], rows))
 
 

@@ -48,8 +48,7 @@ MeshBuffers upload(const Mesh& mesh);
 void make_line_buffer(GlRenderer::Gl& g);
 // Single-sample colour target `resolve_fbo`, read back; with samples > 1 a
 // multisampled colour + depth target `draw_fbo` drawn into and resolved into
-// it (otherwise draw_fbo is resolve_fbo, with a depth buffer); two pixel-buffer
-// objects for the read-back.
+// it (otherwise draw_fbo is resolve_fbo, with a depth buffer).
 void make_framebuffers(GlRenderer::Gl& g, int width, int height, int samples);
 // A kShadowMapSize² depth texture with depth comparison (sampler2DShadow,
 // bilinear) and a framebuffer that renders into it.
