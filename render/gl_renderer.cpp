@@ -85,7 +85,8 @@ void draw_by_level(GlRenderer::Gl& g, int shape, const std::vector<float>& inst,
   const bool axis = shape == cylinder || shape == shaft;
   for (std::size_t k = 0; k + kInstanceFloats <= inst.size(); k += kInstanceFloats) {
     const Eigen::Map<const Eigen::Matrix4f> model(inst.data() + k);
-    const Eigen::Vector3f at = model.col(3).head<3>() + (axis ? 0.5f : 0.0f) * model.col(2).head<3>();
+    const Eigen::Vector3f at =
+        model.col(3).head<3>() + (axis ? 0.5f : 0.0f) * model.col(2).head<3>();
     const double radius = std::max(model.col(0).head<3>().norm(), model.col(1).head<3>().norm());
     const double px =
         radius * view.contrast * view.camera.pixels_per_metre(at.cast<double>(), view.height);
@@ -103,8 +104,10 @@ void draw_shapes(GlRenderer::Gl& g, const ShapeInstances& shapes, const ViewScal
   for (int s = 0; s < shape_count; ++s) {
     const std::vector<float>& inst = shapes[std::size_t(s)];
     if (inst.empty()) continue;
-    if (is_round(s)) draw_by_level(g, s, inst, view);
-    else draw_instanced(g.meshes[std::size_t(s)].front(), inst);
+    if (is_round(s))
+      draw_by_level(g, s, inst, view);
+    else
+      draw_instanced(g.meshes[std::size_t(s)].front(), inst);
   }
   glBindVertexArray(0);
 }

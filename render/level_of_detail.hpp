@@ -20,8 +20,7 @@ inline constexpr double kOutlineError = 0.5;
 // The index into kSlices for a round shape `radius_px` in radius on screen.
 inline int detail_level(double radius_px) {
   for (int level = 0; level + 1 < int(kSlices.size()); ++level)
-    if (radius_px * (1 - std::cos(std::numbers::pi / kSlices[std::size_t(level)])) <=
-        kOutlineError)
+    if (radius_px * (1 - std::cos(std::numbers::pi / kSlices[std::size_t(level)])) <= kOutlineError)
       return level;
   return int(kSlices.size()) - 1;
 }

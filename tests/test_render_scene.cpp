@@ -260,8 +260,10 @@ TEST_CASE("render meshes: closed, outward-facing (signed volume) unit shapes") {
     for (const auto& [edge, n] : uses) {
       const auto back = uses.find({edge.second, edge.first});
       const int m_back = back == uses.end() ? 0 : back->second;
-      if (n == 1 && m_back == 0) ++open;
-      else if (n != 1 || m_back != 1) ++bad;
+      if (n == 1 && m_back == 0)
+        ++open;
+      else if (n != 1 || m_back != 1)
+        ++bad;
     }
   };
   int open = 0, bad = 0;

@@ -72,7 +72,8 @@ TEST_CASE("rgb_to_yuv420: BT.709 limited range, luma per pixel, chroma per 2x2 b
   CHECK(int(v[0]) == 128);
 }
 
-TEST_CASE("to_rgb: GL's bottom-up RGBA rows -> top-down RGB, alpha dropped, 2x2 averaged at scale 2") {
+TEST_CASE(
+    "to_rgb: GL's bottom-up RGBA rows -> top-down RGB, alpha dropped, 2x2 averaged at scale 2") {
   std::mt19937 random(7);
   std::uniform_int_distribution<int> byte(0, 255);
   // Widths around the 4-pixel shuffle's steps and its stopping point, and a frame's.
@@ -95,12 +96,16 @@ TEST_CASE("to_rgb: GL's bottom-up RGBA rows -> top-down RGB, alpha dropped, 2x2 
             for (int dy = 0; dy < scale; ++dy)
               for (int dx = 0; dx < scale; ++dx) {
                 const int row = in_height - 1 - (y * scale + dy);  // GL's rows are bottom-up
-                sum += rgba[(std::size_t(row) * std::size_t(in_width) + std::size_t(x * scale + dx)) * 4 +
-                            std::size_t(c)];
+                sum +=
+                    rgba[(std::size_t(row) * std::size_t(in_width) + std::size_t(x * scale + dx)) *
+                             4 +
+                         std::size_t(c)];
               }
             const int expected = scale == 1 ? sum : (sum + 2) / 4;
-            same = same && rgb[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 +
-                               std::size_t(c)] == expected;
+            same =
+                same &&
+                rgb[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(c)] ==
+                    expected;
           }
       CHECK(same);
       CHECK(rgb.back() == 0xA5);

@@ -120,8 +120,7 @@ void write_surface(cairo_surface_t* surface, const std::filesystem::path& png) {
   // Written under a temporary name and renamed: never a half-written PNG.
   const std::filesystem::path partial = png.string() + ".tmp";
   std::FILE* file = std::fopen(partial.c_str(), "wb");
-  if (!file)
-    throw std::runtime_error(png.string() + ": cannot write PNG: " + std::strerror(errno));
+  if (!file) throw std::runtime_error(png.string() + ": cannot write PNG: " + std::strerror(errno));
   try {
     write_rgb24(surface, file, png);
   } catch (...) {
