@@ -108,7 +108,7 @@ Bound unit_bound(int shape) {
     case square:
       return {{0, 0, 0}, std::sqrt(0.5f)};
     default:
-      return {{0, 0, 0}, 1.0f};  // the unit sphere
+      return {{0, 0, 0}, 1.0f};  // the unit sphere, and the dome (its half)
   }
 }
 

@@ -253,9 +253,9 @@ RenderResults render_jobs(const std::vector<RenderJob>& jobs,
                           const std::optional<RenderRequest>& side_by_side, int threads) {
   if (jobs.empty()) throw std::invalid_argument("render_jobs: no jobs");
   // With a drawing thread on every core, llvmpipe's own rasteriser threads
-  // only add hand-offs (0.4 s of the main job's 10 s of CPU, for 0.4 s less
-  // wall time): each drawing thread then rasterises its own frames. llvmpipe
-  // reads this when the process's first context is made; the user's value stays.
+  // only add hand-offs (0.4 s of the main job's 10 s of CPU, wall time the
+  // same): each drawing thread then rasterises its own frames. llvmpipe reads
+  // this when the process's first context is made; the user's value stays.
   if (std::min(threads, int(jobs.size())) >= available_cores())
     ::setenv("LP_NUM_THREADS", "0", /*overwrite=*/0);
   if (side_by_side)

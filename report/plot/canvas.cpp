@@ -121,22 +121,29 @@ void write_surface(cairo_surface_t* surface, const std::filesystem::path& png) {
   const std::filesystem::path partial = png.string() + ".tmp";
   std::FILE* file = std::fopen(partial.c_str(), "wb");
   if (!file) throw std::runtime_error(png.string() + ": cannot write PNG: " + std::strerror(errno));
+  std::error_code ignored;
   try {
     write_rgb24(surface, file, png);
   } catch (...) {
     std::fclose(file);
-    std::filesystem::remove(partial);
+    std::filesystem::remove(partial, ignored);
     throw;
   }
+  // The first failure's reason: the flush's, else the close's.
   const bool flushed = std::fflush(file) == 0 && !std::ferror(file);
-  const int error_number = errno;
-  if (std::fclose(file) != 0 || !flushed) {
-    std::filesystem::remove(partial);
+  int error_number = errno;
+  const bool closed = std::fclose(file) == 0;
+  if (flushed && !closed) error_number = errno;
+  if (!flushed || !closed) {
+    std::filesystem::remove(partial, ignored);
     throw std::runtime_error(png.string() + ": cannot write PNG: " + std::strerror(error_number));
   }
   std::error_code error;
   std::filesystem::rename(partial, png, error);
-  if (error) throw std::runtime_error(png.string() + ": " + error.message());
+  if (error) {
+    std::filesystem::remove(partial, ignored);
+    throw std::runtime_error(png.string() + ": " + error.message());
+  }
 }
 
 std::string axis_title(const Axis& axis) {
