@@ -3,7 +3,8 @@
 # binaries taken in turns (e.g. main's and a branch's, both built Release):
 # - run: `elbowsim run scenarios/elbow_experiment.yaml --out DIR` (two
 #   variants, their videos, the side-by-side, the reports), total CPU of the
-#   process and its children (ffmpeg) as /usr/bin/time gives it (user + sys),
+#   process (and its children, when videos went to an ffmpeg process) as
+#   /usr/bin/time gives it (user + sys),
 #   and wall time;
 # - render: `elbowsim render DIR/elbow_off` alone (145 frames, 1280x720,
 #   MSAA 4x, to mp4): frames per second end to end = frames / wall time;

@@ -1,8 +1,8 @@
 // End-to-end frame rate of the renderer (render/render_job.cpp): scene
 // building, drawing (OSMesa llvmpipe, GL 3.3 core), read-back into the
-// writer's buffers, overlay, and piping YUV 4:2:0 frames to ffmpeg (libx264,
-// yuv420p, mp4), with drawing and encoding overlapped (writer thread + the
-// ffmpeg process). A plain timed program, not Google Benchmark: one
+// writer's buffers, overlay, and YUV 4:2:0 frames encoded by libx264 into an
+// mp4 (FFmpeg's libraries, in the writer thread), with drawing and encoding
+// overlapped (drawing thread + writer thread). A plain timed program, not Google Benchmark: one
 // measurement is a whole render of 150 frames (5 s at 30 fps).
 //
 // Prototype scene: an 8-link planar arm (8 capsules) swinging over a table,
@@ -57,7 +57,8 @@ Recording prototype_recording(const Model& model) {
     const double t = 0.01 * k;
     std::vector<double> row(static_cast<std::size_t>(L.size()), 0.0);
     row[L.time()] = t;
-    for (int j = 0; j < 8; ++j) row[L.q(j)] = 0.35 * std::sin(2 * std::numbers::pi * 0.4 * t + 0.7 * j) - 0.05;
+    for (int j = 0; j < 8; ++j)
+      row[L.q(j)] = 0.35 * std::sin(2 * std::numbers::pi * 0.4 * t + 0.7 * j) - 0.05;
     row[L.hand(0)] = row[L.hand_desired(0)] = 0.7 + 0.1 * std::sin(t);
     row[L.hand(2)] = row[L.hand_desired(2)] = 0.1 + 0.05 * std::cos(2 * t);
     for (int e = 0; e < 3; ++e) {
@@ -108,12 +109,14 @@ std::string json_string(const std::string& text) {
   std::string out = "\"";
   for (const char ch : text) {
     const auto c = static_cast<unsigned char>(ch);
-    if (c == '"' || c == '\\') out += '\\', out += ch;
+    if (c == '"' || c == '\\')
+      out += '\\', out += ch;
     else if (c < 0x20) {
       char buf[8];
       std::snprintf(buf, sizeof buf, "\\u%04x", c);
       out += buf;
-    } else out += ch;
+    } else
+      out += ch;
   }
   return out + "\"";
 }
@@ -128,15 +131,15 @@ void write_json_row(std::FILE* f, const Config& c, std::vector<RenderStats> runs
                "    {\"name\": \"%dx%d_%s_%s\", \"width\": %d, \"height\": %d, "
                "\"antialiasing\": \"%s\", \"msaa\": %d, \"samples\": %d, \"output\": \"%s\", "
                "\"frames\": %d,\n"
-               "     \"ffmpeg_missing\": %s, \"runs\": %zu,\n"
+               "     \"video_unavailable\": %s, \"runs\": %zu,\n"
                "     \"median_fps\": %.4f, \"min_fps\": %.4f, \"max_fps\": %.4f,\n"
                "     \"median_ms_per_frame\": {\"wall\": %.4f, \"scene\": %.4f, \"draw\": %.4f, "
                "\"end\": %.4f, \"wait\": %.4f, \"compose\": %.4f, \"output\": %.4f},\n"
                "     \"fps_per_run\": [",
                c.width, c.height, c.label().c_str(), c.video ? "mp4" : "none", c.width, c.height,
                to_string(c.antialiasing), m.samples, m.samples, c.video ? "mp4" : "none", m.frames,
-               m.ffmpeg_missing ? "true" : "false", runs.size(), m.frames / m.wall_seconds,
-               runs.back().frames / runs.back().wall_seconds,
+               !m.video_unavailable.empty() ? "true" : "false", runs.size(),
+               m.frames / m.wall_seconds, runs.back().frames / runs.back().wall_seconds,
                runs.front().frames / runs.front().wall_seconds, m.wall_seconds * per,
                m.scene_seconds * per, m.draw_seconds * per, m.finish_seconds * per,
                m.readback_seconds * per, m.compose_seconds * per, m.output_seconds * per);
@@ -151,12 +154,14 @@ int main(int argc, char** argv) {
   int runs = 3;
   const char* json_path = nullptr;
   for (int k = 1; k < argc; ++k) {
-    if (std::strcmp(argv[k], "--json") == 0 && k + 1 < argc) json_path = argv[++k];
+    if (std::strcmp(argv[k], "--json") == 0 && k + 1 < argc)
+      json_path = argv[++k];
     else if (std::strcmp(argv[k], "--help") == 0 || std::strcmp(argv[k], "-h") == 0 ||
              std::strcmp(argv[k], "--json") == 0) {
       std::fprintf(stderr, "usage: %s [runs (default 3)] [--json FILE]\n", argv[0]);
       return 2;
-    } else runs = std::max(1, std::atoi(argv[k]));
+    } else
+      runs = std::max(1, std::atoi(argv[k]));
   }
   double load[3] = {-1, -1, -1};
   getloadavg(load, 3);

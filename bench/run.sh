@@ -96,7 +96,7 @@ write_machine_json() {  # $1: finished (true/false)
   MACHINE=$machine CPU_MODEL=$cpu_model CORES=$cores ARCH=$arch KERNEL=$(uname -r) OS=$os \
   COMPILER="$compiler_version" BUILD_TYPE=$build_type \
   EIGEN=$(pkg libeigen3-dev) BULLET=$(pkg libbullet-dev) GBENCH=$(pkg libbenchmark-dev) \
-  OSMESA=$(pkg libosmesa6) FFMPEG=$(pkg ffmpeg) \
+  OSMESA=$(pkg libosmesa6) LIBAV=$(pkg libavcodec-dev) \
   STARTED=$started COMMIT=$commit DIRTY=$dirty LOAD_START="$load1 $load5 $load15" \
   FINISHED=$1 QUICK=$quick REPS=$repetitions MIN_TIME=$min_time WARMUP=$warmup \
   RENDER_RUNS=$render_runs GBENCH_ARGS="${gbench_args[*]}" T0=$t0 OUT=$out \
@@ -114,7 +114,8 @@ doc = {
     "compiler": e["COMPILER"],
     "build_type": e["BUILD_TYPE"],
     "packages": {"libeigen3-dev": e["EIGEN"], "libbullet-dev": e["BULLET"],
-                 "libbenchmark-dev": e["GBENCH"], "libosmesa6": e["OSMESA"], "ffmpeg": e["FFMPEG"]},
+                 "libbenchmark-dev": e["GBENCH"], "libosmesa6": e["OSMESA"],
+                 "libavcodec-dev": e["LIBAV"]},
     "date": e["STARTED"],
     "git_commit": e["COMMIT"],
     "git_dirty": e["DIRTY"] == "true",

@@ -233,7 +233,7 @@ def render(machine, path, ratios):
         aa = c.get("antialiasing", "msaa" if c["msaa"] > 1 else "none")
         rows.append([f"{c['width']}×{c['height']}",
                      {"none": "off", "fxaa": "FXAA"}.get(aa, f"MSAA {c['msaa']}×"),
-                     c["output"] + (" (ffmpeg missing!)" if c.get("ffmpeg_missing") else ""),
+                     c["output"] + (" (no video library!)" if c.get("video_unavailable", c.get("ffmpeg_missing")) else ""),
                      f"{c['median_fps']:.1f} ({c['min_fps']:.0f}–{c['max_fps']:.0f})",
                      f"{ms['draw']:.2f}", f"{ms['end']:.2f}",
                      f"{ms['wait'] if 'wait' in ms else ms['fetch']:.2f}",

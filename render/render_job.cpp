@@ -45,18 +45,17 @@ struct Outputs {
   }
 };
 
-// A render's outputs opened: a video needs ffmpeg; without it, PNG frames and
-// the command that makes the video from them.
+// A render's outputs opened: a video needs FFmpeg's libraries; without them,
+// PNG frames and the command that makes the video from them.
 struct OpenOutputs {
   Outputs files;
   std::optional<VideoEncoder> encoder;  // before the writer that uses it, so destroyed after
 
   OpenOutputs(const RenderRequest& request, int width, int height, double fps, RenderStats& stats) {
     files.folder = request.folder;
-    const fs::path ffmpeg = request.video ? find_on_path("ffmpeg") : fs::path();
-    files.video = request.video && !ffmpeg.empty();
-    stats.ffmpeg_missing = request.video && ffmpeg.empty();
-    files.frames = request.frames || stats.ffmpeg_missing;
+    if (request.video) stats.video_unavailable = video_unavailable();
+    files.video = request.video && stats.video_unavailable.empty();
+    files.frames = request.frames || !stats.video_unavailable.empty();
     if (files.frames) {
       files.frames_tmp = request.folder / "frames.tmp";
       fs::remove_all(files.frames_tmp);
@@ -64,9 +63,9 @@ struct OpenOutputs {
     }
     if (files.video) {
       files.video_tmp = request.folder / "video.tmp.mp4";
-      encoder.emplace(ffmpeg, files.video_tmp, width, height, fps);
+      encoder.emplace(files.video_tmp, width, height, fps, request.lossless);
     }
-    if (stats.ffmpeg_missing)
+    if (!stats.video_unavailable.empty())
       stats.video_command =
           frames_to_video_command(request.folder / "frames", request.folder / "video.mp4", fps);
   }
@@ -74,7 +73,7 @@ struct OpenOutputs {
     return {encoder ? &*encoder : nullptr,
             files.frames ? std::optional(files.frames_tmp) : std::nullopt, side, panel};
   }
-  // Waits for ffmpeg and renames the outputs into place.
+  // Finishes the video and renames the outputs into place.
   void finish(RenderStats& stats) {
     if (encoder) encoder->finish();
     files.commit();
@@ -175,7 +174,7 @@ void start(Running& r, const RenderJob& job, SideBySide* side, int panel) {
   }
 }
 
-// After drawing: the writer's last frames, ffmpeg, the outputs renamed into place.
+// After drawing: the writer's last frames, the video's end, the outputs renamed into place.
 void finish(Running& r, Clock::time_point started) {
   try {
     if (r.writer) r.writer->finish();

@@ -6,8 +6,8 @@
 //
 // Pipeline of one render: a drawing thread builds scenes, draws and reads
 // frame k back into one of the writer's buffers while the render's writer
-// thread (frame_writer.hpp) finishes frame k-1 and pipes it to ffmpeg
-// (another process, which encodes in parallel) or writes it as PNG. Several
+// thread (frame_writer.hpp) finishes frame k-1 and encodes it (H.264 by
+// libx264, in-process) or writes it as PNG. Several
 // renders are drawn by up to `threads` drawing threads, each with its own
 // OSMesa context; a thread with several renders draws them in turns, frame
 // by frame. llvmpipe rasterises with threads of its own while there are
@@ -28,8 +28,9 @@ namespace elbowsim {
 
 struct RenderRequest {
   std::filesystem::path folder;  // video.mp4 and frames/ go here (it must exist)
-  bool video = true;             // folder/video.mp4 through ffmpeg
+  bool video = true;             // folder/video.mp4 (render/video_encoder.hpp)
   bool frames = false;           // folder/frames/frame_00001.png ...
+  bool lossless = false;         // the video lossless (x264 quantiser 0)
 };
 
 struct RenderStats {
@@ -40,9 +41,10 @@ struct RenderStats {
   double fps = 0;
   bool video_written = false;   // folder/video.mp4
   bool frames_written = false;  // folder/frames/
-  // Video asked but no ffmpeg on PATH: PNG frames were written instead, and
-  // video_command makes the video from them.
-  bool ffmpeg_missing = false;
+  // Video asked but none could be made here (FFmpeg's libraries missing):
+  // why; PNG frames were written instead, and video_command makes the video
+  // from them.
+  std::string video_unavailable;
   std::string video_command;
   std::string gl;     // GL renderer and version used
   std::string error;  // why this render failed ("" if it did not): nothing of it was kept
@@ -52,7 +54,7 @@ struct RenderStats {
   // rasterizes and shades there, then the MSAA resolve blit and
   // glReadPixels into the buffer). Writer thread:
   // RGBA -> RGB (and 2x2 averaging) plus overlay, then output (YUV
-  // conversion and pipe writes, which wait for ffmpeg's encoder; PNG
+  // conversion and H.264 encoding; PNG
   // encoding; handing the frame to a side-by-side composition). A
   // side-by-side's own time is all output (copies wait for the panels).
   double wall_seconds = 0, scene_seconds = 0, draw_seconds = 0, finish_seconds = 0,
@@ -76,7 +78,7 @@ struct RenderResults {
 // jobs at once, and with `side_by_side` the jobs' frames side by side, left
 // to right in job order, into side_by_side->folder. Outputs appear only when
 // complete (written under temporary names, then renamed; frames/ is replaced
-// as a whole). A job that fails (GL, ffmpeg, files) leaves nothing behind
+// as a whole). A job that fails (GL, the video, files) leaves nothing behind
 // and its error in its stats; the side-by-side then fails too. Throws
 // std::invalid_argument for no jobs, or when the side-by-side's jobs differ
 // in height or fps (side_by_side_problem).

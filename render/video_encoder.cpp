@@ -1,22 +1,12 @@
 #include "render/video_encoder.hpp"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cerrno>
-#include <csignal>
-#include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "render/video_library.hpp"
 #include "render/yuv.hpp"
-
-extern char** environ;
 
 namespace elbowsim {
 
@@ -28,56 +18,38 @@ std::string format_fps(double fps) {
   return s.str();
 }
 
-// ffmpeg's options in its own order: input (raw YUV on stdin), then output.
+// x264's settings, the same as the ffmpeg command's below.
 const char* const kPreset = "veryfast";  // x264 speed/size trade-off; crf 20 looks clean
 // Sub-pixel motion refinement 1 instead of veryfast's 2 (superfast's): on
 // the experiment's video 22 % less encoding CPU for 8 % more bytes, PSNR
 // 50.8 instead of 51.3 dB (superfast: 20 % less CPU, 2.3 times the bytes).
 const char* const kX264Params = "subme=1";
 const char* const kCrf = "20";
-const char* const kEncoderThreads = "1";  // see ffmpeg_arguments
 // The colour matrix, primaries, transfer and range the video's header names
 // (those rgb_to_yuv420 converts with; sRGB shares BT.709's primaries).
 const char* const kColour[] = {"-colorspace", "bt709", "-color_primaries", "bt709",
                                "-color_trc",  "bt709", "-color_range",     "tv"};
 
-}  // namespace
-
-std::filesystem::path find_on_path(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  if (!path) return {};
-  std::stringstream dirs(path);
-  for (std::string dir; std::getline(dirs, dir, ':');) {
-    const std::filesystem::path candidate =
-        std::filesystem::path(dir.empty() ? "." : dir) / program;
-    struct stat st;
-    if (::stat(candidate.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
-        ::access(candidate.c_str(), X_OK) == 0)
-      return candidate;
-  }
-  return {};
+// A failed call's reason: the library's text for `code`, then what it logged.
+std::string reason(const VideoLibrary& av, int code) {
+  char text[AV_ERROR_MAX_STRING_SIZE] = {};
+  av.strerror(code, text, sizeof text);
+  std::string log = take_video_log();
+  while (!log.empty() && log.back() == '\n') log.pop_back();
+  return std::string(text) + (log.empty() ? "" : ":\n" + log);
 }
 
-std::vector<std::string> ffmpeg_arguments(const std::filesystem::path& output, int width,
-                                          int height, double fps) {
-  std::vector<std::string> args = {"-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo",
-                                   "-pix_fmt", "yuv420p", "-video_size",
-                                   std::to_string(width) + "x" + std::to_string(height),
-                                   "-framerate", format_fps(fps)};
-  args.insert(args.end(), std::begin(kColour), std::end(kColour));
-  // x264 picks its thread count from the cores, and its bitstream depends on
-  // it: a fixed count keeps the mp4 the same bytes on every machine. One:
-  // the encoder keeps up with drawing (over 200 frames/s at 1280 x 720),
-  // a render's encoders and drawing threads already share the cores, and a
-  // second thread costs 5-10 % more CPU in hand-offs and frames in flight.
-  for (const char* a :
-       {"-i", "pipe:0", "-an", "-c:v", "libx264", "-preset", kPreset, "-x264-params", kX264Params,
-        "-crf", kCrf, "-threads", kEncoderThreads, "-pix_fmt", "yuv420p"})
-    args.emplace_back(a);
-  args.insert(args.end(), std::begin(kColour), std::end(kColour));
-  for (const char* a : {"-movflags", "+faststart", "-f", "mp4"}) args.emplace_back(a);
-  args.push_back(output.string());
-  return args;
+}  // namespace
+
+std::string video_unavailable() {
+  try {
+    const VideoLibrary& av = video_library();
+    if (!av.find_encoder_by_name("libx264"))
+      return "FFmpeg's " + libavformat_file() + " was built without libx264, the H.264 encoder";
+    return "";
+  } catch (const std::exception& e) {
+    return e.what();
+  }
 }
 
 std::string frames_to_video_command(const std::filesystem::path& frames,
@@ -90,94 +62,199 @@ std::string frames_to_video_command(const std::filesystem::path& frames,
          " -movflags +faststart '" + video.string() + "'";
 }
 
-VideoEncoder::VideoEncoder(const std::filesystem::path& ffmpeg, const std::filesystem::path& output,
-                           int width, int height, double fps)
-    : output_(output),
-      log_(output.string() + ".log"),
-      width_(width),
-      height_(height),
-      yuv_(yuv420_bytes(width, height)) {
-  int fds[2];
-  if (::pipe2(fds, O_CLOEXEC) != 0)
-    throw std::runtime_error(std::string("cannot make a pipe to ffmpeg: ") + std::strerror(errno));
-  // The child: stdin from the pipe, stdout to /dev/null, stderr to the log.
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, fds[0], 0);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  std::vector<std::string> args = ffmpeg_arguments(output, width, height, fps);
-  args.insert(args.begin(), ffmpeg.string());
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  const int error = ::posix_spawn(&pid_, ffmpeg.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  ::close(fds[0]);
-  if (error != 0) {
-    ::close(fds[1]);
-    std::filesystem::remove(log_);
-    throw std::runtime_error("cannot start " + ffmpeg.string() + ": " + std::strerror(error));
+// What is open, freed in reverse.
+struct VideoEncoder::Codec {
+  const VideoLibrary& av;
+  AVCodecContext* context = nullptr;
+  AVFormatContext* format = nullptr;
+  AVStream* stream = nullptr;
+  AVBufferPool* pool = nullptr;  // frames' YUV, reused once the encoder has copied them
+  AVBufferRef* last = nullptr;   // the last frame's YUV (yuv())
+  AVFrame* frame = nullptr;
+  AVPacket* packet = nullptr;
+  std::int64_t next_pts = 0;
+
+  explicit Codec(const VideoLibrary& library) : av(library) {}
+  ~Codec() {
+    av.packet_free(&packet);
+    av.frame_free(&frame);
+    av.buffer_unref(&last);
+    av.buffer_pool_uninit(&pool);
+    av.free_context(&context);
+    if (format) {
+      if (format->pb) av.io_closep(&format->pb);
+      av.free_format_context(format);
+    }
   }
-  pipe_ = fds[1];
-  // A write to a pipe ffmpeg has closed must fail with EPIPE, not kill us.
-  old_sigpipe_ = std::signal(SIGPIPE, SIG_IGN);
+  Codec(const Codec&) = delete;
+  Codec& operator=(const Codec&) = delete;
+
+  [[noreturn]] void fail(const std::string& what, int code) const {
+    throw std::runtime_error(what + ": " + reason(av, code));
+  }
+  // Writes the packets the encoder has ready; true once it has no more (end of stream).
+  bool write_packets() {
+    for (;;) {
+      int status = av.receive_packet(context, packet);
+      if (status == AVERROR(EAGAIN)) return false;
+      if (status == AVERROR_EOF) return true;
+      if (status < 0) fail("the H.264 encoder failed", status);
+      av.packet_rescale_ts(packet, context->time_base, stream->time_base);
+      packet->stream_index = stream->index;
+      if ((status = av.interleaved_write_frame(format, packet)) < 0)
+        fail("cannot write " + std::string(format->url), status);
+    }
+  }
+};
+
+namespace {
+
+// x264's options: the settings above, or lossless (quantiser 0).
+AVDictionary* encoder_options(const VideoLibrary& av, bool lossless) {
+  AVDictionary* options = nullptr;
+  av.dict_set(&options, "preset", kPreset, 0);
+  av.dict_set(&options, "x264-params", kX264Params, 0);
+  if (lossless)
+    av.dict_set(&options, "qp", "0", 0);
+  else
+    av.dict_set(&options, "crf", kCrf, 0);
+  return options;
 }
 
-VideoEncoder::~VideoEncoder() {
-  if (pid_ > 0) {
-    ::kill(pid_, SIGTERM);
-    stop();
-    std::error_code ignored;
-    std::filesystem::remove(output_, ignored);
-    std::filesystem::remove(log_, ignored);
+}  // namespace
+
+VideoEncoder::VideoEncoder(const std::filesystem::path& output, int width, int height, double fps,
+                           bool lossless)
+    : output_(output), width_(width), height_(height) {
+  if (width <= 0 || height <= 0 || width % 2 || height % 2)
+    throw std::invalid_argument("video: width and height must be even and positive");
+  try {
+    open(fps, lossless);
+  } catch (...) {
+    discard();
+    throw;
   }
-  if (old_sigpipe_ != nullptr) std::signal(SIGPIPE, old_sigpipe_);
+}
+
+void VideoEncoder::open(double fps, bool lossless) {
+  const std::filesystem::path& output = output_;
+  const int width = width_, height = height_;
+  const VideoLibrary& av = video_library();
+  take_video_log();
+  codec_ = std::make_unique<Codec>(av);
+  Codec& c = *codec_;
+  const AVCodec* x264 = av.find_encoder_by_name("libx264");
+  if (!x264) throw std::runtime_error(video_unavailable());
+  if (!(c.context = av.alloc_context3(x264))) throw std::bad_alloc();
+  AVCodecContext& e = *c.context;
+  e.width = width;
+  e.height = height;
+  e.pix_fmt = AV_PIX_FMT_YUV420P;
+  e.framerate = av.d2q(fps, 1001000);
+  e.time_base = AVRational{e.framerate.den, e.framerate.num};
+  e.colorspace = AVCOL_SPC_BT709;
+  e.color_primaries = AVCOL_PRI_BT709;
+  e.color_trc = AVCOL_TRC_BT709;
+  e.color_range = AVCOL_RANGE_MPEG;
+  // x264 picks its thread count from the cores, and its bitstream depends on
+  // it: one thread keeps the mp4 the same bytes on every machine. It keeps up
+  // with drawing (over 200 frames/s at 1280 x 720), and a render's drawing
+  // and writer threads already share the cores.
+  e.thread_count = 1;
+  int status = av.alloc_output_context2(&c.format, nullptr, "mp4", output.c_str());
+  if (status < 0) c.fail("cannot make an mp4", status);
+  if (c.format->oformat->flags & AVFMT_GLOBALHEADER) e.flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+  AVDictionary* options = encoder_options(av, lossless);
+  status = av.open2(c.context, x264, &options);
+  av.dict_free(&options);
+  if (status < 0) c.fail("cannot start the H.264 encoder", status);
+  if (!(c.stream = av.new_stream(c.format, nullptr))) throw std::bad_alloc();
+  if ((status = av.parameters_from_context(c.stream->codecpar, c.context)) < 0)
+    c.fail("cannot describe the video stream", status);
+  c.stream->time_base = e.time_base;
+  c.stream->avg_frame_rate = e.framerate;
+  if ((status = av.io_open(&c.format->pb, output.c_str(), AVIO_FLAG_WRITE)) < 0)
+    c.fail("cannot write " + output.string(), status);
+  // The index first, so that a browser plays the video while it loads.
+  AVDictionary* muxer = nullptr;
+  av.dict_set(&muxer, "movflags", "+faststart", 0);
+  status = av.write_header(c.format, &muxer);
+  av.dict_free(&muxer);
+  if (status < 0) c.fail("cannot write " + output.string(), status);
+  if (!(c.pool = av.buffer_pool_init(yuv420_bytes(width, height), nullptr))) throw std::bad_alloc();
+  if (!(c.frame = av.frame_alloc()) || !(c.packet = av.packet_alloc())) throw std::bad_alloc();
+}
+
+VideoEncoder::~VideoEncoder() { discard(); }
+
+void VideoEncoder::discard() {
+  const bool opened = codec_ && codec_->format && codec_->format->pb;
+  codec_.reset();
+  std::error_code ignored;
+  if (opened) std::filesystem::remove(output_, ignored);  // only a file this made
+}
+
+std::uint8_t* VideoEncoder::next_frame() {
+  Codec& c = *codec_;
+  c.av.buffer_unref(&c.last);
+  if (!(c.last = c.av.buffer_pool_get(c.pool))) throw std::bad_alloc();
+  return c.last->data;
+}
+
+void VideoEncoder::encode_next() {
+  Codec& c = *codec_;
+  AVFrame& f = *c.frame;
+  // The frame refers to the pool's buffer: x264 copies it into its own
+  // pictures, so no copy is made here, and the buffer returns to the pool
+  // when neither the encoder nor `last` holds it.
+  if (!(f.buf[0] = c.av.buffer_ref(c.last))) throw std::bad_alloc();
+  const std::size_t luma = std::size_t(width_) * std::size_t(height_);
+  f.data[0] = c.last->data;
+  f.data[1] = f.data[0] + luma;
+  f.data[2] = f.data[1] + luma / 4;
+  f.linesize[0] = width_;
+  f.linesize[1] = f.linesize[2] = width_ / 2;
+  f.width = width_;
+  f.height = height_;
+  f.format = AV_PIX_FMT_YUV420P;
+  f.pts = c.next_pts++;
+  const int status = c.av.send_frame(c.context, &f);
+  c.av.frame_unref(&f);
+  if (status < 0) c.fail("the H.264 encoder failed", status);
+  c.write_packets();
 }
 
 void VideoEncoder::write(const std::uint8_t* rgb) {
-  rgb_to_yuv420(rgb, width_, height_, yuv_.data());
-  write_yuv(yuv_.data());
+  rgb_to_yuv420(rgb, width_, height_, next_frame());
+  encode_next();
 }
 
 void VideoEncoder::write_yuv(const std::uint8_t* yuv) {
-  std::size_t done = 0;
-  while (done < yuv_.size()) {
-    const ssize_t n = ::write(pipe_, yuv + done, yuv_.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw std::runtime_error("ffmpeg stopped reading frames" + log_tail());
-    done += std::size_t(n);
-  }
+  std::memcpy(next_frame(), yuv, yuv420_bytes(width_, height_));
+  encode_next();
 }
 
-int VideoEncoder::stop() {
-  if (pipe_ >= 0) ::close(pipe_);
-  pipe_ = -1;
-  int status = 0;
-  while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-  }
-  pid_ = -1;
-  return status;
+const std::uint8_t* VideoEncoder::yuv() const {
+  return codec_ && codec_->last ? codec_->last->data : nullptr;
 }
 
 void VideoEncoder::finish() {
-  const int status = stop();
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
-    std::filesystem::remove(log_);
-    return;
+  Codec& c = *codec_;
+  int status = c.av.send_frame(c.context, nullptr);  // the end: x264 gives what it held back
+  if (status < 0) c.fail("the H.264 encoder failed", status);
+  if (!c.write_packets())
+    throw std::runtime_error("the H.264 encoder did not finish " + output_.string());
+  if ((status = c.av.write_trailer(c.format)) < 0)
+    c.fail("cannot write " + output_.string(), status);
+  status = c.av.io_closep(&c.format->pb);
+  if (status < 0) {  // closed anyway: the file goes here
+    const std::string why = reason(c.av, status);
+    codec_.reset();
+    std::error_code ignored;
+    std::filesystem::remove(output_, ignored);
+    throw std::runtime_error("cannot write " + output_.string() + ": " + why);
   }
-  const std::string messages = log_tail();
-  std::error_code ignored;
-  std::filesystem::remove(output_, ignored);
-  std::filesystem::remove(log_, ignored);
-  throw std::runtime_error("ffmpeg failed (wait status " + std::to_string(status) + ")" + messages);
-}
-
-std::string VideoEncoder::log_tail() const {
-  std::ifstream in(log_);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (text.size() > 2000) text = "..." + text.substr(text.size() - 2000);
-  return text.empty() ? std::string() : ":\n" + text;
+  codec_.reset();
 }
 
 }  // namespace elbowsim

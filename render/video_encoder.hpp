@@ -1,63 +1,63 @@
-// Video through the `ffmpeg` program: frames are converted to YUV 4:2:0
-// (BT.709, limited range: render/yuv.hpp) and piped raw to its stdin; it
-// writes H.264 (libx264), yuv420p, tagged BT.709, in an .mp4 with +faststart.
+// Video in-process with FFmpeg's libraries (render/video_library.hpp):
+// frames converted to YUV 4:2:0 (BT.709, limited range: render/yuv.hpp),
+// encoded H.264 by libx264 (preset veryfast, subme 1, crf 20, one thread, so
+// the same bytes on every machine; or lossless), tagged BT.709, into an .mp4
+// with its index first (+faststart), as the ffmpeg command below would.
 #pragma once
-
-#include <sys/types.h>
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
-#include <vector>
 
 namespace elbowsim {
 
-// The first executable file named `program` in the PATH directories; empty if none.
-std::filesystem::path find_on_path(const std::string& program);
+// "" when videos can be made here, else why not (FFmpeg's libraries could
+// not be loaded, or have no libx264): the caller writes frames instead.
+std::string video_unavailable();
 
-// The arguments ffmpeg gets (after the program name) to encode raw YUV 4:2:0
-// frames from stdin into `output`.
-std::vector<std::string> ffmpeg_arguments(const std::filesystem::path& output, int width,
-                                          int height, double fps);
-
-// The command that turns PNG frames frame_00001.png ... into the same video,
-// for when ffmpeg was not available during the render.
+// The ffmpeg command that turns PNG frames frame_00001.png ... into the same
+// video, for when no video could be made during the render.
 std::string frames_to_video_command(const std::filesystem::path& frames,
                                     const std::filesystem::path& video, double fps);
 
 class VideoEncoder {
  public:
-  // Starts `ffmpeg` (a path, e.g. from find_on_path) writing `output`
-  // (width, height even). ffmpeg's messages go to <output>.log, removed when
-  // the video is finished. Throws std::runtime_error if it cannot start.
-  VideoEncoder(const std::filesystem::path& ffmpeg, const std::filesystem::path& output, int width,
-               int height, double fps);
-  // Without finish(): stops ffmpeg and removes what it wrote.
+  // Opens `output` for a width x height video (both even) at `fps` frames
+  // per second; `lossless`: x264 at quantiser 0, whose frames decode to
+  // exactly the YUV given (High 4:4:4 Predictive profile: for archives and
+  // checks; browsers may not play it). Throws std::runtime_error with the
+  // reason if the libraries are missing or the file cannot be opened.
+  VideoEncoder(const std::filesystem::path& output, int width, int height, double fps,
+               bool lossless = false);
+  // Without finish(): closes and removes what it wrote.
   ~VideoEncoder();
   VideoEncoder(const VideoEncoder&) = delete;
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
   // One frame: width * height * 3 bytes, RGB, rows top-down (converted to
-  // YUV in the calling thread). Throws if ffmpeg has stopped (its last
-  // messages in what()).
+  // YUV and encoded in the calling thread). Throws if encoding or writing
+  // fails (the reason in what()).
   void write(const std::uint8_t* rgb);
   // One frame already in YUV 4:2:0 (yuv420_bytes(width, height) bytes, as rgb_to_yuv420 gives).
   void write_yuv(const std::uint8_t* yuv);
-  // The last frame write() converted (its planes), for a side-by-side to reuse.
-  const std::uint8_t* yuv() const { return yuv_.data(); }
-  // Closes the pipe and waits for ffmpeg; throws with its messages if it failed.
+  // The last frame write() converted (its planes), for a side-by-side to
+  // reuse; valid until the next write.
+  const std::uint8_t* yuv() const;
+  // Encodes the frames still held back, writes the index; throws with the
+  // reason if that fails (the destructor then removes the file).
   void finish();
 
  private:
-  std::string log_tail() const;
-  int stop();  // closes the pipe, reaps ffmpeg, returns its wait status
+  struct Codec;  // the libraries' state (video_encoder.cpp)
+  void open(double fps, bool lossless);
+  void discard();              // closes without finishing; removes the file if it was opened
+  std::uint8_t* next_frame();  // the buffer the next frame's YUV goes into
+  void encode_next();          // encodes it and writes what comes out
 
-  std::filesystem::path output_, log_;
+  std::filesystem::path output_;
   int width_, height_;
-  std::vector<std::uint8_t> yuv_;  // one frame, as piped
-  int pipe_ = -1;  // write end, ffmpeg's stdin
-  pid_t pid_ = -1;
-  void (*old_sigpipe_)(int) = nullptr;
+  std::unique_ptr<Codec> codec_;
 };
 
 }  // namespace elbowsim

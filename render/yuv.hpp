@@ -1,6 +1,6 @@
-// RGB frames -> planar YUV 4:2:0 (what ffmpeg's H.264 encoder takes), in BT.709
+// RGB frames -> planar YUV 4:2:0 (what the H.264 encoder takes), in BT.709
 // with limited ("TV") range, the matrix HD video players assume. Done here,
-// not by ffmpeg's swscale, so that half the bytes go through the pipe and the
+// not by FFmpeg's swscale, so that it is done once (a side-by-side reuses it) and the
 // video's colour matrix is the one its header names.
 #pragma once
 

@@ -43,4 +43,18 @@ code=$?
 grep -q "No space left on device" <<< "$message" || fail "report: the message does not say why: $message"
 leftovers=$(find "$disk" -name '*.tmp')
 [ -z "$leftovers" ] || fail "report: partial plots left: $leftovers"
+# 4. A video that does not fit (the disk filled up after the run): exit 1
+# with the reason, no video.mp4, no temporary video. On an emptied disk.
+rm -rf "${disk:?}"/*
+"$binary" run "$scene" --out "$disk/video" --no-render --no-report > /dev/null 2>&1 ||
+  fail "the run for the video did not fit"
+dd if=/dev/zero of="$disk/filler" bs=4k > /dev/null 2>&1
+message=$("$binary" render "$disk/video" 2>&1)
+code=$?
+[ "$code" -eq 1 ] || fail "video: exit $code, expected 1: $message"
+grep -q "No space left on device" <<< "$message" || fail "video: the message does not say why: $message"
+[ ! -e "$disk/video/video.mp4" ] || fail "video: a video.mp4 was left"
+leftovers=$(find "$disk" -name '*.tmp*')
+[ -z "$leftovers" ] || fail "video: temporary files left: $leftovers"
+rm -f "$disk/filler"
 echo "full_disk_check: exit 1 with \"No space left on device\", nothing new left behind, the earlier run intact"

@@ -118,8 +118,8 @@ TEST_CASE("render gl: two runs side by side, one panel each") {
 }
 
 TEST_CASE("render video: run writes an H.264 yuv420p mp4 of duration x fps frames") {
-  const fs::path ffprobe = find_on_path("ffprobe");
-  REQUIRE_MESSAGE(!ffprobe.empty(), "ffprobe (package ffmpeg) is needed on PATH");
+  REQUIRE_MESSAGE(shell("command -v ffprobe").exit_code == 0,
+                  "ffprobe (package ffmpeg) is needed on PATH");
   const fs::path dir = scratch("render", "video");
   const Outcome run = cli(short_run(dir, "--set output.video=true"));
   INFO(run.output);
@@ -129,10 +129,11 @@ TEST_CASE("render video: run writes an H.264 yuv420p mp4 of duration x fps frame
   CHECK_FALSE(fs::exists(dir / "frames"));
   for (const auto& entry : fs::directory_iterator(dir))
     CHECK(entry.path().filename().string().find("tmp") == std::string::npos);
-  const Outcome probe = shell(ffprobe.string() +
-                              " -v error -select_streams v:0 -count_frames -show_entries "
-                              "stream=codec_name,pix_fmt,width,height,nb_read_frames -of csv=p=0 " +
-                              (dir / "video.mp4").string());
+  const Outcome probe = shell(
+      "ffprobe"
+      " -v error -select_streams v:0 -count_frames -show_entries "
+      "stream=codec_name,pix_fmt,width,height,nb_read_frames -of csv=p=0 " +
+      (dir / "video.mp4").string());
   REQUIRE(probe.exit_code == 0);
   // 0.5 s x 20 fps: frames at 0, 0.05, ..., 0.5 s.
   CHECK(probe.output == "h264,160,120,yuv420p,11\n");
@@ -141,7 +142,7 @@ TEST_CASE("render video: run writes an H.264 yuv420p mp4 of duration x fps frame
     const Outcome again = cli("render " + dir.string() + " --size 96x64 --fps 10 --camera top");
     INFO(again.output);
     REQUIRE(again.exit_code == 0);
-    const Outcome reprobe = shell(ffprobe.string() +
+    const Outcome reprobe = shell(std::string("ffprobe") +
                                   " -v error -select_streams v:0 -count_frames -show_entries "
                                   "stream=codec_name,pix_fmt,width,height,nb_read_frames -of "
                                   "csv=p=0 " +
@@ -149,9 +150,10 @@ TEST_CASE("render video: run writes an H.264 yuv420p mp4 of duration x fps frame
     CHECK(reprobe.output == "h264,96,64,yuv420p,6\n");
   }
   SUBCASE("render --camera with a pose and a field of view, --follow hand") {
-    const Outcome close = cli("render " + dir.string() +
-                              " --size 96x64 --fps 10 --camera eye=0.2,-0.6,0.1,target=0.2,0,0,fov=15"
-                              " --follow hand");
+    const Outcome close =
+        cli("render " + dir.string() +
+            " --size 96x64 --fps 10 --camera eye=0.2,-0.6,0.1,target=0.2,0,0,fov=15"
+            " --follow hand");
     INFO(close.output);
     REQUIRE(close.exit_code == 0);
     CHECK(close.output.find("video: " + (dir / "video.mp4").string()) != std::string::npos);
@@ -185,14 +187,24 @@ TEST_CASE("render frames: output.frames writes numbered PNGs; --no-render writes
   CHECK_FALSE(fs::exists(none / "frames"));
 }
 
+// Whether `elbowsim ARGUMENTS` loads `library`: the dynamic loader names
+// every library it loads under LD_DEBUG=libs.
+bool loads(const std::string& arguments, const std::string& library) {
+  const Outcome out = shell("LD_DEBUG=libs " + std::string(ELBOWSIM_BINARY) + " " + arguments);
+  INFO(arguments, "\n", out.output.substr(0, 2000));
+  REQUIRE(out.exit_code == 0);
+  return out.output.find(library) != std::string::npos;
+}
+
+TEST_CASE("FFmpeg's libraries are loaded only by a render that makes a video") {
+  CHECK_FALSE(loads("--version", "libavformat"));
+  const fs::path dir = scratch("render", "lazy_libav");
+  CHECK_FALSE(loads(short_run(dir, "--set output.frames=true --no-report"), "libavformat"));
+  CHECK(loads(short_run(dir, "--set output.video=true --no-report"), "libavformat"));
+}
+
 TEST_CASE("OSMesa (and the LLVM it loads) is loaded only by a run that renders") {
-  // The dynamic loader names every library it loads under LD_DEBUG=libs.
-  auto loads_osmesa = [](const std::string& arguments) {
-    const Outcome out = shell("LD_DEBUG=libs " + std::string(ELBOWSIM_BINARY) + " " + arguments);
-    INFO(arguments, "\n", out.output.substr(0, 2000));
-    REQUIRE(out.exit_code == 0);
-    return out.output.find("libOSMesa") != std::string::npos;
-  };
+  auto loads_osmesa = [](const std::string& arguments) { return loads(arguments, "libOSMesa"); };
   CHECK_FALSE(loads_osmesa("--version"));
   CHECK_FALSE(loads_osmesa("validate " + kElbowRest));
   const fs::path dir = scratch("render", "lazy_osmesa");
@@ -200,16 +212,20 @@ TEST_CASE("OSMesa (and the LLVM it loads) is loaded only by a run that renders")
   CHECK(loads_osmesa(short_run(dir, "--set output.frames=true --no-report")));  // it does render
 }
 
-TEST_CASE("render without ffmpeg on PATH: PNG frames and the command that makes the video") {
-  const fs::path dir = scratch("render", "no_ffmpeg");
+TEST_CASE("render without FFmpeg's libraries: PNG frames and the command that makes the video") {
+  const fs::path dir = scratch("render", "no_libav");
   REQUIRE(cli(short_run(dir, "")).exit_code == 0);
-  const fs::path empty = scratch("render", "empty_path");
-  const Outcome out = shell("PATH=" + empty.string() + " " + ELBOWSIM_BINARY + " render " +
-                            dir.string() + " --fps 10");
+  const fs::path missing = scratch("render", "no_libav_here") / "libavformat.so.59";
+  const Outcome out = shell("ELBOWSIM_LIBAVFORMAT=" + missing.string() + " " + ELBOWSIM_BINARY +
+                            " render " + dir.string() + " --fps 10");
   INFO(out.output);
   CHECK(out.exit_code == 0);
-  CHECK(out.output.find("ffmpeg was not found on PATH") != std::string::npos);
+  CHECK(out.output.find("warning: no video was made: cannot load FFmpeg's " + missing.string()) !=
+        std::string::npos);
+  CHECK(out.output.find("apt-get install libavformat") != std::string::npos);
   CHECK(out.output.find("wrote 6 PNG frames to " + (dir / "frames").string()) != std::string::npos);
+  CHECK(out.output.find("`elbowsim render " + dir.string() + "` makes the video") !=
+        std::string::npos);
   CHECK(out.output.find("ffmpeg -framerate 10 -i '" + (dir / "frames" / "frame_%05d.png").string() +
                         "' -c:v libx264") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "video.mp4"));
@@ -231,7 +247,8 @@ TEST_CASE("render: a bad run folder is exit 2 with a clear message, and nothing 
   std::ofstream(dir / "trajectory.csv") << "time [s],q0 [rad]\n0,0\n";
   const Outcome short_csv = cli("render " + dir.string());
   CHECK(short_csv.exit_code == 2);
-  CHECK(short_csv.output.find("trajectory.csv:1: trajectory column 3 is missing: expected 'qd0 [rad/s]'") !=
+  CHECK(short_csv.output.find(
+            "trajectory.csv:1: trajectory column 3 is missing: expected 'qd0 [rad/s]'") !=
         std::string::npos);
   int files = 0;
   for (const auto& entry : fs::directory_iterator(dir)) (void)entry, ++files;
@@ -255,22 +272,23 @@ TEST_CASE("render: a bad run folder is exit 2 with a clear message, and nothing 
   CHECK_FALSE(fs::exists(ok / "video.mp4"));
 }
 
-TEST_CASE("render with an ffmpeg that fails: exit 1 with its message, nothing left behind") {
-  const fs::path dir = scratch("render", "bad_ffmpeg");
+TEST_CASE(
+    "render with a video that cannot be written: exit 1 with the reason, nothing left behind") {
+  const fs::path dir = scratch("render", "unwritable_video");
   REQUIRE(cli(short_run(dir, "")).exit_code == 0);
   auto listing = [&] {
     std::set<std::string> names;
     for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename());
     return names;
   };
+  // The video's temporary file cannot be made: an (empty) folder holds its
+  // name, as a stale temporary of ours; it goes with the failed render.
   const std::set<std::string> before = listing();
-  const fs::path bin = scratch("render", "fake_ffmpeg");
-  std::ofstream(bin / "ffmpeg") << "#!/bin/sh\necho 'Unknown encoder (fake ffmpeg)' >&2\nexit 1\n";
-  fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
-  const Outcome out =
-      shell("PATH=" + bin.string() + " " + ELBOWSIM_BINARY + " render " + dir.string());
+  fs::create_directory(dir / "video.tmp.mp4");
+  const Outcome out = cli("render " + dir.string());
   INFO(out.output);
   CHECK(out.exit_code == 1);
-  CHECK(out.output.find("Unknown encoder (fake ffmpeg)") != std::string::npos);
+  CHECK(out.output.find("cannot write " + (dir / "video.tmp.mp4").string() + ": Is a directory") !=
+        std::string::npos);
   CHECK(listing() == before);
 }

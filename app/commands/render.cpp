@@ -31,14 +31,14 @@ void print_stats(const RenderStats& s, const fs::path& folder) {
                 s.height, s.fps, antialiasing(s).c_str(), s.wall_seconds);
   if (s.video_written)
     std::cout << "video: " << (folder / "video.mp4").string() << " (" << what << ")\n";
-  if (s.frames_written && !s.ffmpeg_missing)
+  if (s.frames_written && s.video_unavailable.empty())
     std::cout << "frames: " << (folder / "frames").string() << "/ (" << what << ")\n";
-  if (s.ffmpeg_missing)
-    std::cerr << "warning: ffmpeg was not found on PATH, so no video was made; wrote " << s.frames
+  if (!s.video_unavailable.empty())
+    std::cerr << "warning: no video was made: " << s.video_unavailable << "\nwrote " << s.frames
               << " PNG frames to " << (folder / "frames").string()
-              << "/ instead. Install ffmpeg (Debian: apt-get install ffmpeg) and make the video "
-                 "with:\n  "
-              << s.video_command << '\n';
+              << "/ instead; with the library installed, `elbowsim render " << folder.string()
+              << "` makes the video, or the ffmpeg program from the frames:\n  " << s.video_command
+              << '\n';
 }
 
 // --camera, --follow, --size, --fps over the scenario's render settings; ""
@@ -137,7 +137,9 @@ std::vector<int> render_runs(const std::vector<RunToRender>& runs,
       codes[k] = exit_bad_input;
       continue;
     }
-    jobs.push_back({&*sources[k], s.render, {runs[k].folder, s.output.video, s.output.frames}});
+    jobs.push_back({&*sources[k],
+                    s.render,
+                    {runs[k].folder, s.output.video, s.output.frames, s.output.lossless_video}});
     job_run.push_back(k);
   }
   if (jobs.empty()) return codes;
@@ -149,7 +151,8 @@ std::vector<int> render_runs(const std::vector<RunToRender>& runs,
     } else {
       fs::create_directories(*side_by_side);
       const Scenario& first = *runs.front().scenario;
-      side = RenderRequest{*side_by_side, first.output.video, first.output.frames};
+      side = RenderRequest{*side_by_side, first.output.video, first.output.frames,
+                           first.output.lossless_video};
     }
   }
   const int cores = available_cores();
@@ -195,7 +198,8 @@ int render_command(const RenderArguments& args) {
   // A scenario that asked for neither gets a video: that is what render is for.
   const bool video = scenario.output.video || !scenario.output.frames;
   const int code =
-      render_with(scenario, recording, folder, settings, {folder, video, scenario.output.frames});
+      render_with(scenario, recording, folder, settings,
+                  {folder, video, scenario.output.frames, scenario.output.lossless_video});
   if (code != exit_ok) return code;
   try {
     record_rendered(folder, video, scenario.output.frames);  // the report may now embed it

@@ -27,6 +27,7 @@ struct OutputSettings {
   int every = 1;                                // record every N-th step (>= 1)
   bool video = false;                           // render video.mp4 (render: section)
   bool frames = false;                          // render frames/frame_00001.png ...
+  bool lossless_video = false;                  // video.mp4 lossless (x264 quantiser 0)
 };
 
 // uncertainty: the plant parameters a Monte Carlo study draws (elbowsim
@@ -38,12 +39,12 @@ struct UncertainParameter {
     normal,   // nominal x (1 + spread z), z standard normal truncated at +-3
     range,    // uniform in [low, high], absolute (a payload, a table height)
   };
-  std::string key;     // concrete key path, e.g. robot.planar.links[2].mass
-  std::string given;   // as written in the file (may hold [*])
+  std::string key;    // concrete key path, e.g. robot.planar.links[2].mass
+  std::string given;  // as written in the file (may hold [*])
   Law law = Law::uniform;
-  double spread = 0;   // uniform, normal: relative
+  double spread = 0;         // uniform, normal: relative
   double low = 0, high = 0;  // range
-  double nominal = 0;  // its value in this scenario (NaN when absent: range only)
+  double nominal = 0;        // its value in this scenario (NaN when absent: range only)
 };
 struct Uncertainty {
   std::uint64_t seed = 1;  // default of --seed
@@ -53,20 +54,20 @@ struct Uncertainty {
 // The robot's chain as its source names it (robot.urdf), for `validate` and
 // messages; empty names for robot.planar and robot.joints.
 struct ChainNames {
-  std::string urdf;                  // the URDF as named in the scenario, "" if none
-  std::string base_link, tip_link;   // the chain's ends (the hand is on the tip link)
-  std::vector<std::string> joints;   // [dof] joint names
-  std::vector<std::string> links;    // [dof] the link each joint moves
+  std::string urdf;                              // the URDF as named in the scenario, "" if none
+  std::string base_link, tip_link;               // the chain's ends (the hand is on the tip link)
+  std::vector<std::string> joints;               // [dof] joint names
+  std::vector<std::string> links;                // [dof] the link each joint moves
   std::vector<std::vector<std::string>> merged;  // [dof] fixed links merged into it
-  Eigen::VectorXd q_min, q_max;      // [dof] URDF <limit>s [rad] (+-inf: continuous)
-  std::vector<std::string> notes;    // what the import left out (joint friction)
+  Eigen::VectorXd q_min, q_max;                  // [dof] URDF <limit>s [rad] (+-inf: continuous)
+  std::vector<std::string> notes;                // what the import left out (joint friction)
 };
 
 struct Scenario {
   std::string file;  // path it was loaded from
   ChainNames chain;  // robot.urdf's names (empty for the YAML forms)
   std::string description;
-  Model model;  // finalized (elbowsim::finalize called); model.initial from `initial:`
+  Model model;            // finalized (elbowsim::finalize called); model.initial from `initial:`
   Experiment experiment;  // task: and controller: (the plant never reads them)
   // controller.model as given ("key.path=value" each): where the controller's
   // model (experiment.controller_model) differs from the plant. Empty: none.

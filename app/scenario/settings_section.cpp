@@ -28,8 +28,8 @@ void read_error_control(const Value& simulation, Options& out) {
     Value v = simulation.get(key);
     if (v.present() && !is_adaptive(out.integrator))
       v.fail(std::string("applies to the adaptive integrators only (dopri5, ros34pw2); ") +
-             to_string(out.integrator) + " takes a fixed simulation.step (to drop the key: --set simulation." +
-             key + "=null)");
+             to_string(out.integrator) +
+             " takes a fixed simulation.step (to drop the key: --set simulation." + key + "=null)");
   }
   out.rtol = value_or(simulation.get("rtol"), out.rtol, positive);
   out.atol = value_or(simulation.get("atol"), out.atol, positive);
@@ -124,9 +124,9 @@ Options read_simulation(const Value& simulation, const Value& task) {
   }
   Value integrator = simulation.get("integrator");
   if (integrator.present())
-    out.integrator = choose(integrator, {IntegratorKind::euler, IntegratorKind::semi_implicit_euler,
-                                         IntegratorKind::rk4, IntegratorKind::dopri5,
-                                         IntegratorKind::ros34pw2});
+    out.integrator =
+        choose(integrator, {IntegratorKind::euler, IntegratorKind::semi_implicit_euler,
+                            IntegratorKind::rk4, IntegratorKind::dopri5, IntegratorKind::ros34pw2});
   read_error_control(simulation, out);
   Value dynamics = simulation.get("dynamics");
   if (dynamics.present())
@@ -151,7 +151,8 @@ OutputSettings read_output(const Value& output, const std::string& name) {
   OutputSettings out;
   out.folder = "runs/" + name;
   if (!output.present()) return out;
-  output.allow_keys({"folder", "trajectory", "summary", "every", "video", "frames"});
+  output.allow_keys(
+      {"folder", "trajectory", "summary", "every", "video", "frames", "lossless_video"});
   Value folder = output.get("folder");
   out.folder = value_or(folder, out.folder, text);
   if (out.folder.empty()) folder.fail("must not be empty");
@@ -165,6 +166,7 @@ OutputSettings read_output(const Value& output, const std::string& name) {
   out.every = static_cast<int>(n);
   out.video = value_or(output.get("video"), out.video, boolean);
   out.frames = value_or(output.get("frames"), out.frames, boolean);
+  out.lossless_video = value_or(output.get("lossless_video"), out.lossless_video, boolean);
   return out;
 }
 
@@ -197,9 +199,9 @@ std::vector<JointFriction> read_joint_friction(const Value& section, const Value
   const Eigen::VectorXd speed = per_joint_values("stribeck_velocity", 0.01, true);
   for (int j = 0; j < dof; ++j) {
     if (breakaway[j] < coulomb[j])
-      section.get("breakaway").fail("must be >= coulomb at every joint (joint " + std::to_string(j) +
-                                    ": " + format_number(breakaway[j]) + " < " +
-                                    format_number(coulomb[j]) + ")");
+      section.get("breakaway")
+          .fail("must be >= coulomb at every joint (joint " + std::to_string(j) + ": " +
+                format_number(breakaway[j]) + " < " + format_number(coulomb[j]) + ")");
     out.push_back({coulomb[j], breakaway[j], speed[j]});
   }
   return out;
