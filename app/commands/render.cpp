@@ -25,7 +25,12 @@ std::string antialiasing(const RenderStats& s) {
   return s.fxaa ? "FXAA" : "no anti-aliasing";
 }
 
-void print_stats(const RenderStats& s, const fs::path& folder) {
+std::string rerun_command(const fs::path& run_folder) {
+  return "`elbowsim render " + run_folder.string() + "`";
+}
+
+// `rerun`: how to make the video again once the library is there.
+void print_stats(const RenderStats& s, const fs::path& folder, const std::string& rerun) {
   char what[160];
   std::snprintf(what, sizeof what, "%d frames, %dx%d, %g fps, %s, %.1f s", s.frames, s.width,
                 s.height, s.fps, antialiasing(s).c_str(), s.wall_seconds);
@@ -36,8 +41,8 @@ void print_stats(const RenderStats& s, const fs::path& folder) {
   if (!s.video_unavailable.empty())
     std::cerr << "warning: no video was made: " << s.video_unavailable << "\nwrote " << s.frames
               << " PNG frames to " << (folder / "frames").string()
-              << "/ instead; with the library installed, `elbowsim render " << folder.string()
-              << "` makes the video, or the ffmpeg program from the frames:\n  " << s.video_command
+              << "/ instead; with the library installed, " << rerun
+              << " makes the video, or the ffmpeg program from the frames:\n  " << s.video_command
               << '\n';
 }
 
@@ -109,7 +114,7 @@ int render_with(const Scenario& scenario, const Recording& recording, const fs::
     return exit_bad_input;
   }
   try {
-    print_stats(render_run(*source, settings, request), folder);
+    print_stats(render_run(*source, settings, request), folder, rerun_command(folder));
   } catch (const std::exception& e) {
     std::cerr << "error: rendering failed: " << e.what() << '\n';
     return exit_io;
@@ -168,7 +173,7 @@ std::vector<int> render_runs(const std::vector<RunToRender>& runs,
       std::cerr << "error: rendering " << folder.string() << " failed: " << stats.error << '\n';
       codes[job_run[j]] = exit_io;
     } else {
-      print_stats(stats, folder);
+      print_stats(stats, folder, rerun_command(folder));
     }
   }
   if (results.side_by_side) {
@@ -176,7 +181,7 @@ std::vector<int> render_runs(const std::vector<RunToRender>& runs,
       std::cerr << "error: side-by-side video: " << results.side_by_side->error << '\n';
       side_by_side_code = exit_io;
     } else {
-      print_stats(*results.side_by_side, *side_by_side);
+      print_stats(*results.side_by_side, *side_by_side, "`elbowsim run` of the scenario again");
     }
   }
   return codes;
