@@ -7,6 +7,7 @@
 
 #include "report/html.hpp"
 #include "report/plot/plot.hpp"
+#include "report/plots_aside.hpp"
 
 namespace elbowsim::report {
 
@@ -75,7 +76,8 @@ plot::LinePlot measure_plot(const Json& study, const Measure& m) {
     methods.back().error.push_back(value_of(p, m));
   }
   plot::LinePlot plot = plot::work_precision_plot(
-      methods, std::string(m.label) + " against CPU time — " + variant_name(study), m.label, m.unit);
+      methods, std::string(m.label) + " against CPU time — " + variant_name(study), m.label,
+      m.unit);
   const Json& uncertainty = study["reference"].value("uncertainty", Json::object());
   if (m.against_reference && uncertainty.contains(m.key) && uncertainty[m.key].is_number() &&
       uncertainty[m.key].get<double>() > 0) {
@@ -116,14 +118,17 @@ std::string quoted(std::string text) {
 }
 
 void csv_row(std::ostringstream& out, const std::string& variant, const std::string& kind,
-             const std::string& method, const std::string& setting, const Json& value, const Json& p) {
+             const std::string& method, const std::string& setting, const Json& value,
+             const Json& p) {
   out << variant << "," << kind << "," << method << "," << setting << "," << cell(value) << ","
       << cell(p["completed"]) << "," << cell(p["valid"]);
   for (const char* key : {"cpu_seconds", "repeats", "steps", "rejected_steps", "evaluations",
                           "jacobians", "factorisations"})
     out << "," << cell(csv_cell_source(p, key));
   for (const Measure& m : kMeasures)
-    out << "," << cell(m.against_reference ? csv_cell_source(p["errors"], m.key) : csv_cell_source(p, m.key));
+    out << ","
+        << cell(m.against_reference ? csv_cell_source(p["errors"], m.key)
+                                    : csv_cell_source(p, m.key));
   out << "," << quoted(p.value("failure", "")) << "\n";
 }
 
@@ -150,15 +155,17 @@ std::string alternatives_table(const Json& study) {
   if (study["alternatives"].empty()) return "";
   const Json& s = study["scene_setting"];
   std::string out = "<h3>Same setting, other algorithms</h3>\n<p>At the scene's own " +
-                    html::escape(s.value("integrator", "")) + " setting: the same equations "
+                    html::escape(s.value("integrator", "")) +
+                    " setting: the same equations "
                     "solved another way cost this much (errors against the same reference).</p>\n"
                     "<table class=\"alternatives\"><thead><tr><th>key</th><th>value</th>"
                     "<th>CPU [s]</th><th>valid</th><th>hand max [m]</th><th>event time [s]</th>"
                     "</tr></thead><tbody>\n";
   for (const Json& a : study["alternatives"])
     out += "<tr><td>" + html::escape(a.value("key", "")) + "</td><td>" +
-           html::escape(a.value("value", "")) + (a.value("scene_default", false) ? " (scene)" : "") +
-           "</td><td>" + sci(a.value("cpu_seconds", 0.0)) + "</td><td>" +
+           html::escape(a.value("value", "")) +
+           (a.value("scene_default", false) ? " (scene)" : "") + "</td><td>" +
+           sci(a.value("cpu_seconds", 0.0)) + "</td><td>" +
            (a.value("valid", false) ? "yes" : "<b>no</b>") + "</td><td>" +
            sci(value_of(a, kMeasures[0])) + "</td><td>" + sci(value_of(a, kMeasures[5])) +
            "</td></tr>\n";
@@ -210,13 +217,15 @@ Json work_precision_verdict(const Json& doc, const std::vector<double>& targets)
       row["value"] = (*best)["value"];
       row["cpu_seconds"] = (*best)["cpu_seconds"];
       row["hand_max"] = (*best)["errors"]["hand_max"];
-      std::string text = "hand error " + sci(target) + " m: cheapest " + setting_text(*best) + " (" +
-                         sci((*best).value("cpu_seconds", 0.0)) + " s CPU, error " +
+      std::string text = "hand error " + sci(target) + " m: cheapest " + setting_text(*best) +
+                         " (" + sci((*best).value("cpu_seconds", 0.0)) + " s CPU, error " +
                          sci(value_of(*best, kMeasures[0])) + " m)";
       if (next) {
         const double ratio = (*next).value("cpu_seconds", 0.0) / (*best).value("cpu_seconds", 1.0);
-        row["next"] = {{"method", (*next)["method"]}, {"setting", (*next)["setting"]},
-                       {"value", (*next)["value"]}, {"cpu_seconds", (*next)["cpu_seconds"]}};
+        row["next"] = {{"method", (*next)["method"]},
+                       {"setting", (*next)["setting"]},
+                       {"value", (*next)["value"]},
+                       {"cpu_seconds", (*next)["cpu_seconds"]}};
         row["ratio"] = ratio;
         text += "; next best " + setting_text(*next) + " costs " + sci(ratio, 2) + "x";
       } else {
@@ -234,7 +243,8 @@ Json work_precision_verdict(const Json& doc, const std::vector<double>& targets)
 
 std::string work_precision_csv(const Json& doc) {
   std::ostringstream out;
-  out << "variant,kind,method,setting,value,completed,valid,cpu_seconds,repeats,steps,rejected_steps,"
+  out << "variant,kind,method,setting,value,completed,valid,cpu_seconds,repeats,steps,rejected_"
+         "steps,"
          "evaluations,jacobians,factorisations";
   for (const Measure& m : kMeasures) out << "," << m.key << " [" << m.unit << "]";
   out << ",failure\n";
@@ -250,6 +260,7 @@ std::string work_precision_csv(const Json& doc) {
 }
 
 void write_accuracy_report(const Json& doc, const std::filesystem::path& folder) {
+  PlotsAside aside(folder);
   std::filesystem::create_directories(folder / "plots");
   const std::string name = doc.value("scenario", "");
   std::string page = html::page_begin("Accuracy: " + name);
@@ -259,12 +270,17 @@ void write_accuracy_report(const Json& doc, const std::filesystem::path& folder)
     for (const Json& row : v["targets"])
       verdict.push_back((v.value("variant", "").empty() ? "" : v.value("variant", "") + ": ") +
                         row.value("text", ""));
-  page += html::notice("verdict", "Cheapest setting per hand-error target (measured)", verdict, "verdict");
-  page += "<p>Each point is one run of the scenario: CPU time of the integration (the controller's plan, the same for every run, left out; median of " +
-          std::string("the repeats in work_precision.csv) against its error, compared row by row with "
-                      "a reference run. Invalid runs (diverged, penetrating, energy account off) "
-                      "are drawn when they completed (their error is measured) but never chosen by the verdict; runs that stopped early are left out. Fixed-step methods: "
-                      "steps step/m; adaptive methods: rtol 10<sup>-k</sup>, atol = rtol/1000.</p>\n");
+  page += html::notice("verdict", "Cheapest setting per hand-error target (measured)", verdict,
+                       "verdict");
+  page +=
+      "<p>Each point is one run of the scenario: CPU time of the integration (the controller's "
+      "plan, the same for every run, left out; median of " +
+      std::string(
+          "the repeats in work_precision.csv) against its error, compared row by row with "
+          "a reference run. Invalid runs (diverged, penetrating, energy account off) "
+          "are drawn when they completed (their error is measured) but never chosen by the "
+          "verdict; runs that stopped early are left out. Fixed-step methods: "
+          "steps step/m; adaptive methods: rtol 10<sup>-k</sup>, atol = rtol/1000.</p>\n");
   for (const Json& study : doc["studies"]) {
     const Json& ref = study["reference"];
     const Json& u = ref.value("uncertainty", Json::object());
@@ -290,16 +306,19 @@ void write_accuracy_report(const Json& doc, const std::filesystem::path& folder)
       if (!any) continue;  // e.g. no contact: no force error
       const std::string file = file_stem(study, m);
       plot::write_png(p, folder / file);
-      page += html::figure({file, p.title,
-                            std::string(m.label) + " [" + m.unit + "] against CPU time [s], log-log, "
+      page +=
+          html::figure({file, p.title,
+                        std::string(m.label) + " [" + m.unit +
+                            "] against CPU time [s], log-log, "
                             "one line per method (settings from coarse to fine)" +
-                                (m.against_reference ? "; dashed: what the reference resolves." : "."),
-                            p.width, p.height});
+                            (m.against_reference ? "; dashed: what the reference resolves." : "."),
+                        p.width, p.height});
     }
     page += "<h3>Every point</h3>\n" + points_table(study) + alternatives_table(study);
   }
   page += html::page_end();
   html::write_file(folder / "report.html", page);
+  aside.keep();
 }
 
 }  // namespace elbowsim::report

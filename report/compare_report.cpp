@@ -6,6 +6,7 @@
 
 #include "report/headline.hpp"
 #include "report/html.hpp"
+#include "report/plots_aside.hpp"
 #include "report/quantity.hpp"
 
 namespace elbowsim::report {
@@ -175,8 +176,10 @@ std::string headline_table(const std::vector<RunData>& runs, const Comparison& c
   for (std::size_t r = 0; r < runs.size(); ++r) {
     std::string keys;
     for (const auto& [key, values] : c.differing_keys)
-      keys += (keys.empty() ? "" : "; ") + key + " = " + (values[r].empty() ? "(not set)" : values[r]);
-    t += "<td class=\"keys\">" + html::escape(c.differing_keys.empty() ? "none (same scenario)" : keys) + "</td>";
+      keys +=
+          (keys.empty() ? "" : "; ") + key + " = " + (values[r].empty() ? "(not set)" : values[r]);
+    t += "<td class=\"keys\">" +
+         html::escape(c.differing_keys.empty() ? "none (same scenario)" : keys) + "</td>";
   }
   for (std::size_t r = 1; r < runs.size(); ++r) t += "<td></td>";
   t += "</tr>\n";
@@ -313,9 +316,9 @@ std::pair<fs::path, fs::path> write_comparison_tables(const Comparison& comparis
   return {json, csv};
 }
 
-ComparisonFiles write_comparison_report(const std::vector<RunData>& runs, const fs::path& out,
-                                        const ComparisonTables& tables, bool video,
-                                        const std::vector<std::pair<std::string, std::vector<std::string>>>& differing) {
+ComparisonFiles write_comparison_report(
+    const std::vector<RunData>& runs, const fs::path& out, const ComparisonTables& tables,
+    bool video, const std::vector<std::pair<std::string, std::vector<std::string>>>& differing) {
   fs::create_directories(out);
   ComparisonTables where = tables;
   if (where.folder.empty()) where.folder = out;
@@ -323,9 +326,11 @@ ComparisonFiles write_comparison_report(const std::vector<RunData>& runs, const 
   files.comparison = compare_runs(runs);
   files.comparison.differing_keys = differing;
   std::tie(files.json, files.csv) = write_comparison_tables(files.comparison, where);
+  PlotsAside aside(out);
   files.figures = write_comparison_plots(runs, out);
   files.html = out / "report.html";
   html::write_file(files.html, page(runs, files.comparison, files.figures, out, files.json, video));
+  aside.keep();
   return files;
 }
 

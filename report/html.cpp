@@ -1,7 +1,9 @@
 #include "report/html.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -145,14 +147,24 @@ std::string figure(const Figure& f) {
 
 void write_file(const std::filesystem::path& path, const std::string& text) {
   const std::filesystem::path partial = path.string() + ".tmp";
+  std::error_code error;
   {
     std::ofstream out(partial, std::ios::binary);
     out << text;
-    if (!out.flush()) throw std::runtime_error(path.string() + ": cannot write");
+    out.close();
+    if (!out) {
+      const int why = errno;
+      std::filesystem::remove(partial, error);
+      throw std::runtime_error(path.string() + ": cannot write" +
+                               (why ? std::string(": ") + std::strerror(why) : std::string()));
+    }
   }
-  std::error_code error;
   std::filesystem::rename(partial, path, error);
-  if (error) throw std::runtime_error(path.string() + ": " + error.message());
+  if (error) {
+    std::error_code ignored;
+    std::filesystem::remove(partial, ignored);
+    throw std::runtime_error(path.string() + ": " + error.message());
+  }
 }
 
 nlohmann::ordered_json read_json(const std::filesystem::path& path) {

@@ -8,6 +8,7 @@
 #include "report/html.hpp"
 #include "report/merged_study.hpp"
 #include "report/plot/plot.hpp"
+#include "report/plots_aside.hpp"
 #include "report/statistics.hpp"
 
 namespace elbowsim::report {
@@ -27,7 +28,8 @@ bool numeric_column(const MergedStudy& s, std::size_t j) {
 
 // Which line a point belongs to against column j: its variant and the
 // values of the other columns ("elbow_on, duration=2").
-std::string line_of(const MergedStudy& s, const MergedRow& row, const std::string& variant, std::size_t j) {
+std::string line_of(const MergedStudy& s, const MergedRow& row, const std::string& variant,
+                    std::size_t j) {
   std::string label = variant.empty() ? "run" : variant;
   for (std::size_t k = 0; k < s.columns.size(); ++k)
     if (k != j) label += ", " + s.columns[k] + "=" + row.values[k];
@@ -42,7 +44,8 @@ plot::LinePlot against(const MergedStudy& s, const std::vector<MergedPoint>& poi
   const std::string& path = headline_paths()[h];
   const std::string unit = metric_unit(path);
   plot::LinePlot p;
-  p.title = path.substr(path.find('.') + 1) + " against " + s.columns[j] + (s.draws > 0 ? " (mean over draws)" : "");
+  p.title = path.substr(path.find('.') + 1) + " against " + s.columns[j] +
+            (s.draws > 0 ? " (mean over draws)" : "");
   p.x = plot::linear_axis(s.columns[j], "");
   p.y = plot::log_axis(path.substr(path.find('.') + 1), unit);
   std::vector<std::string> order;
@@ -83,11 +86,14 @@ std::string state_notice(const MergedStudy& s) {
     missing += r.status == "missing";
     if (r.status == "failed")
       problems.push_back(r.folder + (r.variant.empty() ? "" : " " + r.variant) + ": " + r.failure);
-    if (r.status == "missing") problems.push_back(r.folder + (r.variant.empty() ? "" : " " + r.variant) + ": not run yet");
+    if (r.status == "missing")
+      problems.push_back(r.folder + (r.variant.empty() ? "" : " " + r.variant) + ": not run yet");
   }
-  std::string out = "<p id=\"state\">" + std::to_string(s.rows.size()) + " runs: " + std::to_string(done) +
-                    " done, " + std::to_string(failed) + " failed, " + std::to_string(missing) + " missing.</p>\n";
-  if (!problems.empty()) out += html::notice("failure", "Runs that failed or are missing", problems, "failures", 12);
+  std::string out = "<p id=\"state\">" + std::to_string(s.rows.size()) +
+                    " runs: " + std::to_string(done) + " done, " + std::to_string(failed) +
+                    " failed, " + std::to_string(missing) + " missing.</p>\n";
+  if (!problems.empty())
+    out += html::notice("failure", "Runs that failed or are missing", problems, "failures", 12);
   return out;
 }
 
@@ -98,13 +104,16 @@ std::string row_table(const MergedStudy& s, const std::filesystem::path& out) {
   t += "<th>variant</th><th>status</th>";
   for (const std::string& h : headline_paths()) {
     const std::string unit = metric_unit(h);
-    t += "<th>" + html::escape(h.substr(h.find('.') + 1)) + (unit.empty() ? "" : " [" + unit + "]") + "</th>";
+    t += "<th>" + html::escape(h.substr(h.find('.') + 1)) +
+         (unit.empty() ? "" : " [" + unit + "]") + "</th>";
   }
   t += "</tr></thead><tbody>\n";
   for (const MergedRow& r : s.rows) {
     const std::string link = r.run.empty() ? "" : std::filesystem::relative(r.run, out).string();
-    t += "<tr><td>" + (link.empty() ? html::escape(r.folder)
-                                    : "<a href=\"" + html::escape(link) + "/\">" + html::escape(r.folder) + "</a>") +
+    t += "<tr><td>" +
+         (link.empty()
+              ? html::escape(r.folder)
+              : "<a href=\"" + html::escape(link) + "/\">" + html::escape(r.folder) + "</a>") +
          "</td>";
     for (const std::string& v : r.values) t += "<td>" + html::escape(v) + "</td>";
     if (s.draws > 0) t += "<td class=\"num\">" + std::to_string(r.draw) + "</td>";
@@ -121,6 +130,7 @@ std::string row_table(const MergedStudy& s, const std::filesystem::path& out) {
 }  // namespace
 
 std::filesystem::path write_merged_report(const MergedStudy& s, const std::filesystem::path& out) {
+  PlotsAside aside(out);
   std::filesystem::create_directories(out / "plots");
   const std::vector<MergedPoint> points = merged_points(s);
   std::string figures;
@@ -129,14 +139,17 @@ std::filesystem::path write_merged_report(const MergedStudy& s, const std::files
     for (const std::size_t h : {std::size_t(2), std::size_t(0)}) {  // RMS hand error, energy in
       const plot::LinePlot p = against(s, points, h, j);
       std::string column;
-      for (const char c : s.columns[j]) column += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-      const std::string file = "plots/" + headline_paths()[h].substr(8) + "_vs_" + std::to_string(j) + "_" + column + ".png";
+      for (const char c : s.columns[j])
+        column += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+      const std::string file = "plots/" + headline_paths()[h].substr(8) + "_vs_" +
+                               std::to_string(j) + "_" + column + ".png";
       plot::write_png(p, out / file);
-      figures += html::figure({file, p.title,
-                               s.draws > 0 ? "The mean over each point's valid draws, a bar over its 95 % "
-                                             "bootstrap interval; one line per variant and level of the other keys."
-                                           : "One marked line per variant and level of the other keys.",
-                               p.width, p.height});
+      figures += html::figure(
+          {file, p.title,
+           s.draws > 0 ? "The mean over each point's valid draws, a bar over its 95 % "
+                         "bootstrap interval; one line per variant and level of the other keys."
+                       : "One marked line per variant and level of the other keys.",
+           p.width, p.height});
     }
   }
   std::string page = html::page_begin("Study: " + s.name);
@@ -145,14 +158,17 @@ std::filesystem::path write_merged_report(const MergedStudy& s, const std::files
   page += state_notice(s);
   std::string keys;
   for (const std::string& c : s.columns) keys += (keys.empty() ? "" : ", ") + c;
-  page += html::info_table({{"scenario file", s.scenario},
-                            {"swept", keys.empty() ? "—" : keys},
-                            {"draws per point", s.draws > 0 ? std::to_string(s.draws) : "none"},
-                            {"tables", "table.csv (every run)" + std::string(s.draws > 0 ? ", points.csv (means and intervals)" : "")}});
+  page += html::info_table(
+      {{"scenario file", s.scenario},
+       {"swept", keys.empty() ? "—" : keys},
+       {"draws per point", s.draws > 0 ? std::to_string(s.draws) : "none"},
+       {"tables", "table.csv (every run)" +
+                      std::string(s.draws > 0 ? ", points.csv (means and intervals)" : "")}});
   if (!figures.empty()) page += "<h2>Against the swept keys</h2>\n" + figures;
   page += row_table(s, out);
   page += html::page_end();
   html::write_file(out / "report.html", page);
+  aside.keep();
   return out / "report.html";
 }
 

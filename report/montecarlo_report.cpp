@@ -7,6 +7,7 @@
 
 #include "report/html.hpp"
 #include "report/plot/plot.hpp"
+#include "report/plots_aside.hpp"
 
 namespace elbowsim::report {
 
@@ -32,7 +33,8 @@ plot::LinePlot ecdf(const Json& doc, const std::string& metric, const std::strin
   int k = 0;
   for (const auto& [variant, per_metric] : doc["draws"].items()) {
     std::vector<double> v = numbers(per_metric.value(metric, Json::array()));
-    v.erase(std::remove_if(v.begin(), v.end(), [](double y) { return !std::isfinite(y); }), v.end());
+    v.erase(std::remove_if(v.begin(), v.end(), [](double y) { return !std::isfinite(y); }),
+            v.end());
     std::sort(v.begin(), v.end());
     plot::Series s;
     s.label = variant;
@@ -87,9 +89,10 @@ std::string interval(const Json& ci) {
 }
 
 std::string metrics_section(const Json& doc) {
-  std::string out = "<h2>Metrics per variant (valid draws)</h2>\n<table id=\"mc-metrics\"><thead><tr>"
-                    "<th>variant</th><th>metric</th><th>unit</th><th>valid draws</th><th>mean</th>"
-                    "<th>95 % CI of the mean</th><th>median</th></tr></thead><tbody>\n";
+  std::string out =
+      "<h2>Metrics per variant (valid draws)</h2>\n<table id=\"mc-metrics\"><thead><tr>"
+      "<th>variant</th><th>metric</th><th>unit</th><th>valid draws</th><th>mean</th>"
+      "<th>95 % CI of the mean</th><th>median</th></tr></thead><tbody>\n";
   for (const auto& [variant, metrics] : doc["metrics"].items())
     for (const auto& [name, m] : metrics.items())
       out += "<tr><td>" + html::escape(variant) + "</td><td>" + html::escape(name) + "</td><td>" +
@@ -100,9 +103,10 @@ std::string metrics_section(const Json& doc) {
 }
 
 std::string pairs_section(const Json& doc) {
-  std::string out = "<h2>Paired comparison (same draws)</h2>\n<table id=\"mc-pairs\"><thead><tr>"
-                    "<th>A / B</th><th>metric</th><th>pairs</th><th>ratio A/B (geometric mean)</th>"
-                    "<th>95 % CI</th><th>A below B in</th></tr></thead><tbody>\n";
+  std::string out =
+      "<h2>Paired comparison (same draws)</h2>\n<table id=\"mc-pairs\"><thead><tr>"
+      "<th>A / B</th><th>metric</th><th>pairs</th><th>ratio A/B (geometric mean)</th>"
+      "<th>95 % CI</th><th>A below B in</th></tr></thead><tbody>\n";
   for (const Json& p : doc["pairs"])
     for (const char* metric : {"energy_in", "hand_error_rms"}) {
       if (!p.contains(metric)) continue;
@@ -117,10 +121,11 @@ std::string pairs_section(const Json& doc) {
 
 // What was drawn, and how; the controller keeps the nominal values.
 std::string parameters_section(const Json& doc) {
-  std::string out = "<h2>Uncertain plant parameters</h2>\n<p>Each draw changes these in the "
-                    "plant only; the controller plans with the nominal values.</p>\n"
-                    "<table id=\"mc-parameters\"><thead><tr><th>key</th><th>law</th>"
-                    "<th>nominal</th></tr></thead><tbody>\n";
+  std::string out =
+      "<h2>Uncertain plant parameters</h2>\n<p>Each draw changes these in the "
+      "plant only; the controller plans with the nominal values.</p>\n"
+      "<table id=\"mc-parameters\"><thead><tr><th>key</th><th>law</th>"
+      "<th>nominal</th></tr></thead><tbody>\n";
   for (const Json& p : doc.value("parameters", Json::array())) {
     const std::string law = p.value("law", "");
     std::string spread;
@@ -144,31 +149,39 @@ std::string parameters_section(const Json& doc) {
 
 void write_montecarlo_report(const std::filesystem::path& folder) {
   const Json doc = html::read_json(folder / "montecarlo.json");
+  PlotsAside aside(folder);
   std::filesystem::create_directories(folder / "plots");
   std::vector<Figure> figures;
   auto add = [&](const plot::LinePlot& p, const std::string& file, const std::string& caption) {
     plot::write_png(p, folder / "plots" / file);
     figures.push_back({"plots/" + file, p.title, caption, p.width, p.height});
   };
-  add(ecdf(doc, "hand_error_rms", "RMS hand error over the draws", plot::log_axis("RMS hand error", "m")),
-      "ecdf_hand_error.png", "Empirical distribution of each variant's RMS hand error (valid draws).");
-  add(ecdf(doc, "energy_in", "Electrical energy over the draws", plot::linear_axis("electrical energy in", "J")),
-      "ecdf_energy.png", "Empirical distribution of each variant's electrical energy in (valid draws).");
+  add(ecdf(doc, "hand_error_rms", "RMS hand error over the draws",
+           plot::log_axis("RMS hand error", "m")),
+      "ecdf_hand_error.png",
+      "Empirical distribution of each variant's RMS hand error (valid draws).");
+  add(ecdf(doc, "energy_in", "Electrical energy over the draws",
+           plot::linear_axis("electrical energy in", "J")),
+      "ecdf_energy.png",
+      "Empirical distribution of each variant's electrical energy in (valid draws).");
   add(scatter(doc), "energy_vs_hand_error.png",
       "Each draw of each variant: electrical energy in against RMS hand error.");
 
   std::vector<std::string> verdict;
-  for (const Json& line : doc.value("verdict", Json::array())) verdict.push_back(line.get<std::string>());
+  for (const Json& line : doc.value("verdict", Json::array()))
+    verdict.push_back(line.get<std::string>());
   std::string page = html::page_begin("Monte Carlo: " + doc.value("scenario", std::string()));
-  page += "<h1>Monte Carlo study: " + html::escape(doc.value("scenario", std::string())) + "</h1>\n";
+  page +=
+      "<h1>Monte Carlo study: " + html::escape(doc.value("scenario", std::string())) + "</h1>\n";
   page += html::notice("verdict", "Verdict", verdict, "verdict");
   std::vector<std::string> invalid;
   for (const Json& d : doc.value("invalid", Json::array()))
-    invalid.push_back("draw " + std::to_string(d.value("draw", -1)) + ", " + d.value("variant", "") +
-                      ": " + d.value("failure", ""));
+    invalid.push_back("draw " + std::to_string(d.value("draw", -1)) + ", " +
+                      d.value("variant", "") + ": " + d.value("failure", ""));
   if (!invalid.empty())
-    page += html::notice("failure", std::to_string(invalid.size()) + " invalid runs (left out of the statistics)",
-                         invalid, "invalid");
+    page += html::notice(
+        "failure", std::to_string(invalid.size()) + " invalid runs (left out of the statistics)",
+        invalid, "invalid");
   std::vector<std::pair<std::string, std::string>> rows = {
       {"scenario file", doc.value("file", "")},
       {"draws", std::to_string(doc.value("samples", 0)) + " (seed " +
@@ -177,14 +190,16 @@ void write_montecarlo_report(const std::filesystem::path& folder) {
   for (const auto& [variant, f] : doc["accuracy_floor"].items())
     rows.push_back({"accuracy floor, " + variant,
                     "RMS hand error " + fmt(number(f, "hand_error_rms_step")) + " m at step " +
-                        fmt(number(f, "step")) + " s, " + fmt(number(f, "hand_error_rms_half_step")) +
-                        " m at half of it: floor " + fmt(number(f, "floor")) + " m"});
+                        fmt(number(f, "step")) + " s, " +
+                        fmt(number(f, "hand_error_rms_half_step")) + " m at half of it: floor " +
+                        fmt(number(f, "floor")) + " m"});
   page += html::info_table(rows);
   page += metrics_section(doc) + pairs_section(doc) + parameters_section(doc);
   page += "<h2>Distributions</h2>\n";
   for (const Figure& f : figures) page += html::figure(f);
   page += html::page_end();
   html::write_file(folder / "report.html", page);
+  aside.keep();
 }
 
 }  // namespace elbowsim::report

@@ -7,6 +7,7 @@
 #include "report/headline.hpp"
 #include "report/html.hpp"
 #include "report/metrics.hpp"
+#include "report/plots_aside.hpp"
 
 namespace elbowsim::report {
 
@@ -67,7 +68,8 @@ Rows run_rows(const RunData& run) {
                   number(settings.value("step", 0.0), "s");
   else
     integrator += ", step " + number(settings.value("step", 0.0), "s");
-  rows.push_back({"integrator", integrator + ", duration " + number(settings.value("duration", 0.0), "s")});
+  rows.push_back(
+      {"integrator", integrator + ", duration " + number(settings.value("duration", 0.0), "s")});
   rows.push_back({"dynamics", dynamics_name(settings.value("dynamics", ""))});
   if (s.contains("controller") && s["controller"].is_string()) {
     std::string believes = "knows the plant exactly";
@@ -272,9 +274,11 @@ std::string run_report_html(const RunData& run, const FigureSet& figures) {
 
 ReportFiles write_run_report(const RunData& run) {
   ReportFiles files;
+  PlotsAside aside(run.folder);
   files.figures = write_run_plots(run, run.folder);
   files.html = run.folder / "report.html";
   html::write_file(files.html, run_report_html(run, files.figures));
+  aside.keep();
   return files;
 }
 

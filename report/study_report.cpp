@@ -6,8 +6,9 @@
 #include <stdexcept>
 
 #include "report/html.hpp"
-#include "report/run_plots.hpp"
 #include "report/plot/plot.hpp"
+#include "report/plots_aside.hpp"
+#include "report/run_plots.hpp"
 
 namespace elbowsim::report {
 
@@ -69,31 +70,39 @@ plot::LinePlot ratio_plot(const Json& doc) {
 
 std::string case_table(const Json& doc) {
   const Json& variants = doc.value("variants", Json::array());
-  std::string out = "<h2>Cases</h2>\n<p>Means over the valid draws with their 95 % bootstrap "
-                    "intervals; ratios are paired (same draw), a / b of the first pair of "
-                    "variants; the outcome says whether the interval excludes 1 (and, for the "
-                    "hand error, whether the errors are above 10 × the accuracy floor).</p>\n"
-                    "<table id=\"study-cases\"><thead><tr><th>#</th><th>case</th>";
+  std::string out =
+      "<h2>Cases</h2>\n<p>Means over the valid draws with their 95 % bootstrap "
+      "intervals; ratios are paired (same draw), a / b of the first pair of "
+      "variants; the outcome says whether the interval excludes 1 (and, for the "
+      "hand error, whether the errors are above 10 × the accuracy floor).</p>\n"
+      "<table id=\"study-cases\"><thead><tr><th>#</th><th>case</th>";
   for (const Json& a : doc["axes"]) out += "<th>" + html::escape(a.value("name", "")) + "</th>";
-  for (const Json& v : variants) out += "<th>energy, " + html::escape(v.get<std::string>()) + " [J]</th>";
+  for (const Json& v : variants)
+    out += "<th>energy, " + html::escape(v.get<std::string>()) + " [J]</th>";
   out += "<th>energy ratio</th><th>energy</th>";
-  for (const Json& v : variants) out += "<th>RMS hand error, " + html::escape(v.get<std::string>()) + " [m]</th>";
+  for (const Json& v : variants)
+    out += "<th>RMS hand error, " + html::escape(v.get<std::string>()) + " [m]</th>";
   out += "<th>hand error ratio</th><th>hand error</th><th>invalid runs</th></tr></thead><tbody>\n";
   int row = 0;
   for (const Json& c : doc["cases"]) {
     const std::string name = c.value("case", "");
     out += "<tr><td>" + std::to_string(++row) + "</td><td><a href=\"" + html::escape(name) +
            "/report.html\">" + html::escape(name) + "</a></td>";
-    for (const Json& a : doc["axes"]) out += "<td>" + html::escape(c["levels"].value(a.value("name", ""), "")) + "</td>";
+    for (const Json& a : doc["axes"])
+      out += "<td>" + html::escape(c["levels"].value(a.value("name", ""), "")) + "</td>";
     const Json pair = c["pairs"].empty() ? Json::object() : c["pairs"][0];
     for (const char* m : kCompared) {
       for (const Json& v : variants) {
-        const Json x = c.value("metrics", Json::object()).value(v.get<std::string>(), Json::object()).value(m, Json::object());
-        out += "<td class=\"num\">" + with_interval(x.value("mean", Json()), x.value("ci95", Json())) + "</td>";
+        const Json x = c.value("metrics", Json::object())
+                           .value(v.get<std::string>(), Json::object())
+                           .value(m, Json::object());
+        out += "<td class=\"num\">" +
+               with_interval(x.value("mean", Json()), x.value("ci95", Json())) + "</td>";
       }
       const Json r = pair.value(m, Json::object());
       const std::string outcome = r.value("outcome", "no verdict");
-      out += "<td class=\"num\">" + with_interval(r.value("ratio", Json()), r.value("ci95", Json())) +
+      out += "<td class=\"num\">" +
+             with_interval(r.value("ratio", Json()), r.value("ci95", Json())) +
              "</td><td class=\"outcome\" data-outcome=\"" + html::escape(outcome) + "\">" +
              html::escape(outcome) + "</td>";
     }
@@ -106,16 +115,18 @@ std::string case_table(const Json& doc) {
 
 void write_study_report(const std::filesystem::path& folder) {
   const Json doc = html::read_json(folder / "study.json");
+  PlotsAside aside(folder);
   std::filesystem::create_directories(folder / "plots");
   const plot::LinePlot ratios = ratio_plot(doc);
   plot::write_png(ratios, folder / "plots" / "ratios.png");
 
   std::vector<std::string> verdict;
-  for (const Json& line : doc.value("verdict", Json::array())) verdict.push_back(line.get<std::string>());
+  for (const Json& line : doc.value("verdict", Json::array()))
+    verdict.push_back(line.get<std::string>());
   const std::string name = doc.value("scenario", std::string());
   std::string page = html::page_begin("Study: " + name);
-  page += "<h1>Monte Carlo study over " + std::to_string(doc["cases"].size()) + " cases: " +
-          html::escape(name) + "</h1>\n";
+  page += "<h1>Monte Carlo study over " + std::to_string(doc["cases"].size()) +
+          " cases: " + html::escape(name) + "</h1>\n";
   page += html::notice("verdict", "Verdict over the cases", verdict, "verdict");
   std::string axes;
   for (const Json& a : doc["axes"]) {
@@ -137,6 +148,7 @@ void write_study_report(const std::filesystem::path& folder) {
                         ratios.width, ratios.height});
   page += html::page_end();
   html::write_file(folder / "report.html", page);
+  aside.keep();
 }
 
 }  // namespace elbowsim::report

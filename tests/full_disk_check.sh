@@ -34,15 +34,19 @@ after=$(cd "$disk/old" && sha256sum ./*)
 [ "$before" = "$after" ] || fail "the earlier run's files changed: $after"
 leftovers=$(find "$disk" -name '*.tmp.*')
 [ -z "$leftovers" ] || fail "temporary files left: $leftovers"
-# 3. A report whose plots do not fit: exit 1 with the reason, no partial PNG.
+# 3. A report whose plots do not fit: exit 1 with the reason, no partial PNG,
+# and the folder's earlier report (a small stand-in) as it was.
 "$binary" run "$scene" --out "$disk/plots" --no-render --no-report > /dev/null 2>&1 ||
   fail "the run for the report did not fit"
+mkdir "$disk/plots/plots" && echo old > "$disk/plots/plots/old.png" && echo old > "$disk/plots/report.html"
 message=$("$binary" report "$disk/plots" 2>&1)
 code=$?
 [ "$code" -eq 1 ] || fail "report: exit $code, expected 1: $message"
 grep -q "No space left on device" <<< "$message" || fail "report: the message does not say why: $message"
-leftovers=$(find "$disk" -name '*.tmp')
+leftovers=$(find "$disk" -name '*.tmp' -o -name 'plots.old')
 [ -z "$leftovers" ] || fail "report: partial plots left: $leftovers"
+[ "$(ls "$disk/plots/plots")" = old.png ] || fail "report: the earlier plots changed: $(ls "$disk/plots/plots")"
+[ "$(cat "$disk/plots/report.html")" = old ] || fail "report: the earlier report.html changed"
 # 4. A video that does not fit (the disk filled up after the run): exit 1
 # with the reason, no video.mp4, no temporary video. On an emptied disk.
 rm -rf "${disk:?}"/*

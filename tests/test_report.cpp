@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <regex>
 #include <set>
@@ -12,6 +13,7 @@
 #include "report/columns.hpp"
 #include "report/comparison.hpp"
 #include "report/metrics.hpp"
+#include "report/plots_aside.hpp"
 #include "report_test_helpers.hpp"
 #include "support/approx.hpp"
 #include "support/recordings.hpp"
@@ -298,7 +300,8 @@ TEST_CASE("compare: names every run, a computed verdict, hand paths, energy term
                           (dir / "elbow-on").string() + args)
               .exit_code == 0);
   REQUIRE(t::run_elbowsim("run " + kScenes + "elbow_rest.yaml --out " +
-                          (dir / "elbow-off").string() + args + " --set 'inputs.voltage[0].offset=4.86'")
+                          (dir / "elbow-off").string() + args +
+                          " --set 'inputs.voltage[0].offset=4.86'")
               .exit_code == 0);
   const auto out = t::run_elbowsim("compare " + (dir / "elbow-on").string() + " " +
                                    (dir / "elbow-off").string());
@@ -330,4 +333,44 @@ TEST_CASE("compare: names every run, a computed verdict, hand paths, energy term
     CHECK(html.find(png) != std::string::npos);
   // Comparing one folder is a usage error.
   CHECK(t::run_elbowsim("compare " + (dir / "elbow-on").string()).exit_code == 2);
+}
+
+TEST_CASE(
+    "a report is all or nothing: a failed one leaves the earlier plots, a kept one only its own") {
+  const fs::path folder = t::scratch("report", "plots_aside");
+  auto write = [](const fs::path& file, const std::string& text) { std::ofstream(file) << text; };
+  auto listing = [&] {
+    std::set<std::string> names;
+    for (const auto& e : fs::recursive_directory_iterator(folder))
+      names.insert(fs::relative(e.path(), folder).generic_string());
+    return names;
+  };
+  fs::create_directories(folder / "plots");
+  write(folder / "plots" / "old.png", "old");
+  write(folder / "report.html", "old report");
+  const std::set<std::string> before = listing();
+
+  // Fails after its first plot: the earlier plots come back, the new one goes.
+  try {
+    r::PlotsAside aside(folder);
+    CHECK_FALSE(fs::exists(folder / "plots"));
+    fs::create_directories(folder / "plots");
+    write(folder / "plots" / "new.png", "new");
+    throw std::runtime_error("disk full");
+  } catch (const std::runtime_error&) {
+  }
+  CHECK(listing() == before);
+  CHECK(t::slurp(folder / "plots" / "old.png") == "old");
+
+  // A plots.old left by a process that died mid-report is put back first.
+  fs::rename(folder / "plots", folder / "plots.old");
+  fs::create_directories(folder / "plots");
+  write(folder / "plots" / "half.png", "half");
+  {
+    r::PlotsAside aside(folder);
+    fs::create_directories(folder / "plots");
+    write(folder / "plots" / "new.png", "new");
+    aside.keep();
+  }
+  CHECK(listing() == std::set<std::string>{"plots", "plots/new.png", "report.html"});
 }
