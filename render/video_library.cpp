@@ -35,6 +35,16 @@ void find(void* library, F& f, const char* name) {
     throw std::runtime_error(libavformat_file() + " (or its libavcodec, libavutil) has no " + name);
 }
 
+void check_version(void* library, const char* name, unsigned built_with) {
+  unsigned (*version)() = nullptr;
+  find(library, version, name);
+  const unsigned major = AV_VERSION_MAJOR(version());
+  if (major != built_with)
+    throw std::runtime_error(libavformat_file() + ": " + name + " gives major version " +
+                             std::to_string(major) + ", elbowsim was built for " +
+                             std::to_string(built_with) + " (FFmpeg's structures differ)");
+}
+
 VideoLibrary open_video_library() {
   const std::string file = libavformat_file();
   void* library = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
@@ -44,7 +54,12 @@ VideoLibrary open_video_library() {
                              ", which encodes videos (Debian: apt-get install " + kDebianPackage +
                              "): " + (error ? error : "not found"));
   }
-  // dlsym on libavformat's handle searches its dependencies too.
+  // dlsym on libavformat's handle searches its dependencies too. The
+  // structures are used as the headers lay them out: the major versions
+  // (FFmpeg's ABI) must be the ones the program was built with.
+  check_version(library, "avformat_version", LIBAVFORMAT_VERSION_MAJOR);
+  check_version(library, "avcodec_version", LIBAVCODEC_VERSION_MAJOR);
+  check_version(library, "avutil_version", LIBAVUTIL_VERSION_MAJOR);
   VideoLibrary v;
   find(library, v.strerror, "av_strerror");
   find(library, v.dict_set, "av_dict_set");

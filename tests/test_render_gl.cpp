@@ -234,6 +234,19 @@ TEST_CASE("render without FFmpeg's libraries: PNG frames and the command that ma
   CHECK_FALSE(fs::exists(dir / "frames" / "frame_00007.png"));
 }
 
+TEST_CASE("render with a libavformat of another major version: refused by name, PNG frames") {
+  const fs::path dir = scratch("render", "libav_version");
+  REQUIRE(cli(short_run(dir, "")).exit_code == 0);
+  const Outcome out = shell(std::string("ELBOWSIM_LIBAVFORMAT=") + ELBOWSIM_FAKE_LIBAVFORMAT + " " +
+                            ELBOWSIM_BINARY + " render " + dir.string() + " --fps 10");
+  INFO(out.output);
+  CHECK(out.exit_code == 0);
+  CHECK(out.output.find("avformat_version gives major version 1, elbowsim was built for ") !=
+        std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "video.mp4"));
+  CHECK(fs::exists(dir / "frames" / "frame_00006.png"));
+}
+
 TEST_CASE("render: a bad run folder is exit 2 with a clear message, and nothing is written") {
   const Outcome missing = cli("render /nonexistent/run");
   CHECK(missing.exit_code == 2);
