@@ -1,5 +1,7 @@
 #include "render/video_encoder.hpp"
 
+#include <sys/prctl.h>
+
 #include <cerrno>
 #include <cstring>
 #include <sstream>
@@ -38,6 +40,15 @@ std::string reason(const VideoLibrary& av, int code) {
   while (!log.empty() && log.back() == '\n') log.pop_back();
   return std::string(text) + (log.empty() ? "" : ":\n" + log);
 }
+
+// x264 asks the kernel for transparent huge pages for its pictures
+// (madvise), and the kernel then clears, and with Debian's default "defrag:
+// madvise" may first compact, 2 MiB at a time on first touch. With them
+// off for this process the main job's system CPU fell from 0.62 to 0.21 s
+// and its total CPU by 5 % (median of 6 in turns), its user CPU the same.
+// Process-wide (Linux keeps it per process), and only x264 asks for huge
+// pages here. Failing to turn them off costs only that time.
+void no_huge_pages_for_pictures() { prctl(PR_SET_THP_DISABLE, 1, 0, 0, 0); }
 
 }  // namespace
 
@@ -141,6 +152,7 @@ void VideoEncoder::open(double fps, bool lossless) {
   const int width = width_, height = height_;
   const VideoLibrary& av = video_library();
   take_video_log();
+  no_huge_pages_for_pictures();
   codec_ = std::make_unique<Codec>(av);
   Codec& c = *codec_;
   const AVCodec* x264 = av.find_encoder_by_name("libx264");

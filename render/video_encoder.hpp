@@ -3,6 +3,8 @@
 // encoded H.264 by libx264 (preset veryfast, subme 1, crf 20, one thread, so
 // the same bytes on every machine; or lossless), tagged BT.709, into an .mp4
 // with its index first (+faststart), as the ffmpeg command below would.
+// Opening one turns transparent huge pages off for the process (x264's
+// pictures are cheaper on first touch without them: video_encoder.cpp).
 #pragma once
 
 #include <cstdint>
