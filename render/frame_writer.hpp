@@ -1,8 +1,8 @@
 // The writer thread of one render: takes frames as GL read them back,
-// finishes them (RGBA rows bottom-up at the render's scale -> RGB rows
-// top-down at the output size, then the inset's marks and the overlay text)
-// and hands them on: to the video encoder, as PNG files, and to a
-// side-by-side composition. Hands the pixel buffers back for reuse.
+// finishes them where they lie (RGBA rows bottom-up, viewed top-down:
+// rgba_view.hpp; at a render scale of 2 averaged down first), FXAA, the
+// inset's marks and the overlay text, and hands them on: to the video encoder, as PNG files, and to
+// a side-by-side composition. Hands the pixel buffers back for reuse.
 #pragma once
 
 #include <atomic>
@@ -19,6 +19,7 @@
 
 #include "render/fxaa.hpp"
 #include "render/overlay.hpp"
+#include "render/rgba_view.hpp"
 #include "render/side_by_side.hpp"
 #include "render/video_encoder.hpp"
 
@@ -37,9 +38,12 @@ struct ReadFrame {
   PanelText text;
 };
 
-// RGBA rows bottom-up at `scale` times the output size -> RGB rows top-down,
-// averaging scale x scale blocks (scale 1 or 2).
-void to_rgb(const std::uint8_t* rgba, int width, int height, int scale, std::uint8_t* rgb);
+// A frame `read` back from GL (RGBA rows bottom-up, `scale` times the
+// output size width x height) as the output frame: at scale 1 `read` itself
+// viewed top-down; at scale 2 its 2 x 2 blocks averaged into `averaged`
+// (sized here), rows top-down.
+RgbaView output_frame(std::vector<std::uint8_t>& read, int width, int height, int scale,
+                      std::vector<std::uint8_t>& averaged);
 
 // A small blocking queue; close() wakes every waiter and makes pop() return
 // nothing once empty.
@@ -101,7 +105,7 @@ class FrameWriter {
  private:
   void join();
   void run();
-  void write(const ReadFrame& frame, std::vector<std::uint8_t>& rgb);
+  void write(ReadFrame& frame, std::vector<std::uint8_t>& averaged);
 
   int width_, height_, scale_;
   bool fxaa_;

@@ -28,21 +28,26 @@ constexpr int kPad = 27;
 // The two loops over every pixel are vector clones (vector_clones.hpp).
 
 // Luma with Rec. 601 weights in 1/256 (FXAA needs an ordering of
-// brightness, not a standard), in 16-bit arithmetic so that it vectorises.
-ELBOWSIM_VECTOR_CLONES void luma_row(const std::uint8_t* rgb, int width, std::uint8_t* luma) {
+// brightness, not a standard), each pixel read as one word, so that it vectorises.
+ELBOWSIM_VECTOR_CLONES void luma_row(const std::uint8_t* rgba, int width, std::uint8_t* luma) {
   for (int x = 0; x < width; ++x) {
-    const std::uint16_t r = rgb[3 * x], g = rgb[3 * x + 1], b = rgb[3 * x + 2];
-    luma[x] = std::uint8_t(std::uint16_t(77 * r + 150 * g + 29 * b) >> 8);
+    std::uint32_t p;
+    std::memcpy(&p, rgba + 4 * x, 4);
+    const std::uint32_t r = (p >> kRedShift) & 255, g = (p >> kGreenShift) & 255,
+                        b = (p >> kBlueShift) & 255;
+    luma[x] = std::uint8_t((77 * r + 150 * g + 29 * b) >> 8);
   }
 }
 
 // The padded luma plane: (width + 2 kPad) x (height + 2 kPad), the frame at (kPad, kPad).
-void padded_luma(const std::uint8_t* rgb, int width, int height, std::vector<std::uint8_t>& l) {
+void padded_luma(ConstRgbaView frame, std::vector<std::uint8_t>& l) {
+  const int width = frame.width, height = frame.height;
   const std::size_t stride = std::size_t(width + 2 * kPad);
   l.resize(stride * std::size_t(height + 2 * kPad));
-  for (int y = 0; y < height; ++y) {
+  for (int k = 0; k < height; ++k) {
+    const int y = frame.stride < 0 ? height - 1 - k : k;  // in memory order: reads stream forward
     std::uint8_t* row = l.data() + std::size_t(y + kPad) * stride;
-    luma_row(rgb + std::size_t(y) * std::size_t(width) * 3, width, row + kPad);
+    luma_row(frame.row(y), width, row + kPad);
     std::fill(row, row + kPad, row[kPad]);
     std::fill(row + kPad + width, row + stride, row[kPad + width - 1]);
   }
@@ -131,9 +136,10 @@ float edge_blend(const std::uint8_t* l, std::ptrdiff_t i, std::ptrdiff_t stride,
 
 }  // namespace
 
-std::size_t fxaa(std::uint8_t* rgb, int width, int height, FxaaScratch& scratch) {
+std::size_t fxaa(RgbaView frame, FxaaScratch& scratch) {
+  const int width = frame.width, height = frame.height;
   if (width < 1 || height < 1) return 0;
-  padded_luma(rgb, width, height, scratch.luma);
+  padded_luma(frame, scratch.luma);
   scratch.mask.resize(std::size_t(width));
   scratch.blends.clear();
   const std::ptrdiff_t stride = width + 2 * kPad;
@@ -156,17 +162,15 @@ std::size_t fxaa(std::uint8_t* rgb, int width, int height, FxaaScratch& scratch)
       // The neighbour across, in the frame (clamped at its border, like the luma).
       const int nx = std::clamp(x + int(across == 1) - int(across == -1), 0, width - 1);
       const int ny = std::clamp(y + int(across > 1) - int(across < -1), 0, height - 1);
-      const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
-      const std::uint8_t* a = rgb + 3 * i;
-      const std::uint8_t* b = rgb + 3 * (std::size_t(ny) * std::size_t(width) + std::size_t(nx));
-      FxaaScratch::Blend blend{std::uint32_t(i), {}};
+      const std::uint8_t* a = frame.pixel(x, y);
+      const std::uint8_t* b = frame.pixel(nx, ny);
+      FxaaScratch::Blend blend{std::int32_t(a - frame.top), {}};
       for (int k = 0; k < 3; ++k)
         blend.rgb[k] = std::uint8_t(float(a[k]) + t * float(b[k] - a[k]) + 0.5f);
       scratch.blends.push_back(blend);
     }
   }
-  for (const FxaaScratch::Blend& b : scratch.blends)
-    for (int k = 0; k < 3; ++k) rgb[3 * std::size_t(b.pixel) + std::size_t(k)] = b.rgb[k];
+  for (const FxaaScratch::Blend& b : scratch.blends) std::memcpy(frame.top + b.offset, b.rgb, 3);
   return scratch.blends.size();
 }
 

@@ -22,17 +22,16 @@ const char* state_word(const ElbowSample& e, double t, double window) {
 }
 
 // Composites a cairo ARGB surface (premultiplied, native-endian 32-bit words)
-// over an RGB image at (x0, y0), clipped to the image.
-void composite(cairo_surface_t* surface, std::uint8_t* rgb, int width, int height, int x0, int y0) {
+// over a frame at (x0, y0), clipped to the frame.
+void composite(cairo_surface_t* surface, RgbaView frame, int x0, int y0) {
   cairo_surface_flush(surface);
   const unsigned char* data = cairo_image_surface_get_data(surface);
   const int stride = cairo_image_surface_get_stride(surface);
   const int w = cairo_image_surface_get_width(surface), h = cairo_image_surface_get_height(surface);
-  for (int y = std::max(0, -y0); y < h && y0 + y < height; ++y) {
+  for (int y = std::max(0, -y0); y < h && y0 + y < frame.height; ++y) {
     const auto* src = reinterpret_cast<const std::uint32_t*>(data + std::size_t(y) * stride);
-    for (int x = std::max(0, -x0); x < w && x0 + x < width; ++x) {
-      std::uint8_t* dst =
-          rgb + (std::size_t(y0 + y) * std::size_t(width) + std::size_t(x0 + x)) * 3;
+    for (int x = std::max(0, -x0); x < w && x0 + x < frame.width; ++x) {
+      std::uint8_t* dst = frame.pixel(x0 + x, y0 + y);
       const std::uint32_t p = src[x];
       if (p == 0) continue;  // transparent (most of the inset's overlay)
       const unsigned keep = 255 - (p >> 24);
@@ -128,8 +127,9 @@ std::vector<std::string> overlay_lines(const std::string& title, const Model& mo
   return lines;
 }
 
-int draw_overlay(std::uint8_t* rgb, int width, int height, const PixelRect& region,
-                 const std::vector<std::string>& lines, int min_width) {
+int draw_overlay(RgbaView frame, const PixelRect& region, const std::vector<std::string>& lines,
+                 int min_width) {
+  const int width = frame.width, height = frame.height;
   if (lines.empty()) return min_width;
   const double size = std::max(6.0, std::min(region.height / 40.0, region.width / 26.0));
   const int pad = int(std::ceil(0.5 * size)), line_height = int(std::ceil(1.35 * size));
@@ -169,12 +169,12 @@ int draw_overlay(std::uint8_t* rgb, int width, int height, const PixelRect& regi
     cairo_show_text(cr, lines[k].c_str());
   }
   cairo_destroy(cr);
-  composite(surface, rgb, width, height, x0, y0);
+  composite(surface, frame, x0, y0);
   cairo_surface_destroy(surface);
   return used_width;
 }
 
-void draw_inset_overlay(std::uint8_t* rgb, int width, int height, const InsetOverlay& inset) {
+void draw_inset_overlay(RgbaView frame, const InsetOverlay& inset) {
   const PixelRect& r = inset.rect;
   if (r.width < 8 || r.height < 8) return;
   const double size = std::max(6.0, r.height / 18.0), pad = std::ceil(0.5 * size);
@@ -190,7 +190,7 @@ void draw_inset_overlay(std::uint8_t* rgb, int width, int height, const InsetOve
   cairo_rectangle(cr, 1, 1, r.width - 2, r.height - 2);
   cairo_stroke(cr);
   cairo_destroy(cr);
-  composite(surface, rgb, width, height, r.x, r.y);
+  composite(surface, frame, r.x, r.y);
   cairo_surface_destroy(surface);
 }
 

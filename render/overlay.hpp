@@ -1,7 +1,7 @@
 // Text over a frame: the lines to show (GL- and cairo-free, testable) and
 // their drawing with cairo's text API and the DejaVu Sans font into an ARGB
-// image composited over the RGB frame. The renderer's only file that includes cairo.h
-// (report/plot/plot.cpp is the report's).
+// image composited over the frame (RGBA, rgba_view.hpp). The renderer's only file that includes
+// cairo.h (report/plot/plot.cpp is the report's).
 #pragma once
 
 #include <cstdint>
@@ -11,6 +11,7 @@
 #include "engine/model.hpp"
 #include "render/pixel_rect.hpp"
 #include "render/playback.hpp"
+#include "render/rgba_view.hpp"
 #include "render/scene.hpp"
 
 namespace elbowsim {
@@ -22,14 +23,14 @@ namespace elbowsim {
 std::vector<std::string> overlay_lines(const std::string& title, const Model& model,
                                        const PlaybackState& state, double landed_window = 0.1);
 
-// Draws `lines` in a translucent box at the top-left of `region` of an RGB
-// image (width x height, rows top-down, 3 bytes per pixel). The font size
+// Draws `lines` in a translucent box at the top-left of `region` of a frame
+// (its red, green and blue; the fourth bytes are left as they are). The font size
 // follows the region: 1/40 of its height or 1/26 of its width, whichever is
 // smaller, at least 6 px (18 px in a 1280x720 frame). The box is at
 // least `min_width` wide; returns its width, so that a video can keep the box
 // from narrowing as the numbers change.
-int draw_overlay(std::uint8_t* rgb, int width, int height, const PixelRect& region,
-                 const std::vector<std::string>& lines, int min_width = 0);
+int draw_overlay(RgbaView frame, const PixelRect& region, const std::vector<std::string>& lines,
+                 int min_width = 0);
 
 // The text and marks on an inset (inset.hpp), in output pixels.
 struct InsetOverlay {
@@ -41,8 +42,8 @@ struct InsetOverlay {
 };
 
 // Draws a frame around the inset, its title, a legend of the two paths and
-// the scale bar (each on a translucent white ground) into an RGB image
-// (width x height, rows top-down). Font size: 1/18 of the inset's height.
-void draw_inset_overlay(std::uint8_t* rgb, int width, int height, const InsetOverlay& inset);
+// the scale bar (each on a translucent white ground) into a frame. Font
+// size: 1/18 of the inset's height.
+void draw_inset_overlay(RgbaView frame, const InsetOverlay& inset);
 
 }  // namespace elbowsim

@@ -32,7 +32,7 @@ std::string frame_file_name(int index) {
   return name;
 }
 
-void write_png(const std::filesystem::path& path, int width, int height, const std::uint8_t* rgb) {
+void write_png(const std::filesystem::path& path, ConstRgbaView frame) {
   File file{std::fopen(path.c_str(), "wb")};
   if (!file.f) fail(path, std::string("cannot write: ") + std::strerror(errno));
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
@@ -49,11 +49,12 @@ void write_png(const std::filesystem::path& path, int width, int height, const s
   png_init_io(png, file.f);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
   png_set_compression_level(png, 2);
-  png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+  png_set_IHDR(png, info, png_uint_32(frame.width), png_uint_32(frame.height), 8,
+               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
+               PNG_FILTER_TYPE_BASE);
   png_write_info(png, info);
-  for (int y = 0; y < height; ++y)
-    png_write_row(png, const_cast<png_bytep>(rgb + std::size_t(y) * std::size_t(width) * 3));
+  png_set_filler(png, 0, PNG_FILLER_AFTER);  // rows of 4 bytes a pixel, the 4th left out
+  for (int y = 0; y < frame.height; ++y) png_write_row(png, const_cast<png_bytep>(frame.row(y)));
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
   if (std::fflush(file.f) != 0) fail(path, std::string("write failed: ") + std::strerror(errno));

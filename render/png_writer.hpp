@@ -6,12 +6,14 @@
 #include <string>
 #include <vector>
 
+#include "render/rgba_view.hpp"
+
 namespace elbowsim {
 
-// Writes an 8-bit RGB image (rows top-down, 3 bytes per pixel) as PNG. Fast
+// Writes a frame as an 8-bit RGB PNG (the fourth bytes are left out). Fast
 // settings for frame sequences: the SUB filter only, zlib level 2. Throws
 // std::runtime_error naming the file on failure.
-void write_png(const std::filesystem::path& path, int width, int height, const std::uint8_t* rgb);
+void write_png(const std::filesystem::path& path, ConstRgbaView frame);
 
 // The name of frame `index` (from 0) of a sequence: frame_00001.png, ...
 std::string frame_file_name(int index);

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstring>
 #include <exception>
+#include <stdexcept>
 
 #include "render/png_writer.hpp"
 #include "render/yuv.hpp"
@@ -21,7 +22,7 @@ SideBySide::SideBySide(std::vector<int> widths, int height, VideoEncoder* encode
     offsets_.push_back(width_);
     width_ += w;
   }
-  if (frames_dir_) rgb_.assign(std::size_t(width_) * std::size_t(height_) * 3, 0);
+  if (frames_dir_) rgba_.assign(std::size_t(width_) * std::size_t(height_) * 4, 0);
   if (encoder_) {
     yuv_.assign(yuv420_bytes(width_, height_), 0);
     panel_yuv_.resize(widths_.size());
@@ -46,22 +47,22 @@ void copy_planes(const std::uint8_t* from, int w, int h, std::uint8_t* to, int t
 
 }  // namespace
 
-void SideBySide::put(int panel, int index, const std::uint8_t* rgb, const std::uint8_t* yuv) {
+void SideBySide::put(int panel, int index, ConstRgbaView frame, const std::uint8_t* yuv) {
   const std::size_t p = std::size_t(panel);
+  if (frame.width != widths_[p] || frame.height != height_)
+    throw std::invalid_argument("side by side: a panel's frame of another size than its panel's");
   if (encoder_ && !yuv) {  // converted here, before waiting for the lock
     panel_yuv_[p].resize(yuv420_bytes(widths_[p], height_));
-    rgb_to_yuv420(rgb, widths_[p], height_, panel_yuv_[p].data());
+    rgba_to_yuv420(frame, panel_yuv_[p].data());
     yuv = panel_yuv_[p].data();
   }
   std::unique_lock lock(mutex_);
   next_.wait(lock, [&] { return aborted_ || index_ == index; });
   if (aborted_) return;
   if (frames_dir_) {
-    const std::size_t row = std::size_t(widths_[p]) * 3;
-    const std::size_t stride = std::size_t(width_) * 3;
-    const std::size_t offset = std::size_t(offsets_[p]) * 3;
+    const RgbaView composed = top_down(rgba_.data(), width_, height_);
     for (int y = 0; y < height_; ++y)
-      std::memcpy(rgb_.data() + std::size_t(y) * stride + offset, rgb + std::size_t(y) * row, row);
+      std::memcpy(composed.pixel(offsets_[p], y), frame.row(y), std::size_t(widths_[p]) * 4);
   }
   if (encoder_) copy_planes(yuv, widths_[p], height_, yuv_.data(), width_, offsets_[p]);
   next_index_[std::size_t(panel)] = index + 1;
@@ -96,7 +97,7 @@ void SideBySide::write_frame() {
   try {
     if (encoder_) encoder_->write_yuv(yuv_.data());
     if (frames_dir_)
-      write_png(*frames_dir_ / frame_file_name(index_), width_, height_, rgb_.data());
+      write_png(*frames_dir_ / frame_file_name(index_), top_down(rgba_.data(), width_, height_));
     ++frames_;
   } catch (const std::exception& e) {
     error_ = e.what();

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "render/rgba_view.hpp"
 #include "render/video_encoder.hpp"
 
 namespace elbowsim {
@@ -30,15 +31,15 @@ class SideBySide {
   int width() const { return width_; }
   int height() const { return height_; }
 
-  // Panel `panel`'s frame `index` (RGB, rows top-down, its width x height;
-  // `yuv`: the same in YUV 4:2:0 when the caller has it, else null):
+  // Panel `panel`'s frame `index` (its width x height; `yuv`: the same in
+  // YUV 4:2:0 when the caller has it, else null):
   // waits until frame `index` is the one being composed, copies the panel
   // in and, when it completes the frame, writes it. Frames of a panel come
   // in order from 0. Returns at once after abort(). The video is composed
   // from the panels' YUV planes: the panels' widths are even, so no chroma
   // sample straddles a seam and the planes joined row by row are the YUV of
   // the RGB frames joined, without converting it again.
-  void put(int panel, int index, const std::uint8_t* rgb, const std::uint8_t* yuv = nullptr);
+  void put(int panel, int index, ConstRgbaView frame, const std::uint8_t* yuv = nullptr);
   // The panel has no more frames.
   void done(int panel);
   // Stops: wakes every waiter; put() does nothing from now on.
@@ -61,8 +62,8 @@ class SideBySide {
   int width_ = 0, height_;
   VideoEncoder* encoder_;
   std::optional<std::filesystem::path> frames_dir_;
-  std::vector<std::uint8_t> rgb_;  // the composed frame (for PNG frames)
-  std::vector<std::uint8_t> yuv_;  // the composed frame in YUV 4:2:0 (for the video)
+  std::vector<std::uint8_t> rgba_;  // the composed frame, rows top-down (for PNG frames)
+  std::vector<std::uint8_t> yuv_;   // the composed frame in YUV 4:2:0 (for the video)
   // Each panel's YUV when its caller has none (touched by that panel's caller only).
   std::vector<std::vector<std::uint8_t>> panel_yuv_;
   std::mutex mutex_;

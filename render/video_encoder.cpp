@@ -28,7 +28,7 @@ const char* const kPreset = "veryfast";  // x264 speed/size trade-off; crf 20 lo
 const char* const kX264Params = "subme=1";
 const char* const kCrf = "20";
 // The colour matrix, primaries, transfer and range the video's header names
-// (those rgb_to_yuv420 converts with; sRGB shares BT.709's primaries).
+// (those rgba_to_yuv420 converts with; sRGB shares BT.709's primaries).
 const char* const kColour[] = {"-colorspace", "bt709", "-color_primaries", "bt709",
                                "-color_trc",  "bt709", "-color_range",     "tv"};
 
@@ -236,8 +236,10 @@ void VideoEncoder::encode_next() {
   c.write_packets();
 }
 
-void VideoEncoder::write(const std::uint8_t* rgb) {
-  rgb_to_yuv420(rgb, width_, height_, next_frame());
+void VideoEncoder::write(ConstRgbaView frame) {
+  if (frame.width != width_ || frame.height != height_)
+    throw std::invalid_argument("video: a frame of another size than the video's");
+  rgba_to_yuv420(frame, next_frame());
   encode_next();
 }
 

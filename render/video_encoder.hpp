@@ -12,6 +12,8 @@
 #include <memory>
 #include <string>
 
+#include "render/rgba_view.hpp"
+
 namespace elbowsim {
 
 // "" when videos can be made here, else why not (FFmpeg's libraries could
@@ -37,11 +39,10 @@ class VideoEncoder {
   VideoEncoder(const VideoEncoder&) = delete;
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
-  // One frame: width * height * 3 bytes, RGB, rows top-down (converted to
-  // YUV and encoded in the calling thread). Throws if encoding or writing
-  // fails (the reason in what()).
-  void write(const std::uint8_t* rgb);
-  // One frame already in YUV 4:2:0 (yuv420_bytes(width, height) bytes, as rgb_to_yuv420 gives).
+  // One frame of width x height (converted to YUV and encoded in the
+  // calling thread). Throws if encoding or writing fails (the reason in what()).
+  void write(ConstRgbaView frame);
+  // One frame already in YUV 4:2:0 (yuv420_bytes(width, height) bytes, as rgba_to_yuv420 gives).
   void write_yuv(const std::uint8_t* yuv);
   // The last frame write() converted (its planes), for a side-by-side to
   // reuse; valid until the next write.

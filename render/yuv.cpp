@@ -1,5 +1,6 @@
 #include "render/yuv.hpp"
 
+#include <cstring>
 #include <vector>
 
 #include "render/vector_clones.hpp"
@@ -19,11 +20,17 @@ constexpr int kHalf = 1 << 15;
 
 // The loops over every pixel are vector clones (vector_clones.hpp).
 
-// One row of RGB triples -> the channels as separate rows (the loops below then vectorise).
-ELBOWSIM_VECTOR_CLONES void split(const std::uint8_t* rgb, std::size_t w, std::int32_t* r,
+// One row of RGBA pixels -> the channels as separate rows (the loops below
+// then vectorise), each pixel read as one word.
+ELBOWSIM_VECTOR_CLONES void split(const std::uint8_t* rgba, std::size_t w, std::int32_t* r,
                                   std::int32_t* g, std::int32_t* b) {
-  for (std::size_t x = 0; x < w; ++x)
-    r[x] = rgb[3 * x], g[x] = rgb[3 * x + 1], b[x] = rgb[3 * x + 2];
+  for (std::size_t x = 0; x < w; ++x) {
+    std::uint32_t p;
+    std::memcpy(&p, rgba + 4 * x, 4);
+    r[x] = std::int32_t((p >> kRedShift) & 255);
+    g[x] = std::int32_t((p >> kGreenShift) & 255);
+    b[x] = std::int32_t((p >> kBlueShift) & 255);
+  }
 }
 
 ELBOWSIM_VECTOR_CLONES void luma_row(const std::int32_t* r, const std::int32_t* g,
@@ -52,8 +59,9 @@ ELBOWSIM_VECTOR_CLONES void chroma_row(const std::int32_t* r, const std::int32_t
 
 }  // namespace
 
-void rgb_to_yuv420(const std::uint8_t* rgb, int width, int height, std::uint8_t* yuv) {
-  const std::size_t w = std::size_t(width), row = w * 3;
+void rgba_to_yuv420(ConstRgbaView frame, std::uint8_t* yuv) {
+  const int width = frame.width, height = frame.height;
+  const std::size_t w = std::size_t(width);
   std::uint8_t* y_plane = yuv;
   std::uint8_t* u_plane = yuv + w * std::size_t(height);
   std::uint8_t* v_plane = u_plane + (w / 2) * std::size_t(height / 2);
@@ -62,14 +70,19 @@ void rgb_to_yuv420(const std::uint8_t* rgb, int width, int height, std::uint8_t*
   channels.resize(6 * w);
   std::int32_t* c[2][3];
   for (int k = 0; k < 6; ++k) c[k / 3][k % 3] = channels.data() + std::size_t(k) * w;
-  for (int y = 0; y < height; ++y) {
-    std::int32_t* const* ch = c[y % 2];
-    split(rgb + std::size_t(y) * row, w, ch[0], ch[1], ch[2]);
-    luma_row(ch[0], ch[1], ch[2], w, y_plane + std::size_t(y) * w);
-    if (y % 2 == 0) continue;
-    for (int k = 0; k < 3; ++k) add_rows(c[0][k], c[1][k], w);
-    chroma_row(c[0][0], c[0][1], c[0][2], w / 2, u_plane + std::size_t(y / 2) * (w / 2),
-               v_plane + std::size_t(y / 2) * (w / 2));
+  // Pairs of rows in the order they lie in memory (a frame read back from
+  // GL lies bottom-up), so that the reads stream forward.
+  const int pairs = height / 2;
+  for (int k = 0; k < pairs; ++k) {
+    const int pair = frame.stride < 0 ? pairs - 1 - k : k;
+    for (int r = 0; r < 2; ++r) {
+      const int y = 2 * pair + r;
+      split(frame.row(y), w, c[r][0], c[r][1], c[r][2]);
+      luma_row(c[r][0], c[r][1], c[r][2], w, y_plane + std::size_t(y) * w);
+    }
+    for (int ch = 0; ch < 3; ++ch) add_rows(c[0][ch], c[1][ch], w);
+    chroma_row(c[0][0], c[0][1], c[0][2], w / 2, u_plane + std::size_t(pair) * (w / 2),
+               v_plane + std::size_t(pair) * (w / 2));
   }
 }
 

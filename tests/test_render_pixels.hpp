@@ -28,14 +28,8 @@ struct Image {
         (std::size_t(height - 1 - int(y)) * std::size_t(width) + std::size_t(x)) * 4;
     return {rgba[i], rgba[i + 1], rgba[i + 2]};
   }
-  void save(const std::filesystem::path& path) const {  // top-down RGB, for looking at
-    std::vector<std::uint8_t> rgb;
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x) {
-        const Pixel p = at(x, y);
-        rgb.insert(rgb.end(), {std::uint8_t(p.r), std::uint8_t(p.g), std::uint8_t(p.b)});
-      }
-    elbowsim::write_png(path, width, height, rgb.data());
+  void save(const std::filesystem::path& path) const {  // for looking at
+    elbowsim::write_png(path, elbowsim::bottom_up(rgba.data(), width, height));
   }
 };
 

@@ -5,6 +5,7 @@
 // on several threads give the same bytes as runs drawn on one.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -227,9 +228,11 @@ TEST_CASE("render side by side: panels without a video, its encoded frames are t
   REQUIRE(frames.size() == 6);
   REQUIRE(w == kWidth + 120);
   std::string expected;
-  std::vector<std::uint8_t> yuv(yuv420_bytes(w, h));
+  std::vector<std::uint8_t> yuv(yuv420_bytes(w, h)), rgba(std::size_t(w) * std::size_t(h) * 4);
   for (const auto& rgb : frames) {
-    rgb_to_yuv420(rgb.data(), w, h, yuv.data());
+    for (std::size_t i = 0; i < std::size_t(w) * std::size_t(h); ++i)
+      std::copy_n(rgb.begin() + std::ptrdiff_t(3 * i), 3, rgba.begin() + std::ptrdiff_t(4 * i));
+    rgba_to_yuv420(top_down(rgba.data(), w, h), yuv.data());
     expected.append(yuv.begin(), yuv.end());
   }
   CHECK(decoded_yuv(dir / "both" / "video.mp4") == expected);
