@@ -75,7 +75,7 @@ void FrameWriter::write(ReadFrame& frame, std::vector<std::uint8_t>& averaged) {
   Clock::time_point start = Clock::now();
   const RgbaView out = output_frame(frame.rgba, width_, height_, scale_, averaged);
   if (fxaa_) fxaa(out, fxaa_scratch_);
-  if (frame.text.inset) draw_inset_overlay(out, *frame.text.inset);
+  if (frame.text.inset) inset_marks_.draw(out, *frame.text.inset);
   box_width_ = draw_overlay(out, {0, 0, width_, height_}, frame.text.lines, box_width_);
   compose_seconds += seconds_since(start);
   start = Clock::now();

@@ -112,6 +112,7 @@ class FrameWriter {
   FxaaScratch fxaa_scratch_;
   FrameOutputs out_;
   int box_width_ = 0;  // the overlay box only grows during a render
+  InsetOverlayLayer inset_marks_;
   Channel<ReadFrame> queue_;
   Channel<std::vector<std::uint8_t>> free_;
   std::exception_ptr error_;

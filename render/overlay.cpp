@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 namespace elbowsim {
 
@@ -21,8 +22,15 @@ const char* state_word(const ElbowSample& e, double t, double window) {
   return t - e.landed_at <= window ? "landed" : "resting";
 }
 
-// Composites a cairo ARGB surface (premultiplied, native-endian 32-bit words)
-// over a frame at (x0, y0), clipped to the frame.
+// One premultiplied ARGB word (cairo's, native-endian) over a pixel.
+void blend_over(std::uint8_t* dst, std::uint32_t p) {
+  const unsigned keep = 255 - (p >> 24);
+  dst[0] = std::uint8_t(((p >> 16) & 255) + (dst[0] * keep + 127) / 255);
+  dst[1] = std::uint8_t(((p >> 8) & 255) + (dst[1] * keep + 127) / 255);
+  dst[2] = std::uint8_t((p & 255) + (dst[2] * keep + 127) / 255);
+}
+
+// Composites a cairo ARGB surface over a frame at (x0, y0), clipped to the frame.
 void composite(cairo_surface_t* surface, RgbaView frame, int x0, int y0) {
   cairo_surface_flush(surface);
   const unsigned char* data = cairo_image_surface_get_data(surface);
@@ -30,16 +38,17 @@ void composite(cairo_surface_t* surface, RgbaView frame, int x0, int y0) {
   const int w = cairo_image_surface_get_width(surface), h = cairo_image_surface_get_height(surface);
   for (int y = std::max(0, -y0); y < h && y0 + y < frame.height; ++y) {
     const auto* src = reinterpret_cast<const std::uint32_t*>(data + std::size_t(y) * stride);
-    for (int x = std::max(0, -x0); x < w && x0 + x < frame.width; ++x) {
-      std::uint8_t* dst = frame.pixel(x0 + x, y0 + y);
-      const std::uint32_t p = src[x];
-      if (p == 0) continue;  // transparent (most of the inset's overlay)
-      const unsigned keep = 255 - (p >> 24);
-      dst[0] = std::uint8_t(((p >> 16) & 255) + (dst[0] * keep + 127) / 255);
-      dst[1] = std::uint8_t(((p >> 8) & 255) + (dst[1] * keep + 127) / 255);
-      dst[2] = std::uint8_t((p & 255) + (dst[2] * keep + 127) / 255);
-    }
+    for (int x = std::max(0, -x0); x < w && x0 + x < frame.width; ++x)
+      if (src[x] != 0) blend_over(frame.pixel(x0 + x, y0 + y), src[x]);  // 0: transparent
   }
+}
+
+bool operator==(const Color& a, const Color& b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+
+bool same_marks(const InsetOverlay& a, const InsetOverlay& b) {
+  return a.rect.x == b.rect.x && a.rect.y == b.rect.y && a.rect.width == b.rect.width &&
+         a.rect.height == b.rect.height && a.title == b.title && a.scale_label == b.scale_label &&
+         a.scale_bar_px == b.scale_bar_px && a.desired == b.desired && a.traced == b.traced;
 }
 
 cairo_t* text_context(cairo_surface_t* surface, double size) {
@@ -174,9 +183,21 @@ int draw_overlay(RgbaView frame, const PixelRect& region, const std::vector<std:
   return used_width;
 }
 
-void draw_inset_overlay(RgbaView frame, const InsetOverlay& inset) {
+void InsetOverlayLayer::draw(RgbaView frame, const InsetOverlay& inset) {
   const PixelRect& r = inset.rect;
   if (r.width < 8 || r.height < 8) return;
+  if (!drawn_ || !same_marks(*drawn_, inset)) redraw(inset);
+  for (const Run& run : runs_) {
+    const int y = r.y + run.y;
+    if (y < 0 || y >= frame.height) continue;
+    const std::uint32_t* src = layer_.data() + std::size_t(run.y) * std::size_t(r.width);
+    for (int x = std::max(run.x, -r.x); x < run.x + run.length && r.x + x < frame.width; ++x)
+      if (src[x] != 0) blend_over(frame.pixel(r.x + x, y), src[x]);
+  }
+}
+
+void InsetOverlayLayer::redraw(const InsetOverlay& inset) {
+  const PixelRect& r = inset.rect;
   const double size = std::max(6.0, r.height / 18.0), pad = std::ceil(0.5 * size);
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, r.width, r.height);
   cairo_t* cr = text_context(surface, size);
@@ -190,8 +211,26 @@ void draw_inset_overlay(RgbaView frame, const InsetOverlay& inset) {
   cairo_rectangle(cr, 1, 1, r.width - 2, r.height - 2);
   cairo_stroke(cr);
   cairo_destroy(cr);
-  composite(surface, frame, r.x, r.y);
+  cairo_surface_flush(surface);
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  layer_.resize(std::size_t(r.width) * std::size_t(r.height));
+  runs_.clear();
+  for (int y = 0; y < r.height; ++y) {
+    std::uint32_t* row = layer_.data() + std::size_t(y) * std::size_t(r.width);
+    std::memcpy(row, data + std::size_t(y) * std::size_t(stride), std::size_t(r.width) * 4);
+    for (int x = 0; x < r.width;) {
+      if (row[x] == 0) {
+        ++x;
+        continue;
+      }
+      const int start = x;
+      while (x < r.width && row[x] != 0) ++x;
+      runs_.push_back({y, start, x - start});
+    }
+  }
   cairo_surface_destroy(surface);
+  drawn_ = inset;
 }
 
 }  // namespace elbowsim

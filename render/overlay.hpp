@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,23 @@ struct InsetOverlay {
 
 // Draws a frame around the inset, its title, a legend of the two paths and
 // the scale bar (each on a translucent white ground) into a frame. Font
-// size: 1/18 of the inset's height.
-void draw_inset_overlay(RgbaView frame, const InsetOverlay& inset);
+// size: 1/18 of the inset's height. The marks are drawn with cairo once and
+// kept: while they stay the same (all of a run's frames but where the
+// title's magnification changes), each frame only blends the pixels they
+// cover (runs of them), the same bytes as drawing them again.
+class InsetOverlayLayer {
+ public:
+  void draw(RgbaView frame, const InsetOverlay& inset);
+
+ private:
+  void redraw(const InsetOverlay& inset);
+
+  std::optional<InsetOverlay> drawn_;  // the marks in layer_
+  std::vector<std::uint32_t> layer_;   // cairo's premultiplied ARGB words, rect.width x rect.height
+  struct Run {
+    int y, x, length;  // [px] in the layer
+  };
+  std::vector<Run> runs_;  // where layer_ is not transparent
+};
 
 }  // namespace elbowsim
