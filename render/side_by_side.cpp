@@ -23,25 +23,31 @@ SideBySide::SideBySide(std::vector<int> widths, int height, VideoEncoder* encode
     width_ += w;
   }
   if (frames_dir_) rgba_.assign(std::size_t(width_) * std::size_t(height_) * 4, 0);
-  if (encoder_) {
-    yuv_.assign(yuv420_bytes(width_, height_), 0);
-    panel_yuv_.resize(widths_.size());
-  }
+  if (encoder_) panel_yuv_.resize(widths_.size());
 }
 
 namespace {
 
 // Each plane of a panel's YUV 4:2:0 frame (w x h) copied into the composed
-// frame's (total_w x h) at column x0 (even): Y at full size, U and V at half.
-void copy_planes(const std::uint8_t* from, int w, int h, std::uint8_t* to, int total_w, int x0) {
+// frame's (total_w x h) at column x0 (even): Y at full size, U and V at
+// half. From a composed frame instead (`from_composed`): the panel's part
+// of it. Without `from`: black (all zero, as at the start).
+void copy_planes(const std::uint8_t* from, bool from_composed, int w, int h, std::uint8_t* to,
+                 int total_w, int x0) {
   const std::uint8_t* src = from;
   std::uint8_t* dst = to;
   for (const int k : {1, 2, 2}) {  // Y, U, V: sizes divided by k
     const std::size_t pw = std::size_t(w / k), tw = std::size_t(total_w / k);
-    for (int y = 0; y < h / k; ++y)
-      std::memcpy(dst + std::size_t(y) * tw + std::size_t(x0 / k), src + std::size_t(y) * pw, pw);
-    src += pw * std::size_t(h / k);
-    dst += tw * std::size_t(h / k);
+    const std::size_t column = std::size_t(x0 / k), rows = std::size_t(h / k);
+    for (std::size_t y = 0; y < rows; ++y) {
+      std::uint8_t* out = dst + y * tw + column;
+      if (!src)
+        std::memset(out, 0, pw);
+      else
+        std::memcpy(out, src + (from_composed ? y * tw + column : y * pw), pw);
+    }
+    if (src) src += (from_composed ? tw : pw) * rows;
+    dst += tw * rows;
   }
 }
 
@@ -64,7 +70,9 @@ void SideBySide::put(int panel, int index, ConstRgbaView frame, const std::uint8
     for (int y = 0; y < height_; ++y)
       std::memcpy(composed.pixel(offsets_[p], y), frame.row(y), std::size_t(widths_[p]) * 4);
   }
-  if (encoder_) copy_planes(yuv, widths_[p], height_, yuv_.data(), width_, offsets_[p]);
+  // Straight into the buffer the encoder takes the composed frame from.
+  if (encoder_)
+    copy_planes(yuv, false, widths_[p], height_, encoder_->next_yuv(), width_, offsets_[p]);
   next_index_[std::size_t(panel)] = index + 1;
   if (complete()) write_frame();
 }
@@ -95,7 +103,15 @@ void SideBySide::abort() {
 void SideBySide::write_frame() {
   const auto start = std::chrono::steady_clock::now();
   try {
-    if (encoder_) encoder_->write_yuv(yuv_.data());
+    if (encoder_) {
+      // A panel that has ended keeps its last frame: its part of the
+      // previous composed frame (none yet: black).
+      for (std::size_t p = 0; p < widths_.size(); ++p)
+        if (next_index_[p] <= index_)
+          copy_planes(encoder_->yuv(), true, widths_[p], height_, encoder_->next_yuv(), width_,
+                      offsets_[p]);
+      encoder_->encode_next_yuv();
+    }
     if (frames_dir_)
       write_png(*frames_dir_ / frame_file_name(index_), top_down(rgba_.data(), width_, height_));
     ++frames_;

@@ -63,7 +63,6 @@ class SideBySide {
   VideoEncoder* encoder_;
   std::optional<std::filesystem::path> frames_dir_;
   std::vector<std::uint8_t> rgba_;  // the composed frame, rows top-down (for PNG frames)
-  std::vector<std::uint8_t> yuv_;   // the composed frame in YUV 4:2:0 (for the video)
   // Each panel's YUV when its caller has none (touched by that panel's caller only).
   std::vector<std::vector<std::uint8_t>> panel_yuv_;
   std::mutex mutex_;

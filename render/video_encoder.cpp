@@ -6,6 +6,7 @@
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "render/video_library.hpp"
 #include "render/yuv.hpp"
@@ -80,6 +81,7 @@ struct VideoEncoder::Codec {
   AVFormatContext* format = nullptr;
   AVStream* stream = nullptr;
   AVBufferPool* pool = nullptr;  // frames' YUV, reused once the encoder has copied them
+  AVBufferRef* next = nullptr;   // the next frame's YUV, being filled
   AVBufferRef* last = nullptr;   // the last frame's YUV (yuv())
   AVFrame* frame = nullptr;
   AVPacket* packet = nullptr;
@@ -90,6 +92,7 @@ struct VideoEncoder::Codec {
     av.packet_free(&packet);
     av.frame_free(&frame);
     av.buffer_unref(&last);
+    av.buffer_unref(&next);
     av.buffer_pool_uninit(&pool);
     av.free_context(&context);
     if (format) {
@@ -206,15 +209,17 @@ void VideoEncoder::discard() {
   if (opened) std::filesystem::remove(output_, ignored);  // only a file this made
 }
 
-std::uint8_t* VideoEncoder::next_frame() {
+std::uint8_t* VideoEncoder::next_yuv() {
   Codec& c = *codec_;
-  c.av.buffer_unref(&c.last);
-  if (!(c.last = c.av.buffer_pool_get(c.pool))) throw std::bad_alloc();
-  return c.last->data;
+  if (!c.next && !(c.next = c.av.buffer_pool_get(c.pool))) throw std::bad_alloc();
+  return c.next->data;
 }
 
-void VideoEncoder::encode_next() {
+void VideoEncoder::encode_next_yuv() {
   Codec& c = *codec_;
+  next_yuv();
+  c.av.buffer_unref(&c.last);
+  c.last = std::exchange(c.next, nullptr);
   AVFrame& f = *c.frame;
   // The frame refers to the pool's buffer: x264 copies it into its own
   // pictures, so no copy is made here, and the buffer returns to the pool
@@ -239,13 +244,8 @@ void VideoEncoder::encode_next() {
 void VideoEncoder::write(ConstRgbaView frame) {
   if (frame.width != width_ || frame.height != height_)
     throw std::invalid_argument("video: a frame of another size than the video's");
-  rgba_to_yuv420(frame, next_frame());
-  encode_next();
-}
-
-void VideoEncoder::write_yuv(const std::uint8_t* yuv) {
-  std::memcpy(next_frame(), yuv, yuv420_bytes(width_, height_));
-  encode_next();
+  rgba_to_yuv420(frame, next_yuv());
+  encode_next_yuv();
 }
 
 const std::uint8_t* VideoEncoder::yuv() const {

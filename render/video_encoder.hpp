@@ -42,10 +42,13 @@ class VideoEncoder {
   // One frame of width x height (converted to YUV and encoded in the
   // calling thread). Throws if encoding or writing fails (the reason in what()).
   void write(ConstRgbaView frame);
-  // One frame already in YUV 4:2:0 (yuv420_bytes(width, height) bytes, as rgba_to_yuv420 gives).
-  void write_yuv(const std::uint8_t* yuv);
-  // The last frame write() converted (its planes), for a side-by-side to
-  // reuse; valid until the next write.
+  // The buffer the next frame's YUV 4:2:0 goes into (yuv420_bytes(width,
+  // height), as rgba_to_yuv420 fills it; the same one until it is encoded), for a caller that
+  // composes a frame in place; then encode_next_yuv() encodes it.
+  std::uint8_t* next_yuv();
+  void encode_next_yuv();
+  // The last frame encoded (its planes), for a side-by-side to reuse; valid
+  // until the next one is encoded.
   const std::uint8_t* yuv() const;
   // Encodes the frames still held back, writes the index; throws with the
   // reason if that fails (the destructor then removes the file).
@@ -54,9 +57,7 @@ class VideoEncoder {
  private:
   struct Codec;  // the libraries' state (video_encoder.cpp)
   void open(double fps, bool lossless);
-  void discard();              // closes without finishing; removes the file if it was opened
-  std::uint8_t* next_frame();  // the buffer the next frame's YUV goes into
-  void encode_next();          // encodes it and writes what comes out
+  void discard();  // closes without finishing; removes the file if it was opened
 
   std::filesystem::path output_;
   int width_, height_;

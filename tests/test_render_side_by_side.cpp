@@ -210,12 +210,15 @@ TEST_CASE(
 TEST_CASE("render side by side: panels without a video, its encoded frames are their YUV") {
   // The panels write PNG frames only, the side-by-side a lossless video and
   // PNG frames: it converts the panels itself, and what it encodes is the
-  // YUV of its own PNG frames.
+  // YUV of its own PNG frames, also after the right run has ended (its last
+  // frame carried over from one composed frame to the next).
   const Model model = render_fixture::arm();
   const Recording recording = render_fixture::recording();
+  Recording cut = recording;
+  cut.values.resize(7 * std::size_t(cut.layout.size()));
   const RenderSettings settings = panel_settings(kWidth), narrow = panel_settings(120);
   const FrameSource left(model, recording, settings, "left");
-  const FrameSource right(model, recording, narrow, "right");
+  const FrameSource right(model, cut, narrow, "right");
   const fs::path dir = scratch("render", "side_by_side_own_yuv");
   for (const char* sub : {"left", "right", "both"}) fs::create_directories(dir / sub);
   const RenderResults results = render_jobs({{&left, settings, {dir / "left", false, true}},
@@ -223,6 +226,7 @@ TEST_CASE("render side by side: panels without a video, its encoded frames are t
                                             RenderRequest{dir / "both", true, true, true}, 2);
   REQUIRE(results.side_by_side);
   CHECK(results.side_by_side->error == "");
+  CHECK(results.jobs[1].frames == 4);  // ended two frames before the left run
   int w = 0, h = 0;
   const auto frames = read_frames(dir / "both" / "frames", w, h);
   REQUIRE(frames.size() == 6);
