@@ -15,6 +15,7 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
     : gl_(std::make_unique<Gl>()), width_(width), height_(height) {
   Gl& g = *gl_;
   g.lit = link_program(shaders::kLitVertex, shaders::kLitFragment);
+  g.unlit = link_program(shaders::kUnlitVertex, shaders::kUnlitFragment);
   g.flat = link_program(shaders::kFlatVertex, shaders::kFlatFragment);
   g.depth = link_program(shaders::kDepthVertex, shaders::kDepthFragment);
   // Round shapes at every level of detail, chosen per instance by its size
@@ -162,7 +163,6 @@ void use_lit(GlRenderer::Gl& g, const Camera& camera, const Eigen::Vector3d& eye
   glUniform1i(glGetUniformLocation(p, "shadow_map"), 0);
   glUniform1f(glGetUniformLocation(p, "fade"), 0.0f);
   glUniform3f(glGetUniformLocation(p, "fade_color"), 1.0f, 1.0f, 1.0f);
-  glUniform1i(glGetUniformLocation(p, "unlit"), 0);
 }
 
 void draw_grid(GlRenderer::Gl& g, const LineSet& grid, const Eigen::Matrix4f& view_projection) {
@@ -220,7 +220,11 @@ void draw_inset(GlRenderer::Gl& g, const Inset& inset, const Camera& main, const
     draw_shapes(g, g.culled, {inset.camera, v.height, 1.0 - inset.fade});
   }
   glUniform1f(glGetUniformLocation(g.lit, "fade"), 0.0f);
-  glUniform1i(glGetUniformLocation(g.lit, "unlit"), 1);
+  // The paths in their own colours, unlit: a program of their own (in the
+  // lit one, llvmpipe ran the whole lighting for them under a mask).
+  glUseProgram(g.unlit);
+  set_matrix(g.unlit, "view_projection",
+             (inset.camera.projection() * inset.camera.view()).cast<float>());
   glDisable(GL_DEPTH_TEST);
   for (const ShapeInstances& layer : inset_instances(inset))
     draw_shapes(g, layer, {inset.camera, v.height});

@@ -161,6 +161,7 @@ void delete_all(GlRenderer::Gl& g) {
   if (g.draw_fbo != g.resolve_fbo) glDeleteFramebuffers(1, &g.draw_fbo);
   glDeleteFramebuffers(1, &g.resolve_fbo);
   glDeleteProgram(g.lit);
+  glDeleteProgram(g.unlit);
   glDeleteProgram(g.flat);
   glDeleteProgram(g.depth);
   if (g.shadow_fbo) glDeleteFramebuffers(1, &g.shadow_fbo);

@@ -22,7 +22,7 @@ struct MeshBuffers {
 inline constexpr int kShadowMapSize = 1024;  // [texels] per side
 
 struct GlRenderer::Gl {
-  GLuint lit = 0, flat = 0, depth = 0;  // programs
+  GLuint lit = 0, unlit = 0, flat = 0, depth = 0;  // programs
   // Per shape its meshes: one, or for a round shape (is_round) one per
   // level of detail (level_of_detail.hpp), coarsest first.
   std::array<std::vector<MeshBuffers>, shape_count> meshes;

@@ -49,7 +49,7 @@ void main() {
 // texels compared and blended). In shadow the key keeps `shadow_keep` of its
 // light, so shadowed faces keep their form.
 // Then the colour is mixed `fade` of the way toward fade_color (the inset's
-// faded scene); `unlit` 1 gives the base colour as is (the inset's paths).
+// faded scene).
 inline constexpr const char* kLitFragment = R"(#version 330 core
 in vec3 world_position;
 in vec3 world_normal;
@@ -65,7 +65,6 @@ uniform sampler2DShadow shadow_map;
 uniform float shadow_keep;
 uniform float fade;
 uniform vec3 fade_color;
-uniform int unlit;
 out vec4 frag_color;
 
 float key_visibility() {
@@ -89,10 +88,6 @@ vec3 light_term(int i, vec3 n, vec3 v) {
 // of a group of fragments under a mask, so a lookup inside a loop over the
 // lights would be paid once per light.
 void main() {
-  if (unlit == 1) {
-    frag_color = vec4(base_color, 1.0);
-    return;
-  }
   vec3 n = normalize(world_normal);
   vec3 v = normalize(eye - world_position);
   vec3 c = ambient * base_color;
@@ -100,6 +95,30 @@ void main() {
   c += light_term(1, n, v);
   frag_color = vec4(mix(min(c, vec3(1.0)), fade_color, fade), 1.0);
 }
+)";
+
+// The same instances in their base colours as they are, no lighting (the
+// inset's paths); positions computed as the lit program computes them.
+inline constexpr const char* kUnlitVertex = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 2) in vec4 model0;
+layout(location = 3) in vec4 model1;
+layout(location = 4) in vec4 model2;
+layout(location = 5) in vec4 model3;
+layout(location = 9) in vec4 color;
+uniform mat4 view_projection;
+out vec3 base_color;
+void main() {
+  vec4 p = mat4(model0, model1, model2, model3) * vec4(position, 1.0);
+  base_color = color.rgb;
+  gl_Position = view_projection * p;
+}
+)";
+
+inline constexpr const char* kUnlitFragment = R"(#version 330 core
+in vec3 base_color;
+out vec4 frag_color;
+void main() { frag_color = vec4(base_color, 1.0); }
 )";
 
 // Depth from the key light, for the shadow map: the same instances, no colour.
