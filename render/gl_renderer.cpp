@@ -15,7 +15,7 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
     : gl_(std::make_unique<Gl>()), width_(width), height_(height) {
   Gl& g = *gl_;
   g.lit = link_program(shaders::kLitVertex, shaders::kLitFragment);
-  g.unlit = link_program(shaders::kUnlitVertex, shaders::kUnlitFragment);
+  g.unlit = link_program(shaders::kLitVertex, shaders::kUnlitFragment);
   g.flat = link_program(shaders::kFlatVertex, shaders::kFlatFragment);
   g.depth = link_program(shaders::kDepthVertex, shaders::kDepthFragment);
   // Round shapes at every level of detail, chosen per instance by its size

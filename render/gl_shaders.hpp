@@ -97,24 +97,8 @@ void main() {
 }
 )";
 
-// The same instances in their base colours as they are, no lighting (the
-// inset's paths); positions computed as the lit program computes them.
-inline constexpr const char* kUnlitVertex = R"(#version 330 core
-layout(location = 0) in vec3 position;
-layout(location = 2) in vec4 model0;
-layout(location = 3) in vec4 model1;
-layout(location = 4) in vec4 model2;
-layout(location = 5) in vec4 model3;
-layout(location = 9) in vec4 color;
-uniform mat4 view_projection;
-out vec3 base_color;
-void main() {
-  vec4 p = mat4(model0, model1, model2, model3) * vec4(position, 1.0);
-  base_color = color.rgb;
-  gl_Position = view_projection * p;
-}
-)";
-
+// The inset's paths in their base colours as they are, no lighting: linked
+// with kLitVertex, so their positions are the lit program's.
 inline constexpr const char* kUnlitFragment = R"(#version 330 core
 in vec3 base_color;
 out vec4 frag_color;

@@ -192,7 +192,7 @@ void InsetOverlayLayer::draw(RgbaView frame, const InsetOverlay& inset) {
     if (y < 0 || y >= frame.height) continue;
     const std::uint32_t* src = layer_.data() + std::size_t(run.y) * std::size_t(r.width);
     for (int x = std::max(run.x, -r.x); x < run.x + run.length && r.x + x < frame.width; ++x)
-      if (src[x] != 0) blend_over(frame.pixel(r.x + x, y), src[x]);
+      blend_over(frame.pixel(r.x + x, y), src[x]);  // a run holds no transparent word
   }
 }
 
