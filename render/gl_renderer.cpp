@@ -14,10 +14,14 @@ namespace elbowsim {
 GlRenderer::GlRenderer(int width, int height, int msaa)
     : gl_(std::make_unique<Gl>()), width_(width), height_(height) {
   Gl& g = *gl_;
-  g.lit = link_program(shaders::kLitVertex, shaders::kLitFragment);
-  g.unlit = link_program(shaders::kLitVertex, shaders::kUnlitFragment);
-  g.flat = link_program(shaders::kFlatVertex, shaders::kFlatFragment);
-  g.depth = link_program(shaders::kDepthVertex, shaders::kDepthFragment);
+  using namespace shaders;
+  g.lit = link_program({kVersion, kInstanceInputs, kLitVertex},
+                       {kVersion, kLighting, kLitFragment});
+  g.unlit = link_program({kVersion, kInstanceInputs, kLitVertex}, {kVersion, kUnlitFragment});
+  g.faded = link_program({kVersion, kInstanceInputs, kLighting, kFadedVertex},
+                         {kVersion, kUnlitFragment});
+  g.flat = link_program({kVersion, kFlatVertex}, {kVersion, kFlatFragment});
+  g.depth = link_program({kVersion, kInstanceInputs, kDepthVertex}, {kVersion, kDepthFragment});
   // Round shapes at every level of detail, chosen per instance by its size
   // on screen (level_of_detail.hpp).
   for (const int n : kSlices) {
@@ -139,10 +143,10 @@ void shadow_pass(GlRenderer::Gl& g, const Scene& scene, const Lighting& lights) 
   glBindFramebuffer(GL_FRAMEBUFFER, g.draw_fbo);
 }
 
-// The lit program's uniforms for a view from `eye` under `lights`.
-void use_lit(GlRenderer::Gl& g, const Camera& camera, const Eigen::Vector3d& eye,
-             const Lighting& lights, bool shadows) {
-  const GLuint p = g.lit;
+// The lighting uniforms (kLighting) of program `p`, current, for a view
+// through `camera` from `eye` under `lights`.
+void set_lighting(GLuint p, const Camera& camera, const Eigen::Vector3d& eye,
+                  const Lighting& lights) {
   glUseProgram(p);
   set_matrix(p, "view_projection", (camera.projection() * camera.view()).cast<float>());
   const Eigen::Vector3f key = lights.key.cast<float>(), fill = lights.fill.cast<float>();
@@ -154,6 +158,13 @@ void use_lit(GlRenderer::Gl& g, const Camera& camera, const Eigen::Vector3d& eye
   glUniform1f(glGetUniformLocation(p, "specular"), 0.22f);
   const Eigen::Vector3f e = eye.cast<float>();
   glUniform3fv(glGetUniformLocation(p, "eye"), 1, e.data());
+}
+
+// The lit program, current, with its uniforms for a view from `eye` under `lights`.
+void use_lit(GlRenderer::Gl& g, const Camera& camera, const Eigen::Vector3d& eye,
+             const Lighting& lights, bool shadows) {
+  const GLuint p = g.lit;
+  set_lighting(p, camera, eye, lights);
   glUniform1i(glGetUniformLocation(p, "shadows"), shadows ? 1 : 0);
   set_matrix(p, "light_view_projection", g.light_view_projection);
   glUniform1f(glGetUniformLocation(p, "shadow_texel"), g.shadow_texel);
@@ -161,8 +172,6 @@ void use_lit(GlRenderer::Gl& g, const Camera& camera, const Eigen::Vector3d& eye
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, shadows ? g.shadow_map : 0);
   glUniform1i(glGetUniformLocation(p, "shadow_map"), 0);
-  glUniform1f(glGetUniformLocation(p, "fade"), 0.0f);
-  glUniform3f(glGetUniformLocation(p, "fade_color"), 1.0f, 1.0f, 1.0f);
 }
 
 void draw_grid(GlRenderer::Gl& g, const LineSet& grid, const Eigen::Matrix4f& view_projection) {
@@ -201,9 +210,10 @@ void scissor(const Viewport& v, int frame_height) {
 }
 
 // The inset into its rectangle: cleared to its background, the scene faded
-// toward it (where the hand is, not what to read), then its paths over
-// everything in order (desired band, traced line, hand), flat. Lights as in
-// the panel's view `main`; no shadows (faded, they would not show).
+// toward it (where the hand is, not what to read; lit per vertex, the faded
+// program), then its paths over everything in order (desired band, traced
+// line, hand), flat. Lights as in the panel's view `main`; no shadows
+// (faded, they would not show).
 void draw_inset(GlRenderer::Gl& g, const Inset& inset, const Camera& main, const Viewport& v,
                 int frame_height) {
   set_viewport(v, frame_height);
@@ -211,15 +221,14 @@ void draw_inset(GlRenderer::Gl& g, const Inset& inset, const Camera& main, const
   scissor(v, frame_height);
   glClearColor(inset.background.r, inset.background.g, inset.background.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  use_lit(g, inset.camera, inset.camera.eye, view_lighting(main), false);
-  glUniform1f(glGetUniformLocation(g.lit, "fade"), inset.fade);
-  glUniform3f(glGetUniformLocation(g.lit, "fade_color"), inset.background.r, inset.background.g,
-              inset.background.b);
+  set_lighting(g.faded, inset.camera, inset.camera.eye, view_lighting(main));
+  glUniform1f(glGetUniformLocation(g.faded, "fade"), inset.fade);
+  glUniform3f(glGetUniformLocation(g.faded, "fade_color"), inset.background.r,
+              inset.background.g, inset.background.b);
   for (const Group group : {arm, ground}) {
     cull_to_window(g.instances[group], inset.camera, g.culled);
     draw_shapes(g, g.culled, {inset.camera, v.height, 1.0 - inset.fade});
   }
-  glUniform1f(glGetUniformLocation(g.lit, "fade"), 0.0f);
   // The paths in their own colours, unlit: a program of their own (in the
   // lit one, llvmpipe ran the whole lighting for them under a mask).
   glUseProgram(g.unlit);

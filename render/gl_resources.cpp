@@ -7,9 +7,9 @@ namespace elbowsim {
 
 namespace {
 
-GLuint compile(GLenum type, const char* source) {
+GLuint compile(GLenum type, std::initializer_list<const char*> source) {
   const GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
+  glShaderSource(shader, GLsizei(source.size()), source.begin(), nullptr);
   glCompileShader(shader);
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -41,7 +41,8 @@ void check_framebuffer(const char* what) {
 
 }  // namespace
 
-GLuint link_program(const char* vertex, const char* fragment) {
+GLuint link_program(std::initializer_list<const char*> vertex,
+                    std::initializer_list<const char*> fragment) {
   const GLuint program = glCreateProgram();
   const GLuint vs = compile(GL_VERTEX_SHADER, vertex), fs = compile(GL_FRAGMENT_SHADER, fragment);
   glAttachShader(program, vs);
@@ -162,6 +163,7 @@ void delete_all(GlRenderer::Gl& g) {
   glDeleteFramebuffers(1, &g.resolve_fbo);
   glDeleteProgram(g.lit);
   glDeleteProgram(g.unlit);
+  glDeleteProgram(g.faded);
   glDeleteProgram(g.flat);
   glDeleteProgram(g.depth);
   if (g.shadow_fbo) glDeleteFramebuffers(1, &g.shadow_fbo);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <initializer_list>
 
 #include "render/gl_api.hpp"
 #include "render/gl_renderer.hpp"
@@ -22,7 +23,7 @@ struct MeshBuffers {
 inline constexpr int kShadowMapSize = 1024;  // [texels] per side
 
 struct GlRenderer::Gl {
-  GLuint lit = 0, unlit = 0, flat = 0, depth = 0;  // programs
+  GLuint lit = 0, unlit = 0, faded = 0, flat = 0, depth = 0;  // programs
   // Per shape its meshes: one, or for a round shape (is_round) one per
   // level of detail (level_of_detail.hpp), coarsest first.
   std::array<std::vector<MeshBuffers>, shape_count> meshes;
@@ -42,7 +43,10 @@ inline bool is_round(int shape) {
   return shape == sphere || shape == dome || shape == cylinder || shape == shaft;
 }
 
-GLuint link_program(const char* vertex, const char* fragment);  // throws on errors
+// A program from its stages' sources, each given in pieces joined in order;
+// throws on errors.
+GLuint link_program(std::initializer_list<const char*> vertex,
+                    std::initializer_list<const char*> fragment);
 MeshBuffers upload(const Mesh& mesh);
 // GL_LINES of 3-float positions (the grid), refilled per frame.
 void make_line_buffer(GlRenderer::Gl& g);

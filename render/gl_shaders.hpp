@@ -1,13 +1,18 @@
 // The renderer's GLSL 3.30 core programs, as source text (gl_renderer.cpp
 // compiles them): lit instanced shapes with a shadow-mapped key light, their
-// depth from the light for the shadow map, and flat lines (the grid).
+// depth from the light for the shadow map, the inset's faded scene and
+// paths, and flat lines (the grid).
 #pragma once
 
 namespace elbowsim::shaders {
 
+// Each program is linked from pieces (link_program joins them in order), so
+// that the lit and faded programs share their instance inputs and lighting.
+inline constexpr const char* kVersion = "#version 330 core\n";
+
 // Per instance: the model matrix (4 vec4), the normal matrix (inverse
 // transpose of its linear part, 3 vec3) and a colour.
-inline constexpr const char* kLitVertex = R"(#version 330 core
+inline constexpr const char* kInstanceInputs = R"(
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec4 model0;
@@ -19,6 +24,34 @@ layout(location = 7) in vec3 normal1;
 layout(location = 8) in vec3 normal2;
 layout(location = 9) in vec4 color;
 uniform mat4 view_projection;
+)";
+
+// Blinn-Phong:
+//   c = ambient k + sum over lights of s_i L_i (max(n.l, 0) k + specular max(n.h, 0)^48),
+//   h = (l + v)/|l + v|,
+// where s_0 is the key light's visibility (from the shadow map, or 1) and
+// s_1 = 1. light_term is light i's diffuse and specular terms for the base
+// colour k; zero where the light is behind the face.
+inline constexpr const char* kLighting = R"(
+uniform vec3 eye;
+uniform vec3 light_direction[2];
+uniform vec3 light_color[2];
+uniform float ambient;
+uniform float specular;
+vec3 light_term(int i, vec3 n, vec3 v, vec3 k) {
+  vec3 l = light_direction[i];
+  float diffuse = max(dot(n, l), 0.0);
+  // (n.h)^48 by squaring: cheaper than pow() on llvmpipe.
+  float s1 = max(dot(n, normalize(l + v)), 0.0);
+  float s2 = s1 * s1, s4 = s2 * s2, s8 = s4 * s4, s16 = s8 * s8;
+  float shine = diffuse > 0.0 ? s16 * s16 * s16 : 0.0;
+  return light_color[i] * (diffuse * k + specular * shine);
+}
+)";
+
+// The lit program's vertex stage: world position and normal per vertex,
+// lighting per fragment.
+inline constexpr const char* kLitVertex = R"(
 uniform mat4 light_view_projection;
 uniform float shadow_texel;
 out vec3 world_position;
@@ -39,96 +72,82 @@ void main() {
 }
 )";
 
-// Blinn-Phong, per fragment:
-//   c = ambient k + sum over lights of s_i L_i (max(n.l, 0) k + specular max(n.h, 0)^48),
-//   h = (l + v)/|l + v|,
-// where s_0, the key light's visibility, comes from the shadow map (1 without
-// shadows) and s_1 = 1. The map is looked up where the vertex shader put the
-// point in the light's view (per vertex: per pixel, that transform cost 15 %
-// of a video's CPU), with one bilinear depth comparison (the four nearest
-// texels compared and blended). In shadow the key keeps `shadow_keep` of its
-// light, so shadowed faces keep their form.
-// Then the colour is mixed `fade` of the way toward fade_color (the inset's
-// faded scene).
-inline constexpr const char* kLitFragment = R"(#version 330 core
+// Lighting per fragment. The key light's visibility comes from the shadow
+// map, looked up where the vertex stage put the point in the light's view
+// (per vertex: per pixel, that transform cost 15 % of a video's CPU), with
+// one bilinear depth comparison (the four nearest texels compared and
+// blended). In shadow the key keeps `shadow_keep` of its light, so shadowed
+// faces keep their form.
+// No loop and no branch around the shadow lookup: llvmpipe runs every branch
+// of a group of fragments under a mask, so a lookup inside a loop over the
+// lights would be paid once per light.
+inline constexpr const char* kLitFragment = R"(
 in vec3 world_position;
 in vec3 world_normal;
 in vec3 base_color;
 in vec3 shadow_coord;
-uniform vec3 eye;
-uniform vec3 light_direction[2];
-uniform vec3 light_color[2];
-uniform float ambient;
-uniform float specular;
 uniform int shadows;
 uniform sampler2DShadow shadow_map;
 uniform float shadow_keep;
-uniform float fade;
-uniform vec3 fade_color;
 out vec4 frag_color;
-
 float key_visibility() {
   if (shadows == 0) return 1.0;
   return mix(shadow_keep, 1.0, texture(shadow_map, shadow_coord));
 }
-
-// The light i's diffuse and specular terms; zero where the light is behind
-// the face.
-vec3 light_term(int i, vec3 n, vec3 v) {
-  vec3 l = light_direction[i];
-  float diffuse = max(dot(n, l), 0.0);
-  // (n.h)^48 by squaring: cheaper than pow() on llvmpipe.
-  float s1 = max(dot(n, normalize(l + v)), 0.0);
-  float s2 = s1 * s1, s4 = s2 * s2, s8 = s4 * s4, s16 = s8 * s8;
-  float shine = diffuse > 0.0 ? s16 * s16 * s16 : 0.0;
-  return light_color[i] * (diffuse * base_color + specular * shine);
-}
-
-// No loop and no branch around the shadow lookup: llvmpipe runs every branch
-// of a group of fragments under a mask, so a lookup inside a loop over the
-// lights would be paid once per light.
 void main() {
   vec3 n = normalize(world_normal);
   vec3 v = normalize(eye - world_position);
   vec3 c = ambient * base_color;
-  c += key_visibility() * light_term(0, n, v);
-  c += light_term(1, n, v);
-  frag_color = vec4(mix(min(c, vec3(1.0)), fade_color, fade), 1.0);
+  c += key_visibility() * light_term(0, n, v, base_color);
+  c += light_term(1, n, v, base_color);
+  frag_color = vec4(min(c, vec3(1.0)), 1.0);
 }
 )";
 
-// The inset's paths in their base colours as they are, no lighting: linked
-// with kLitVertex, so their positions are the lit program's.
-inline constexpr const char* kUnlitFragment = R"(#version 330 core
+// The inset's faded scene: lit per vertex (Gouraud), no shadows, then mixed
+// `fade` of the way toward fade_color. Per fragment it cost a tenth of a
+// render's CPU; at 28 % contrast the difference hardly shows (README). Drawn
+// with kUnlitFragment, which takes base_color as it is.
+inline constexpr const char* kFadedVertex = R"(
+uniform float fade;
+uniform vec3 fade_color;
+out vec3 base_color;
+void main() {
+  vec4 p = mat4(model0, model1, model2, model3) * vec4(position, 1.0);
+  gl_Position = view_projection * p;
+  vec3 n = normalize(mat3(normal0, normal1, normal2) * normal);
+  vec3 v = normalize(eye - p.xyz);
+  vec3 c = ambient * color.rgb + light_term(0, n, v, color.rgb) + light_term(1, n, v, color.rgb);
+  base_color = mix(min(c, vec3(1.0)), fade_color, fade);
+}
+)";
+
+// A colour as it is, no lighting: the inset's paths (with kLitVertex, so
+// their positions are the lit program's) and its faded scene (kFadedVertex).
+inline constexpr const char* kUnlitFragment = R"(
 in vec3 base_color;
 out vec4 frag_color;
 void main() { frag_color = vec4(base_color, 1.0); }
 )";
 
 // Depth from the key light, for the shadow map: the same instances, no colour.
-inline constexpr const char* kDepthVertex = R"(#version 330 core
-layout(location = 0) in vec3 position;
-layout(location = 2) in vec4 model0;
-layout(location = 3) in vec4 model1;
-layout(location = 4) in vec4 model2;
-layout(location = 5) in vec4 model3;
-uniform mat4 view_projection;
+inline constexpr const char* kDepthVertex = R"(
 void main() {
   gl_Position = view_projection * mat4(model0, model1, model2, model3) * vec4(position, 1.0);
 }
 )";
 
-inline constexpr const char* kDepthFragment = R"(#version 330 core
+inline constexpr const char* kDepthFragment = R"(
 void main() {}
 )";
 
-inline constexpr const char* kFlatVertex = R"(#version 330 core
+inline constexpr const char* kFlatVertex = R"(
 layout(location = 0) in vec3 position;
 uniform mat4 view_projection;
 void main() { gl_Position = view_projection * vec4(position, 1.0); }
 )";
 
-inline constexpr const char* kFlatFragment = R"(#version 330 core
+inline constexpr const char* kFlatFragment = R"(
 uniform vec3 color;
 out vec4 frag_color;
 void main() { frag_color = vec4(color, 1.0); }

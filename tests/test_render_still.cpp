@@ -56,10 +56,9 @@ Run load(const std::string& variant) {
   return run;
 }
 
-// One frame of `source` at t, as every video frame is drawn (without the
-// overlay text, which the writer thread adds); `panel` gets what was drawn.
-Image still(const FrameSource& source, double t, PanelFrame& panel) {
-  panel = prepare_panel(source, t, {0, 0, kWidth, kHeight});
+// A prepared panel drawn as every video frame is (without the overlay text,
+// which the writer thread adds).
+Image draw(const PanelFrame& panel) {
   OsmesaContext context;
   GlRenderer renderer(kWidth, kHeight, 4);
   renderer.begin_frame(panel.scene.background);
@@ -67,6 +66,12 @@ Image still(const FrameSource& source, double t, PanelFrame& panel) {
   Image image{kWidth, kHeight, std::vector<std::uint8_t>(kWidth * kHeight * 4)};
   renderer.end_frame(image.rgba.data());
   return image;
+}
+
+// One frame of `source` at t; `panel` gets what was drawn.
+Image still(const FrameSource& source, double t, PanelFrame& panel) {
+  panel = prepare_panel(source, t, {0, 0, kWidth, kHeight});
+  return draw(panel);
 }
 
 RenderSettings small(RenderSettings s) {
@@ -140,6 +145,39 @@ TEST_CASE("render still: the inset shows the desired path ahead of the hand, the
     }
   CHECK(differ == 0);
   CHECK(inside > r.width * r.height / 2);
+}
+
+TEST_CASE("render still: the inset's scene is faded toward its background by its fade") {
+  const Run run = load("elbow_on");
+  const FrameSource source(run.scenario.model, run.recording, small(run.scenario.render), "on");
+  PanelFrame panel = prepare_panel(source, 1.2, {0, 0, kWidth, kHeight});
+  REQUIRE(panel.inset);
+  Inset& inset = *panel.inset;
+  // Without its paths, the inset holds only its background and the faded scene.
+  inset.desired.pieces.clear();
+  inset.traced.pieces.clear();
+  inset.hand.radius = 0;
+  const Image image = draw(panel);
+  image.save(fs::temp_directory_path() / "elbowsim_render_still_faded.png");
+  // A lit colour c in [0, 1] mixed `fade` toward the background b is
+  // (1 - fade)(c - b) from it: at most (1 - fade) 255 per channel, plus 1 for
+  // rounding. The forearm above the hand fills much of the window (the
+  // inset's clip planes leave the table out): it shows, 4 levels or more from
+  // the background.
+  const PixelRect& r = inset.rect;
+  const double bound = (1.0 - inset.fade) * 255.0 + 1.0;
+  int within = 0, shown = 0;
+  for (int y = r.y; y < r.y + r.height; ++y)
+    for (int x = r.x; x < r.x + r.width; ++x) {
+      const double d = distance(image.at(x, y), inset.background);
+      within += d <= bound;
+      shown += d >= 4;
+    }
+  const int pixels = r.width * r.height;
+  INFO("within ", within, ", shown ", shown, " of ", pixels, " (bound ", bound, ")");
+  CHECK(inset.fade > 0.5f);
+  CHECK(within == pixels);
+  CHECK(shown > pixels / 4);
 }
 
 TEST_CASE("render still: a shadow darkens the table under the elbow-off arm") {
