@@ -1,6 +1,6 @@
 // Video in-process with FFmpeg's libraries (render/video_library.hpp):
 // frames converted to YUV 4:2:0 (BT.709, limited range: render/yuv.hpp),
-// encoded H.264 by libx264 (preset veryfast, subme 1, crf 20, one thread, so
+// encoded H.264 by libx264 (preset veryfast, subme 0, no 8x8 DCT, crf 20, one thread, so
 // the same bytes on every machine; or lossless), tagged BT.709, into an .mp4
 // with its index first (+faststart), as the ffmpeg command below would.
 // Opening one turns transparent huge pages off for the process (x264's
