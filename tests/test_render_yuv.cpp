@@ -79,7 +79,7 @@ TEST_CASE(
     "rgba_to_yuv420: a bottom-up frame (walked in memory order) gives its top-down copy's YUV") {
   std::mt19937 random(11);
   std::uniform_int_distribution<int> byte(0, 255);
-  for (const auto [w, h] : {std::pair{2, 2}, std::pair{6, 4}, std::pair{1280, 10}}) {
+  for (const auto& [w, h] : {std::pair{2, 2}, std::pair{6, 4}, std::pair{1280, 10}}) {
     CAPTURE(w);
     CAPTURE(h);
     std::vector<std::uint8_t> bottom_up_rows(std::size_t(w) * std::size_t(h) * 4);
