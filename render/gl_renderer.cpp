@@ -125,19 +125,20 @@ void set_matrix(GLuint program, const char* name, const Eigen::Matrix4f& m) {
 // into the shadow map: back faces, pushed back a little (polygon offset), so
 // lit faces do not shadow themselves.
 void shadow_pass(GlRenderer::Gl& g, const Scene& scene, const Lighting& lights) {
-  if (!g.shadow_fbo) make_shadow_map(g);
-  const Camera light = shadow_camera(lights.key, scene.shadows.bounds);
+  const ShadowView view = shadow_view(lights.key, scene.shadows.bounds, kShadowMapSize);
+  const Camera& light = view.camera;
+  size_shadow_map(g, view.width, view.height);
   g.light_view_projection = (light.projection() * light.view()).cast<float>();
-  g.shadow_texel = float(light.ortho_height / kShadowMapSize);
+  g.shadow_texel = float(view.texel);
   glBindFramebuffer(GL_FRAMEBUFFER, g.shadow_fbo);
-  glViewport(0, 0, kShadowMapSize, kShadowMapSize);
+  glViewport(0, 0, view.width, view.height);
   glClear(GL_DEPTH_BUFFER_BIT);
   glUseProgram(g.depth);
   set_matrix(g.depth, "view_projection", g.light_view_projection);
   glCullFace(GL_FRONT);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.5f, 2.0f);
-  draw_shapes(g, g.instances[arm], {light, kShadowMapSize});
+  draw_shapes(g, g.instances[arm], {light, view.height});
   glDisable(GL_POLYGON_OFFSET_FILL);
   glCullFace(GL_BACK);
   glBindFramebuffer(GL_FRAMEBUFFER, g.draw_fbo);

@@ -124,13 +124,18 @@ void make_framebuffers(GlRenderer::Gl& g, int width, int height, int samples) {
   check_framebuffer("draw");
 }
 
-void make_shadow_map(GlRenderer::Gl& g) {
-  glGenTextures(1, &g.shadow_map);
+void size_shadow_map(GlRenderer::Gl& g, int width, int height) {
+  if (g.shadow_fbo && width == g.shadow_width && height == g.shadow_height) return;
+  const bool made = g.shadow_fbo != 0;
+  if (!made) glGenTextures(1, &g.shadow_map);
   glBindTexture(GL_TEXTURE_2D, g.shadow_map);
   // 16 bits: over the light's depth range fitted to the scene, far below a
   // texel's size; half the bytes of 24 to clear, write and sample each frame.
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT16, kShadowMapSize, kShadowMapSize, 0,
-               GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT16, width, height, 0, GL_DEPTH_COMPONENT,
+               GL_UNSIGNED_SHORT, nullptr);
+  g.shadow_width = width;
+  g.shadow_height = height;
+  if (made) return;
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   // Outside the map: depth 1, nothing between the point and the light.

@@ -20,7 +20,9 @@ struct MeshBuffers {
   GLsizei index_count = 0;
 };
 
-inline constexpr int kShadowMapSize = 1024;  // [texels] per side
+// [texels] the shadow map's longest side at most; its texel is the shadowed
+// bounds' diagonal over this (lighting.hpp, shadow_view).
+inline constexpr int kShadowMapSize = 1024;
 
 struct GlRenderer::Gl {
   GLuint lit = 0, unlit = 0, faded = 0, flat = 0, depth = 0;  // programs
@@ -34,6 +36,7 @@ struct GlRenderer::Gl {
   GLuint draw_fbo = 0, draw_color = 0, draw_depth = 0;  // multisampled (or the resolve one)
   GLuint resolve_fbo = 0, resolve_color = 0;
   GLuint shadow_fbo = 0, shadow_map = 0;  // made on first use
+  int shadow_width = 0, shadow_height = 0;  // [texels] of shadow_map
   Eigen::Matrix4f light_view_projection = Eigen::Matrix4f::Identity();
   float shadow_texel = 0;  // [m] world size of one texel
 };
@@ -54,9 +57,10 @@ void make_line_buffer(GlRenderer::Gl& g);
 // multisampled colour + depth target `draw_fbo` drawn into and resolved into
 // it (otherwise draw_fbo is resolve_fbo, with a depth buffer).
 void make_framebuffers(GlRenderer::Gl& g, int width, int height, int samples);
-// A kShadowMapSize² depth texture with depth comparison (sampler2DShadow,
-// bilinear) and a framebuffer that renders into it.
-void make_shadow_map(GlRenderer::Gl& g);
+// A width x height depth texture with depth comparison (sampler2DShadow,
+// bilinear) and a framebuffer that renders into it: made on first use,
+// resized when the size changes.
+void size_shadow_map(GlRenderer::Gl& g, int width, int height);
 void delete_all(GlRenderer::Gl& g);
 
 }  // namespace elbowsim

@@ -19,8 +19,15 @@ struct Lighting {
 // beside what casts them; a dim fill from the viewer's right.
 Lighting view_lighting(const Camera& camera);
 
-// The key light's camera for a shadow map: orthographic along -key, square,
-// holding all of `bounds` [m] between its clip planes.
-Camera shadow_camera(const Eigen::Vector3d& key, const Eigen::AlignedBox3d& bounds);
+// The key light's view for a shadow map: orthographic along -key, holding
+// all of `bounds` [m] between its clip planes, in texels of a fixed size (the
+// bounds' diagonal over `max_texels`), as few as hold it.
+struct ShadowView {
+  Camera camera;
+  int width = 0, height = 0;  // [texels] of the map, each at most max_texels
+  double texel = 0;           // [m] side of one texel in the world
+};
+ShadowView shadow_view(const Eigen::Vector3d& key, const Eigen::AlignedBox3d& bounds,
+                       int max_texels);
 
 }  // namespace elbowsim

@@ -79,7 +79,7 @@ TEST_CASE("render camera: --follow hand keeps the hand at the centre, the direct
   CHECK(approx(fixed.camera(1.5, 0.0).eye, fixed.camera(1.5, 0.7).eye, 0));
 }
 
-TEST_CASE("render lighting: a key light from above-left; its shadow camera holds the bounds") {
+TEST_CASE("render lighting: a key light from above-left; its shadow view holds the bounds") {
   Camera c;
   c.eye = Vector3d(1, -2, 1);
   c.target = Vector3d(0.5, 0, 0);
@@ -89,19 +89,36 @@ TEST_CASE("render lighting: a key light from above-left; its shadow camera holds
   CHECK(l.key.z() > 0.8);       // mostly from above
   CHECK(l.key.dot(right) < 0);  // from the left: shadows fall to the right
   const Eigen::AlignedBox3d bounds(Vector3d(-0.1, -0.3, -0.15), Vector3d(1.0, 0.3, 0.6));
-  const Camera s = shadow_camera(l.key, bounds);
+  const ShadowView v = shadow_view(l.key, bounds, 1024);
+  const Camera& s = v.camera;
   CHECK(approx((s.eye - s.target).normalized(), l.key, 1e-12));
+  // Texels of the bounds' diagonal over 1024, square (the projection's pixels
+  // per metre agree both ways), and no more of them than hold the bounds: a
+  // corner on each side of the map, within one texel of its edge.
+  CHECK(v.texel == doctest::Approx(bounds.diagonal().norm() / 1024));
+  CHECK(s.ortho_height * s.aspect / v.width == doctest::Approx(v.texel));
+  CHECK(s.ortho_height / v.height == doctest::Approx(v.texel));
+  CHECK(v.width <= 1024);
+  CHECK(v.height <= 1024);
+  double min_x = 1e9, max_x = -1e9, min_y = 1e9, max_y = -1e9;
   for (int k = 0; k < 8; ++k) {
     const Vector3d p = bounds.corner(Eigen::AlignedBox3d::CornerType(k));
-    const Eigen::Vector2d px = *s.project(p, 1000, 1000);
-    CHECK(px.x() >= 0);
-    CHECK(px.x() <= 1000);
-    CHECK(px.y() >= 0);
-    CHECK(px.y() <= 1000);
+    const Eigen::Vector2d px = *s.project(p, v.width, v.height);
+    min_x = std::min(min_x, px.x()), max_x = std::max(max_x, px.x());
+    min_y = std::min(min_y, px.y()), max_y = std::max(max_y, px.y());
     const double depth = (p - s.eye).dot((s.target - s.eye).normalized());
     CHECK(depth > s.near);
     CHECK(depth < s.far);
   }
+  CHECK(min_x >= 0);
+  CHECK(min_y >= 0);
+  CHECK(max_x <= v.width);
+  CHECK(max_y <= v.height);
+  CHECK(min_x + (v.width - max_x) <= 1.0 + 1e-9);
+  CHECK(min_y + (v.height - max_y) <= 1.0 + 1e-9);
+  // A wide, flat box seen from above takes far fewer texels than the square
+  // around its sphere did (the experiment's bounds: half).
+  CHECK(double(v.width) * v.height < 0.75 * 1024 * 1024);
 }
 
 TEST_CASE("render inset: the plan faces the path's plane; window and scale bar from its extent") {
