@@ -7,7 +7,7 @@
 #   /usr/bin/time gives it (user + sys),
 #   and wall time;
 # - render: `elbowsim render DIR/elbow_off` alone (145 frames, 1280x720,
-#   MSAA 4x, to mp4): frames per second end to end = frames / wall time;
+#   FXAA, to mp4): frames per second end to end = frames / wall time;
 # - start-up: CPU of `elbowsim --version` (perf stat -r 50; skipped without perf).
 # One measurement each per binary per repetition; the load average is printed
 # before each: the machine is shared, so compare binaries within one sitting.

@@ -15,9 +15,12 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
     : gl_(std::make_unique<Gl>()), width_(width), height_(height) {
   Gl& g = *gl_;
   using namespace shaders;
-  g.lit = link_program({kVersion, kInstanceInputs, kLitVertex},
-                       {kVersion, kLighting, kLitFragment});
-  g.unlit = link_program({kVersion, kInstanceInputs, kLitVertex}, {kVersion, kUnlitFragment});
+  g.lit = link_program({kVersion, kInstanceInputs, kShadowCoordinate, kLitVertex},
+                       {kVersion, kLighting, kShadowLookup, kLitFragment});
+  g.flat_face = link_program({kVersion, kInstanceInputs, kLighting, kShadowCoordinate, kFlatFaceVertex},
+                             {kVersion, kShadowLookup, kFlatFaceFragment});
+  g.unlit = link_program({kVersion, kInstanceInputs, kShadowCoordinate, kLitVertex},
+                         {kVersion, kUnlitFragment});
   g.faded = link_program({kVersion, kInstanceInputs, kLighting, kFadedVertex},
                          {kVersion, kUnlitFragment});
   g.flat = link_program({kVersion, kFlatVertex}, {kVersion, kFlatFragment});
@@ -103,12 +106,13 @@ void draw_by_level(GlRenderer::Gl& g, int shape, const std::vector<float>& inst,
     draw_instanced(g.meshes[std::size_t(shape)][level], g.by_level[level]);
 }
 
-// Uploads each shape's instances and draws them, one instanced call per
-// shape (per level of detail for the round ones).
-void draw_shapes(GlRenderer::Gl& g, const ShapeInstances& shapes, const ViewScale& view) {
+// Uploads each shape's instances (but those of shape `except`) and draws
+// them, one instanced call per shape (per level of detail for the round ones).
+void draw_shapes(GlRenderer::Gl& g, const ShapeInstances& shapes, const ViewScale& view,
+                 int except = -1) {
   for (int s = 0; s < shape_count; ++s) {
     const std::vector<float>& inst = shapes[std::size_t(s)];
-    if (inst.empty()) continue;
+    if (inst.empty() || s == except) continue;
     if (is_round(s))
       draw_by_level(g, s, inst, view);
     else
@@ -152,27 +156,30 @@ void set_lighting(GLuint p, const Camera& camera, const Eigen::Vector3d& eye,
   set_matrix(p, "view_projection", (camera.projection() * camera.view()).cast<float>());
   const Eigen::Vector3f key = lights.key.cast<float>(), fill = lights.fill.cast<float>();
   const float directions[6] = {key.x(), key.y(), key.z(), fill.x(), fill.y(), fill.z()};
-  const float colors[6] = {0.72f, 0.72f, 0.72f, 0.22f, 0.22f, 0.24f};
+  const Eigen::Vector3f &kc = lights.key_color, &fc = lights.fill_color;
+  const float colors[6] = {kc.x(), kc.y(), kc.z(), fc.x(), fc.y(), fc.z()};
   glUniform3fv(glGetUniformLocation(p, "light_direction"), 2, directions);
   glUniform3fv(glGetUniformLocation(p, "light_color"), 2, colors);
-  glUniform1f(glGetUniformLocation(p, "ambient"), 0.32f);
-  glUniform1f(glGetUniformLocation(p, "specular"), 0.22f);
+  glUniform1f(glGetUniformLocation(p, "ambient"), lights.ambient);
+  glUniform1f(glGetUniformLocation(p, "specular"), lights.specular);
   const Eigen::Vector3f e = eye.cast<float>();
   glUniform3fv(glGetUniformLocation(p, "eye"), 1, e.data());
 }
 
-// The lit program, current, with its uniforms for a view from `eye` under `lights`.
+// The uniforms of the two lit programs (per fragment, and per vertex for
+// flat faces) for a view from `eye` under `lights`; the first one current.
 void use_lit(GlRenderer::Gl& g, const Camera& camera, const Eigen::Vector3d& eye,
              const Lighting& lights, bool shadows) {
-  const GLuint p = g.lit;
-  set_lighting(p, camera, eye, lights);
-  glUniform1i(glGetUniformLocation(p, "shadows"), shadows ? 1 : 0);
-  set_matrix(p, "light_view_projection", g.light_view_projection);
-  glUniform1f(glGetUniformLocation(p, "shadow_texel"), g.shadow_texel);
-  glUniform1f(glGetUniformLocation(p, "shadow_keep"), 0.3f);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_2D, shadows ? g.shadow_map : 0);
-  glUniform1i(glGetUniformLocation(p, "shadow_map"), 0);
+  for (const GLuint p : {g.flat_face, g.lit}) {
+    set_lighting(p, camera, eye, lights);
+    glUniform1i(glGetUniformLocation(p, "shadows"), shadows ? 1 : 0);
+    set_matrix(p, "light_view_projection", g.light_view_projection);
+    glUniform1f(glGetUniformLocation(p, "shadow_texel"), g.shadow_texel);
+    glUniform1f(glGetUniformLocation(p, "shadow_keep"), 0.3f);
+    glUniform1i(glGetUniformLocation(p, "shadow_map"), 0);
+  }
 }
 
 void draw_grid(GlRenderer::Gl& g, const LineSet& grid, const Eigen::Matrix4f& view_projection) {
@@ -259,7 +266,25 @@ void GlRenderer::draw(const Scene& scene, const Camera& camera, const Viewport& 
   if (inset) draw_inset(g, inset->inset, camera, inset->viewport, height_);
   set_viewport(v, height_);
   use_lit(g, camera, camera.eye, lights, shadows);
-  for (const ShapeInstances& group : g.instances) draw_shapes(g, group, {camera, v.height});
+  for (const ShapeInstances& group : g.instances) draw_shapes(g, group, {camera, v.height}, box);
+  // Boxes last (what the arm hides of a table then fails the depth test
+  // before it is shaded), lit per vertex where no highlight shows on them.
+  g.lit_boxes.clear();
+  g.flat_boxes.clear();
+  for (const ShapeInstances& group : g.instances) {
+    const std::vector<float>& boxes = group[box];
+    for (std::size_t k = 0; k + kInstanceFloats <= boxes.size(); k += kInstanceFloats) {
+      const Eigen::Map<const Eigen::Matrix4f> model(boxes.data() + k);
+      const bool per_vertex = flat_faces_per_vertex_ && !specular_shows(lights, camera.eye, model);
+      std::vector<float>& to = per_vertex ? g.flat_boxes : g.lit_boxes;
+      to.insert(to.end(), boxes.begin() + std::ptrdiff_t(k),
+                boxes.begin() + std::ptrdiff_t(k + kInstanceFloats));
+    }
+  }
+  draw_instanced(g.meshes[box].front(), g.lit_boxes);
+  glUseProgram(g.flat_face);
+  draw_instanced(g.meshes[box].front(), g.flat_boxes);
+  glBindVertexArray(0);
   draw_grid(g, scene.grid, (camera.projection() * camera.view()).cast<float>());
 }
 

@@ -49,6 +49,10 @@ class GlRenderer {
   };
   void draw(const Scene& scene, const Camera& camera, const Viewport& viewport,
             const InsetView* inset = nullptr);
+  // Boxes whose faces show no highlight are lit per vertex (the default;
+  // within a level of per fragment: lighting.hpp, specular_shows); false:
+  // every box per fragment, as a reference.
+  void set_flat_faces_per_vertex(bool on) { flat_faces_per_vertex_ = on; }
   // Resolves the frame and reads it into rgba (width * height * 4 bytes,
   // RGBA, rows bottom-up as GL stores them), once drawn.
   void end_frame(std::uint8_t* rgba);
@@ -58,6 +62,7 @@ class GlRenderer {
  private:
   std::unique_ptr<Gl> gl_;
   int width_, height_, samples_ = 1;
+  bool flat_faces_per_vertex_ = true;
 };
 
 }  // namespace elbowsim

@@ -167,6 +167,7 @@ void delete_all(GlRenderer::Gl& g) {
   if (g.draw_fbo != g.resolve_fbo) glDeleteFramebuffers(1, &g.draw_fbo);
   glDeleteFramebuffers(1, &g.resolve_fbo);
   glDeleteProgram(g.lit);
+  glDeleteProgram(g.flat_face);
   glDeleteProgram(g.unlit);
   glDeleteProgram(g.faded);
   glDeleteProgram(g.flat);

@@ -25,13 +25,14 @@ struct MeshBuffers {
 inline constexpr int kShadowMapSize = 1024;
 
 struct GlRenderer::Gl {
-  GLuint lit = 0, unlit = 0, faded = 0, flat = 0, depth = 0;  // programs
+  GLuint lit = 0, flat_face = 0, unlit = 0, faded = 0, flat = 0, depth = 0;  // programs
   // Per shape its meshes: one, or for a round shape (is_round) one per
   // level of detail (level_of_detail.hpp), coarsest first.
   std::array<std::vector<MeshBuffers>, shape_count> meshes;
   std::array<std::vector<float>, kSlices.size()> by_level;  // a shape's instances, sorted
   Instances instances;
   ShapeInstances culled;  // a group's instances in the inset's window
+  std::vector<float> lit_boxes, flat_boxes;  // box instances lit per fragment, per vertex
   GLuint line_vao = 0, line_vbo = 0;
   GLuint draw_fbo = 0, draw_color = 0, draw_depth = 0;  // multisampled (or the resolve one)
   GLuint resolve_fbo = 0, resolve_color = 0;

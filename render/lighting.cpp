@@ -18,6 +18,44 @@ Lighting view_lighting(const Camera& camera) {
   return out;
 }
 
+namespace {
+
+// Blinn-Phong's specular factor of one light: (n.h)^48, 0 behind the face.
+double shine(const Eigen::Vector3d& n, const Eigen::Vector3d& l, const Eigen::Vector3d& v) {
+  if (n.dot(l) <= 0) return 0;
+  const double s = std::max(n.dot((l + v).normalized()), 0.0);
+  const double s2 = s * s, s4 = s2 * s2, s8 = s4 * s4, s16 = s8 * s8;
+  return s16 * s16 * s16;
+}
+
+}  // namespace
+
+bool specular_shows(const Lighting& lights, const Eigen::Vector3d& eye,
+                    const Eigen::Matrix4f& model) {
+  const Eigen::Matrix3d a = model.topLeftCorner<3, 3>().cast<double>();
+  const Eigen::Vector3d centre = model.col(3).head<3>().cast<double>();
+  const Eigen::Matrix3d normals = a.inverse().transpose();
+  const double key = lights.specular * lights.key_color.maxCoeff();
+  const double fill = lights.specular * lights.fill_color.maxCoeff();
+  constexpr int kGrid = 17;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double side : {-0.5, 0.5}) {
+      const Eigen::Vector3d n = (side * normals.col(axis)).normalized();
+      const Eigen::Vector3d face = centre + side * a.col(axis);
+      if (n.dot(eye - face) <= 0) continue;  // faces away: not seen
+      const Eigen::Vector3d u = 0.5 * a.col((axis + 1) % 3), w = 0.5 * a.col((axis + 2) % 3);
+      for (int i = 0; i < kGrid; ++i)
+        for (int j = 0; j < kGrid; ++j) {
+          const Eigen::Vector3d p =
+              face + (2.0 * i / (kGrid - 1) - 1) * u + (2.0 * j / (kGrid - 1) - 1) * w;
+          const Eigen::Vector3d v = (eye - p).normalized();
+          if (key * shine(n, lights.key, v) + fill * shine(n, lights.fill, v) >= 0.5 / 255)
+            return true;
+        }
+    }
+  return false;
+}
+
 ShadowView shadow_view(const Eigen::Vector3d& key, const Eigen::AlignedBox3d& bounds,
                        int max_texels) {
   const Eigen::Vector3d back = key.normalized();

@@ -8,9 +8,15 @@
 
 namespace elbowsim {
 
+// Blinn-Phong's terms (gl_shaders.hpp kLighting): ambient k + sum over the
+// lights of colour (max(n.l, 0) k + specular max(n.h, 0)^48).
 struct Lighting {
   Eigen::Vector3d key = Eigen::Vector3d::UnitZ();   // unit, toward the key light (casts shadows)
   Eigen::Vector3d fill = Eigen::Vector3d::UnitX();  // unit, toward the fill light
+  Eigen::Vector3f key_color{0.72f, 0.72f, 0.72f};
+  Eigen::Vector3f fill_color{0.22f, 0.22f, 0.24f};
+  float ambient = 0.32f;
+  float specular = 0.22f;
 };
 
 // Lights that follow the view: the key mostly from above (world z), a little
@@ -18,6 +24,15 @@ struct Lighting {
 // faces toward the camera and shadows fall to the right, where they show
 // beside what casts them; a dim fill from the viewer's right.
 Lighting view_lighting(const Camera& camera);
+
+// Whether the specular terms reach half a level (of 255) anywhere on a face
+// of a box seen from `eye`: the unit box [-1/2, 1/2]^3 placed by `model`
+// (an instance's transform), each face that faces the eye sampled on a
+// 17 x 17 grid. A highlight is about 19 degrees of view across at half its
+// height, so such a grid does not step over one on a face in view. Where
+// none shows, lighting a box per vertex is within a level of per fragment.
+bool specular_shows(const Lighting& lights, const Eigen::Vector3d& eye,
+                    const Eigen::Matrix4f& model);
 
 // The key light's view for a shadow map: orthographic along -key, holding
 // all of `bounds` [m] between its clip planes, in texels of a fixed size (the

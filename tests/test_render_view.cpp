@@ -79,6 +79,27 @@ TEST_CASE("render camera: --follow hand keeps the hand at the centre, the direct
   CHECK(approx(fixed.camera(1.5, 0.0).eye, fixed.camera(1.5, 0.7).eye, 0));
 }
 
+TEST_CASE("render lighting: a highlight shows on a box seen along its mirror direction only") {
+  // A 0.7 x 0.6 x 0.1 m table top at z = 0; the key light from straight
+  // above. Seen from straight above, the top mirrors the light into the
+  // eye: full highlight. Seen at a grazing angle from far to the side, n.h
+  // is about cos(40 deg) on the top and the light is behind the sides: none.
+  Lighting l;
+  l.key = Vector3d(0, 0, 1);
+  l.fill = Vector3d(1, 0, 0);
+  Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
+  model.topLeftCorner<3, 3>() = Eigen::Vector3f(0.7f, 0.6f, 0.1f).asDiagonal();
+  model(2, 3) = -0.05f;
+  CHECK(specular_shows(l, Vector3d(0, 0, 2), model));
+  CHECK_FALSE(specular_shows(l, Vector3d(0, -3, 0.2), model));
+  // Off to the side of the top but still looking down on it: the highlight
+  // is at the mirror point of the eye, inside the top, between grid points.
+  CHECK(specular_shows(l, Vector3d(0.13, 0.07, 1.5), model));
+  // No specular at all: never.
+  l.specular = 0;
+  CHECK_FALSE(specular_shows(l, Vector3d(0, 0, 2), model));
+}
+
 TEST_CASE("render lighting: a key light from above-left; its shadow view holds the bounds") {
   Camera c;
   c.eye = Vector3d(1, -2, 1);
