@@ -24,6 +24,8 @@ layout(location = 7) in vec3 normal1;
 layout(location = 8) in vec3 normal2;
 layout(location = 9) in vec4 color;
 uniform mat4 view_projection;
+vec4 placed_position() { return mat4(model0, model1, model2, model3) * vec4(position, 1.0); }
+vec3 placed_normal() { return mat3(normal0, normal1, normal2) * normal; }
 )";
 
 // Blinn-Phong:
@@ -47,6 +49,8 @@ vec3 light_term(int i, vec3 n, vec3 v, vec3 k) {
   float shine = diffuse > 0.0 ? s16 * s16 * s16 : 0.0;
   return light_color[i] * (diffuse * k + specular * shine);
 }
+// Everything but the key light: ambient and the fill light.
+vec3 unshadowed_light(vec3 n, vec3 v, vec3 k) { return ambient * k + light_term(1, n, v, k); }
 )";
 
 // Where a world point (p, normal n) is in the shadow map: the light's view
@@ -86,9 +90,9 @@ out vec3 world_normal;
 out vec3 base_color;
 out vec3 shadow_coord;
 void main() {
-  vec4 p = mat4(model0, model1, model2, model3) * vec4(position, 1.0);
+  vec4 p = placed_position();
   world_position = p.xyz;
-  world_normal = mat3(normal0, normal1, normal2) * normal;
+  world_normal = placed_normal();
   base_color = color.rgb;
   gl_Position = view_projection * p;
   shadow_coord = shadow_coordinate(p.xyz, world_normal);
@@ -107,9 +111,7 @@ out vec4 frag_color;
 void main() {
   vec3 n = normalize(world_normal);
   vec3 v = normalize(eye - world_position);
-  vec3 c = ambient * base_color;
-  c += key_visibility() * light_term(0, n, v, base_color);
-  c += light_term(1, n, v, base_color);
+  vec3 c = unshadowed_light(n, v, base_color) + key_visibility() * light_term(0, n, v, base_color);
   frag_color = vec4(min(c, vec3(1.0)), 1.0);
 }
 )";
@@ -126,11 +128,11 @@ out vec3 unshadowed;  // ambient and the fill light
 out vec3 key_light;   // the key light's part, before its visibility
 out vec3 shadow_coord;
 void main() {
-  vec4 p = mat4(model0, model1, model2, model3) * vec4(position, 1.0);
+  vec4 p = placed_position();
   gl_Position = view_projection * p;
-  vec3 n = normalize(mat3(normal0, normal1, normal2) * normal);
+  vec3 n = normalize(placed_normal());
   vec3 v = normalize(eye - p.xyz);
-  unshadowed = ambient * color.rgb + light_term(1, n, v, color.rgb);
+  unshadowed = unshadowed_light(n, v, color.rgb);
   key_light = light_term(0, n, v, color.rgb);
   shadow_coord = shadow_coordinate(p.xyz, n);
 }
@@ -152,11 +154,11 @@ uniform float fade;
 uniform vec3 fade_color;
 out vec3 base_color;
 void main() {
-  vec4 p = mat4(model0, model1, model2, model3) * vec4(position, 1.0);
+  vec4 p = placed_position();
   gl_Position = view_projection * p;
-  vec3 n = normalize(mat3(normal0, normal1, normal2) * normal);
+  vec3 n = normalize(placed_normal());
   vec3 v = normalize(eye - p.xyz);
-  vec3 c = ambient * color.rgb + light_term(0, n, v, color.rgb) + light_term(1, n, v, color.rgb);
+  vec3 c = unshadowed_light(n, v, color.rgb) + light_term(0, n, v, color.rgb);
   base_color = mix(min(c, vec3(1.0)), fade_color, fade);
 }
 )";
@@ -172,7 +174,7 @@ void main() { frag_color = vec4(base_color, 1.0); }
 // Depth from the key light, for the shadow map: the same instances, no colour.
 inline constexpr const char* kDepthVertex = R"(
 void main() {
-  gl_Position = view_projection * mat4(model0, model1, model2, model3) * vec4(position, 1.0);
+  gl_Position = view_projection * placed_position();
 }
 )";
 
