@@ -17,8 +17,9 @@ GlRenderer::GlRenderer(int width, int height, int msaa)
   using namespace shaders;
   g.lit = link_program({kVersion, kInstanceInputs, kShadowCoordinate, kLitVertex},
                        {kVersion, kLighting, kShadowLookup, kLitFragment});
-  g.flat_face = link_program({kVersion, kInstanceInputs, kLighting, kShadowCoordinate, kFlatFaceVertex},
-                             {kVersion, kShadowLookup, kFlatFaceFragment});
+  g.flat_face =
+      link_program({kVersion, kInstanceInputs, kLighting, kShadowCoordinate, kFlatFaceVertex},
+                   {kVersion, kShadowLookup, kFlatFaceFragment});
   g.unlit = link_program({kVersion, kInstanceInputs, kShadowCoordinate, kLitVertex},
                          {kVersion, kUnlitFragment});
   g.faded = link_program({kVersion, kInstanceInputs, kLighting, kFadedVertex},
@@ -83,6 +84,12 @@ void draw_instanced(const MeshBuffers& mesh, const std::vector<float>& inst) {
                           GLsizei(inst.size() / kInstanceFloats));
 }
 
+// Appends the instance at float k of `from` to `to`.
+void append_instance(const std::vector<float>& from, std::size_t k, std::vector<float>& to) {
+  to.insert(to.end(), from.begin() + std::ptrdiff_t(k),
+            from.begin() + std::ptrdiff_t(k + kInstanceFloats));
+}
+
 // A round shape's instances sorted by their level of detail in `view` (the
 // radius: the larger of the model's first two columns, times the view's
 // contrast; measured at the instance's origin, moved half its axis up for
@@ -98,9 +105,7 @@ void draw_by_level(GlRenderer::Gl& g, int shape, const std::vector<float>& inst,
     const double radius = std::max(model.col(0).head<3>().norm(), model.col(1).head<3>().norm());
     const double px =
         radius * view.contrast * view.camera.pixels_per_metre(at.cast<double>(), view.height);
-    std::vector<float>& to = g.by_level[std::size_t(detail_level(px))];
-    to.insert(to.end(), inst.begin() + std::ptrdiff_t(k),
-              inst.begin() + std::ptrdiff_t(k + kInstanceFloats));
+    append_instance(inst, k, g.by_level[std::size_t(detail_level(px))]);
   }
   for (std::size_t level = 0; level < g.by_level.size(); ++level)
     draw_instanced(g.meshes[std::size_t(shape)][level], g.by_level[level]);
@@ -167,7 +172,7 @@ void set_lighting(GLuint p, const Camera& camera, const Eigen::Vector3d& eye,
 }
 
 // The uniforms of the two lit programs (per fragment, and per vertex for
-// flat faces) for a view from `eye` under `lights`; the first one current.
+// flat faces) for a view from `eye` under `lights`; the per-fragment one current.
 void use_lit(GlRenderer::Gl& g, const Camera& camera, const Eigen::Vector3d& eye,
              const Lighting& lights, bool shadows) {
   glActiveTexture(GL_TEXTURE0);
@@ -179,6 +184,22 @@ void use_lit(GlRenderer::Gl& g, const Camera& camera, const Eigen::Vector3d& eye
     glUniform1f(glGetUniformLocation(p, "shadow_texel"), g.shadow_texel);
     glUniform1f(glGetUniformLocation(p, "shadow_keep"), 0.3f);
     glUniform1i(glGetUniformLocation(p, "shadow_map"), 0);
+  }
+}
+
+// Every group's boxes into g.lit_boxes and g.flat_boxes: per vertex (flat)
+// where `per_vertex` allows and no face shows a highlight seen from `eye`.
+void sort_boxes(GlRenderer::Gl& g, const Lighting& lights, const Eigen::Vector3d& eye,
+                bool per_vertex) {
+  g.lit_boxes.clear();
+  g.flat_boxes.clear();
+  for (const ShapeInstances& group : g.instances) {
+    const std::vector<float>& boxes = group[box];
+    for (std::size_t k = 0; k + kInstanceFloats <= boxes.size(); k += kInstanceFloats) {
+      const Eigen::Map<const Eigen::Matrix4f> model(boxes.data() + k);
+      const bool flat = per_vertex && !specular_shows(lights, eye, model);
+      append_instance(boxes, k, flat ? g.flat_boxes : g.lit_boxes);
+    }
   }
 }
 
@@ -231,8 +252,8 @@ void draw_inset(GlRenderer::Gl& g, const Inset& inset, const Camera& main, const
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   set_lighting(g.faded, inset.camera, inset.camera.eye, view_lighting(main));
   glUniform1f(glGetUniformLocation(g.faded, "fade"), inset.fade);
-  glUniform3f(glGetUniformLocation(g.faded, "fade_color"), inset.background.r,
-              inset.background.g, inset.background.b);
+  glUniform3f(glGetUniformLocation(g.faded, "fade_color"), inset.background.r, inset.background.g,
+              inset.background.b);
   for (const Group group : {arm, ground}) {
     cull_to_window(g.instances[group], inset.camera, g.culled);
     draw_shapes(g, g.culled, {inset.camera, v.height, 1.0 - inset.fade});
@@ -269,18 +290,8 @@ void GlRenderer::draw(const Scene& scene, const Camera& camera, const Viewport& 
   for (const ShapeInstances& group : g.instances) draw_shapes(g, group, {camera, v.height}, box);
   // Boxes last (what the arm hides of a table then fails the depth test
   // before it is shaded), lit per vertex where no highlight shows on them.
-  g.lit_boxes.clear();
-  g.flat_boxes.clear();
-  for (const ShapeInstances& group : g.instances) {
-    const std::vector<float>& boxes = group[box];
-    for (std::size_t k = 0; k + kInstanceFloats <= boxes.size(); k += kInstanceFloats) {
-      const Eigen::Map<const Eigen::Matrix4f> model(boxes.data() + k);
-      const bool per_vertex = flat_faces_per_vertex_ && !specular_shows(lights, camera.eye, model);
-      std::vector<float>& to = per_vertex ? g.flat_boxes : g.lit_boxes;
-      to.insert(to.end(), boxes.begin() + std::ptrdiff_t(k),
-                boxes.begin() + std::ptrdiff_t(k + kInstanceFloats));
-    }
-  }
+  sort_boxes(g, lights, camera.eye, flat_faces_per_vertex_);
+  glUseProgram(g.lit);
   draw_instanced(g.meshes[box].front(), g.lit_boxes);
   glUseProgram(g.flat_face);
   draw_instanced(g.meshes[box].front(), g.flat_boxes);

@@ -31,12 +31,12 @@ struct GlRenderer::Gl {
   std::array<std::vector<MeshBuffers>, shape_count> meshes;
   std::array<std::vector<float>, kSlices.size()> by_level;  // a shape's instances, sorted
   Instances instances;
-  ShapeInstances culled;  // a group's instances in the inset's window
+  ShapeInstances culled;                     // a group's instances in the inset's window
   std::vector<float> lit_boxes, flat_boxes;  // box instances lit per fragment, per vertex
   GLuint line_vao = 0, line_vbo = 0;
   GLuint draw_fbo = 0, draw_color = 0, draw_depth = 0;  // multisampled (or the resolve one)
   GLuint resolve_fbo = 0, resolve_color = 0;
-  GLuint shadow_fbo = 0, shadow_map = 0;  // made on first use
+  GLuint shadow_fbo = 0, shadow_map = 0;    // made on first use
   int shadow_width = 0, shadow_height = 0;  // [texels] of shadow_map
   Eigen::Matrix4f light_view_projection = Eigen::Matrix4f::Identity();
   float shadow_texel = 0;  // [m] world size of one texel

@@ -66,30 +66,31 @@ ShadowView shadow_view(const Eigen::Vector3d& key, const Eigen::AlignedBox3d& bo
   const Eigen::Matrix3d frame = frame_with_z(back);
   Eigen::Matrix<double, 3, 8> corners;
   for (int k = 0; k < 8; ++k) corners.col(k) = bounds.corner(Eigen::AlignedBox3d::CornerType(k));
+  using Along = Eigen::RowVectorXd;  // the corners' coordinates along one direction
+  const auto along = [&](const Eigen::Vector3d& d) -> Along { return d.transpose() * corners; };
+  const auto span = [](const Along& x) { return x.maxCoeff() - x.minCoeff(); };
+  const auto ends = [](const Along& x) { return x.maxCoeff() + x.minCoeff(); };
   Eigen::Vector3d right = frame.col(0);
   double best_area = std::numeric_limits<double>::infinity();
   for (int degree = 0; degree < 90; ++degree) {  // a rectangle turned by 90 degrees is the same
     const double a = degree * std::numbers::pi / 180;
     const Eigen::Vector3d u = std::cos(a) * frame.col(0) + std::sin(a) * frame.col(1);
-    const Eigen::RowVectorXd pu = u.transpose() * corners, pv = back.cross(u).transpose() * corners;
-    const double area = (pu.maxCoeff() - pu.minCoeff()) * (pv.maxCoeff() - pv.minCoeff());
+    const double area = span(along(u)) * span(along(back.cross(u)));
     if (area < best_area) best_area = area, right = u;
   }
   const Eigen::Vector3d up = back.cross(right);
-  const Eigen::RowVectorXd pu = right.transpose() * corners, pv = up.transpose() * corners,
-                           pd = back.transpose() * corners;
+  const Along pu = along(right), pv = along(up), pd = along(back);
   ShadowView s;
   s.texel = diagonal / max_texels;
-  const auto texels = [&](const Eigen::RowVectorXd& x) {
-    return std::clamp(int(std::ceil((x.maxCoeff() - x.minCoeff()) / s.texel)), 1, max_texels);
+  const auto texels = [&](const Along& x) {
+    return std::clamp(int(std::ceil(span(x) / s.texel)), 1, max_texels);
   };
   s.width = texels(pu);
   s.height = texels(pv);
-  const double half_depth = 0.5 * (pd.maxCoeff() - pd.minCoeff());
+  const double half_depth = 0.5 * span(pd);
   const double margin = 0.02 * diagonal;  // the clip planes clear of the bounds
   Camera& c = s.camera;
-  c.target = 0.5 * ((pu.maxCoeff() + pu.minCoeff()) * right + (pv.maxCoeff() + pv.minCoeff()) * up +
-                    (pd.maxCoeff() + pd.minCoeff()) * back);
+  c.target = 0.5 * (ends(pu) * right + ends(pv) * up + ends(pd) * back);  // the middle
   c.eye = c.target + (half_depth + margin) * back;
   c.up = up;
   c.ortho_height = s.height * s.texel;

@@ -182,14 +182,15 @@ TEST_CASE("render still: the inset's scene is faded toward its background by its
   CHECK(shown > pixels / 4);
 }
 
-TEST_CASE("render still: boxes lit per vertex where no highlight shows, within a level of per fragment") {
+TEST_CASE(
+    "render still: boxes lit per vertex where no highlight shows, within a level of per fragment") {
   // The experiment's table and base from every preset, the table in
   // shadow: from the top the table shows a highlight (drawn per fragment
   // then), from the others it does not. A box lit per vertex under a
   // highlight differs by tens of levels.
   const Run run = load("elbow_off");
-  for (const CameraPreset preset : {CameraPreset::three_quarter, CameraPreset::top,
-                                    CameraPreset::front, CameraPreset::side}) {
+  for (const CameraPreset preset :
+       {CameraPreset::three_quarter, CameraPreset::top, CameraPreset::front, CameraPreset::side}) {
     INFO("preset ", std::string(to_string(preset)));
     RenderSettings settings = small(run.scenario.render);
     settings.camera.preset = preset;
