@@ -15,7 +15,7 @@ constexpr const char* kVersion = "0.1.0";
 
 constexpr const char* kUsage = R"(usage:
   elbowsim run SCENARIO [--out DIR] [--set key=value ...] [--no-render] [--no-report]
-                       [--expect EXPR ...] [--check-step] [--jobs N]
+                       [--expect EXPR ...] [--no-check-step] [--jobs N]
                                                             simulate, write outputs
   elbowsim validate SCENARIO [--set key=value ...]          load, check, print the model
   elbowsim sweep SCENARIO --key KEY --values V1,V2,... [--out DIR] [run options]
@@ -82,7 +82,9 @@ cxxopts::Options make_options() {
                                                   cxxopts::value<std::vector<std::string>>())(
       "no-render", "run: skip output.video and output.frames")("no-report",
                                                                "run: skip report.html and plots")(
-      "check-step", "run, sweep: rerun each valid run at half the step; summary.json step_check")(
+      "check-step", "run, sweep: the step check (the default; kept for older scripts)")(
+      "no-check-step",
+      "run, sweep: skip the step check (each valid run again, refined: summary.json step_check)")(
       "expect", "run, report, compare: a check over summary.json metrics (repeatable)",
       cxxopts::value<std::vector<std::string>>())(
       "camera", "render: camera preset or eye=..,target=..,fov=..", cxxopts::value<std::string>())(
@@ -132,7 +134,7 @@ elbowsim::RunArguments run_arguments(const cxxopts::ParseResult& parsed, const s
   if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
   args.render = !parsed.count("no-render");
   args.report = !parsed.count("no-report");
-  args.check_step = parsed.count("check-step") > 0;
+  args.check_step = !parsed.count("no-check-step");
   args.expect = strings(parsed, "expect");
   return args;
 }

@@ -142,6 +142,11 @@ struct WarningOptions {
   // [m] the hand farther than this from its desired point at some sample (a
   // task): 1 mm, a visible miss for a hand writing or placing on a table.
   double hand_error = 1e-3;
+  // A body the scene does not plan to rest on the table (a link's own solid,
+  // or an elbow the task holds above it) resting for more than this share of
+  // the run: the arm leans on something no result accounts for. 1 %: a brief
+  // graze passes, a forearm lying on the table for a tenth of the run does not.
+  double unplanned_contact_share = 0.01;
 };
 
 // Revolute joint i: the frame of link i is the frame of link i-1 (or the base)

@@ -133,6 +133,11 @@ std::vector<std::string> overlay_lines(const std::string& title, const Model& mo
       line += format(", %.1f mm above the table", 1e3 * std::max(*e.distance, 0.0));
     lines.push_back(line);
   }
+  // A link's own solid resting (not an elbow): named only while it rests.
+  for (std::size_t j = 0; j < state.links.size(); ++j)
+    if (state.links[j].resting)
+      lines.push_back("link" + std::to_string(j) +
+                      format(" (not an elbow): %.2f N resting", state.links[j].fn));
   return lines;
 }
 

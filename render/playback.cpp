@@ -67,6 +67,11 @@ Playback::Playback(const Model& model, const Recording& rec) : dof_(model.dof) {
     landings_.push_back(edges(rest_.back(), time_, true));
     lifts_.push_back(edges(rest_.back(), time_, false));
   }
+  if (L.has_contact())
+    for (int j = 0; j < dof_; ++j) {
+      link_fn_.push_back(column(rec, L.link_force(j), rows));
+      link_rest_.push_back(column(rec, L.link_resting(j), rows));
+    }
   energy_in_ = column(rec, L.energy(Energy::in), rows);
   // Hand path: drop samples closer than 1 mm to the last kept one.
   for (std::size_t r = 0; !hand_.empty() && r < rows; ++r) {
@@ -124,6 +129,8 @@ PlaybackState Playback::at(double t) const {
     e.lifted_at = last_before(lifts_[k], s.t);
     s.elbows.push_back(e);
   }
+  for (std::size_t j = 0; j < link_fn_.size(); ++j)
+    s.links.push_back({lerp(link_fn_[j], b), link_rest_[j][b.row] > 0.5});
   if (!energy_in_.empty()) s.energy_in = lerp(energy_in_, b);
   return s;
 }
@@ -158,6 +165,8 @@ std::vector<Eigen::Vector3d> Playback::full_hand_path(double t) const {
 double Playback::max_force() const {
   double out = 0;
   for (const std::vector<double>& f : fn_)
+    for (double x : f) out = std::max(out, x);
+  for (const std::vector<double>& f : link_fn_)
     for (double x : f) out = std::max(out, x);
   return out;
 }

@@ -28,11 +28,18 @@ struct ElbowSample {
   std::optional<double> distance;
 };
 
+// A link's own solid against the table (fn_link<j>, rest_link<j>).
+struct LinkContactSample {
+  double fn = 0;         // [N] normal force on the link's solid, linear between samples
+  bool resting = false;  // held from the sample at or before t
+};
+
 struct PlaybackState {
   double t = 0;                         // [s]
   Eigen::VectorXd q;                    // [dof] joint angles [rad]
   std::optional<Eigen::Vector3d> hand;  // [m] world, if recorded
   std::vector<ElbowSample> elbows;      // [model.elbows]
+  std::vector<LinkContactSample> links;  // [dof] when link contact was recorded, else empty
   std::optional<double> energy_in;      // [J] E_in so far, if recorded
 };
 
@@ -61,7 +68,7 @@ class Playback {
   std::vector<Eigen::Vector3d> full_hand_path(double t) const;
   // Every recorded desired hand position (hand_d_*); empty if not recorded.
   const std::vector<Eigen::Vector3d>& full_desired_hand_path() const { return desired_all_; }
-  // The largest recorded normal force of any elbow [N] (0 if none recorded).
+  // The largest recorded normal force of any elbow or link [N] (0 if none recorded).
   double max_force() const;
   // The whole desired hand path (hand_d_x/y/z), independent of t: the first
   // sample, then samples at least 1 mm from the last kept one, and always the
@@ -85,6 +92,8 @@ class Playback {
   std::vector<std::vector<double>> distance_;  // [elbows][rows] (empty column: not recorded)
   std::vector<std::vector<double>> landings_;  // [elbows] touchdown times
   std::vector<std::vector<double>> lifts_;     // [elbows] lift-off times
+  std::vector<std::vector<double>> link_fn_;   // [dof][rows] or empty (no link contact recorded)
+  std::vector<std::vector<double>> link_rest_; // [dof][rows] or empty
   std::vector<double> energy_in_;              // [rows] or empty
   std::vector<std::size_t> path_rows_;         // rows kept for hand_path
   std::vector<Eigen::Vector3d> desired_path_;  // [m] world, or empty

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "engine/data.hpp"
+#include "engine/contact/primitives.hpp"
 #include "engine/dynamics/kinematics.hpp"
 
 namespace elbowsim {
@@ -148,7 +150,50 @@ void add_elbows(const Model& model, const Data& data, const PlaybackState& state
     const Eigen::Vector3d n = table_up(model, centre);
     const Eigen::Vector3d tail = centre + elbow.radius * n;
     scene.forces.push_back({tail, tail + length * n, std::max(kArrowRadius * elbow.radius, 0.002),
-                            options.style.force, int(k), sample.fn});
+                            options.style.force, int(k), -1, sample.fn});
+  }
+}
+
+// Where link j's own solid rests, seen from above the table (normal n): over
+// the lowest of its primitives' ends (balls and segment ends; the middle of
+// those within 1 mm of the lowest), on the solid's top, where an elbow's
+// arrow starts too.
+std::optional<Eigen::Vector3d> link_contact_top(const Data& data, int j, const Eigen::Vector3d& n) {
+  struct End {
+    Eigen::Vector3d centre;
+    double radius;
+  };
+  std::vector<End> ends;
+  double lowest = INFINITY;
+  for (const Primitive& p : data.contact.geometry.primitives) {
+    if (p.elbow >= 0 || p.link != j) continue;
+    for (const Eigen::Vector3d& local : {p.a, p.b}) {
+      ends.push_back({point_position(data, j, local), p.radius});
+      lowest = std::min(lowest, n.dot(ends.back().centre) - p.radius);
+    }
+  }
+  if (ends.empty()) return std::nullopt;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (const End& e : ends)
+    if (n.dot(e.centre) - e.radius <= lowest + 1e-3) sum += e.centre + e.radius * n, ++count;
+  return sum / count;
+}
+
+// At each resting link solid pushed by the table, an arrow from its lowest
+// point along the table normal (the sum of its contacts' forces, drawn at one
+// place): a forearm lying on the table shows its load as an elbow does.
+void add_link_forces(const Model& model, const Data& data, const PlaybackState& state,
+                     Scene& scene, const SceneOptions& options) {
+  for (std::size_t j = 0; j < state.links.size(); ++j) {
+    const LinkContactSample& s = state.links[j];
+    const double length = s.fn * options.force_scale;
+    if (!s.resting || length <= 0) continue;
+    const Eigen::Vector3d n = table_up(model, point_position(data, int(j), Eigen::Vector3d::Zero()));
+    const std::optional<Eigen::Vector3d> point = link_contact_top(data, int(j), n);
+    if (!point) continue;
+    const double radius = std::max(kArrowRadius * model.links[j].radius, 0.002);
+    scene.forces.push_back({*point, *point + length * n, radius, options.style.force, -1, int(j), s.fn});
   }
 }
 
@@ -202,6 +247,7 @@ Scene build_scene(const Model& model, Data& kinematics, const PlaybackState& sta
   scene.base = base_plate(model, data, style);
   add_links(model, data, scene, style);
   add_elbows(model, data, state, scene, options);
+  add_link_forces(model, data, state, scene, options);
   scene.hand_path = {hand_path, kPathRadius, style.hand_path};
   if (!desired_path.empty())
     scene.desired_hand_path = {desired_path, kDesiredRadius, style.desired_hand_path};

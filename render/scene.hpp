@@ -50,7 +50,8 @@ struct Arrow {
   Eigen::Vector3d tail = Eigen::Vector3d::Zero(), tip = Eigen::Vector3d::Zero();  // [m] world
   double radius = 0;  // [m] of the shaft
   Color color;
-  int elbow = -1;    // index into Model::elbows
+  int elbow = -1;    // index into Model::elbows; -1 for a link's own solid
+  int link = -1;     // the link whose own solid the table pushes (elbow -1)
   double force = 0;  // [N]
 };
 
@@ -133,7 +134,7 @@ struct Scene {
   std::vector<Capsule> links;       // [dof] joint origin -> tip, link radius
   std::vector<Cylinder> joints;     // [dof] housing at each joint origin, along its axis
   std::vector<ElbowMarker> elbows;  // [model elbows]
-  std::vector<Arrow> forces;        // one per resting elbow with fn > 0
+  std::vector<Arrow> forces;        // one per resting elbow, then per resting link solid, with fn > 0
   std::vector<ContactCue> cues;     // per elbow near the table, with a recorded distance
   Polyline hand_path;               // traced hand positions up to now
   Polyline desired_hand_path;       // whole desired hand path (hand_d_*); empty if none

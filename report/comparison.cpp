@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 
+#include "report/headline.hpp"
 #include "report/metrics.hpp"
 
 namespace elbowsim::report {
@@ -129,6 +130,25 @@ bool controller_knows_everything(const RunData& run) {
   return exact_model && continuous;
 }
 
+// The runs whose step check puts `metric` below its integration floor
+// (step_check.metrics.<metric>.below_floor): a comparison of it would compare
+// integration errors.
+std::vector<std::string> runs_below_floor(const std::vector<RunData>& runs, const std::string& metric) {
+  std::vector<std::string> out;
+  for (const RunData& run : runs)
+    if (report::below_floor(run, metric)) out.push_back(run.label);
+  return out;
+}
+
+std::string no_verdict_below_floor(const std::string& what, const std::vector<std::string>& runs) {
+  std::string names;
+  for (const std::string& r : runs) names += (names.empty() ? "" : ", ") + r;
+  return what + ": no verdict. The value of " + names +
+         " is below its integration floor (under 10 times its change when the run is refined: "
+         "the step check), so it measures the integrator, not the arm; a smaller step or "
+         "tolerance would make it a result.";
+}
+
 bool all_zero(const Comparison& table, const std::string& path) {
   for (const ComparedMetric& m : table.metrics)
     if (m.path == path) {
@@ -163,8 +183,16 @@ std::vector<std::string> verdict(const std::vector<RunData>& runs, const Compari
     sentences.push_back("No verdict: comparing numbers needs every run to be valid.");
     return sentences;
   }
+  // A part resting that the scene does not plan to rest changes what is
+  // compared: said before any number.
+  for (const RunData& run : runs)
+    for (const std::string& rest : unplanned_rests(run))
+      sentences.push_back(run.label + ": the table also carried " + rest +
+                          "; this run's numbers are those of an arm leaning on that part too.");
   if (all_zero(table, "energy_final.electrical_in"))
     sentences.push_back("No run drew electrical energy (energy_final.electrical_in is 0 in all).");
+  else if (const auto low = runs_below_floor(runs, "energy_in"); !low.empty())
+    sentences.push_back(no_verdict_below_floor("Electrical energy", low));
   else
     for (auto& s :
          smaller_is_better(table, "energy_final.electrical_in", "less", "electrical energy"))
@@ -175,6 +203,10 @@ std::vector<std::string> verdict(const std::vector<RunData>& runs, const Compari
     if (m.path == "metrics.hand_error_rms") accuracy = "metrics.hand_error_rms";
   if (!accuracy) {
     sentences.push_back("Hand accuracy is not compared: no run recorded a hand_error column.");
+    return sentences;
+  }
+  if (const auto low = runs_below_floor(runs, "hand_error_rms"); !low.empty()) {
+    sentences.push_back(no_verdict_below_floor("Hand accuracy", low));
     return sentences;
   }
   std::vector<std::string> errors = smaller_is_better(table, accuracy, "smaller", "RMS hand error");

@@ -27,6 +27,22 @@ double number(const RunData& run, const std::string& path) {
 
 bool has(const RunData& run, const std::string& path) { return at(run, path) != nullptr; }
 
+// The metric behind a headline path: its name in the step check.
+std::string checked_metric(const std::string& path) {
+  if (path == "energy_final.electrical_in") return "energy_in";
+  if (path == "energy_final.joule") return "joule";
+  return path.rfind("metrics.", 0) == 0 ? path.substr(8) : "";
+}
+
+// "below the integration floor (9.43 nm; it moves by 4.4 nm at half the step)".
+std::string floor_text(const RunData& run, const Json& m, const std::string& unit) {
+  const Json* how = at(run, "step_check.refinement");
+  return "below the integration floor (" + quantity(m.value("value", 0.0), unit) +
+         "; it moves by " + quantity(m.value("floor", 0.0), unit) + " at " +
+         (how && how->is_string() ? how->get<std::string>() : "half the step") +
+         "): not a result";
+}
+
 // A list (per joint) or object (per elbow) of numbers, each with its unit.
 std::string each(const Json& values, const std::string& unit) {
   std::string out;
@@ -68,6 +84,14 @@ std::string force_text(const RunData& run) {
          quantity(number(run, "metrics.elbow_force_mean"), "N") + ", while resting)";
 }
 
+std::string unplanned_text(const RunData& run) {
+  const std::vector<std::string> rests = unplanned_rests(run);
+  if (rests.empty()) return "none";
+  std::string out;
+  for (const std::string& r : rests) out += (out.empty() ? "" : "; ") + r;
+  return out;
+}
+
 // "100 % of the run"; with several elbows "left 40 %, right 100 % of the run".
 std::string rest_text(const Json& fractions) {
   std::string out;
@@ -78,6 +102,30 @@ std::string rest_text(const Json& fractions) {
 }
 
 }  // namespace
+
+// The bodies the scene does not plan to rest (contact.bodies.*.planned: a
+// link's own solid, an elbow held above the table) that rested all the same:
+// "link3 (a link, not a declared elbow) 99 % of the run, mean 8.7 N, peak 14.5 N".
+std::vector<std::string> unplanned_rests(const RunData& run) {
+  std::vector<std::string> out;
+  const Json* bodies = at(run, "contact.bodies");
+  if (!bodies || !bodies->is_object()) return out;
+  for (const auto& [name, b] : bodies->items()) {
+    const double share = b.value("rest_fraction", 0.0);
+    if (b.value("planned", "rest") == "rest" || !(share > 0)) continue;
+    const bool link = b.value("kind", "") == "link";
+    out.push_back(name + (link ? " (a link, not a declared elbow) " : " (held above the table) ") +
+                  percent(share) + " of the run, mean " +
+                  quantity(b.value("force_mean", 0.0), "N") + ", peak " +
+                  quantity(b.value("force_peak", 0.0), "N"));
+  }
+  return out;
+}
+
+const Json* below_floor(const RunData& run, const std::string& metric) {
+  const Json* m = at(run, "step_check.metrics." + metric);
+  return m && m->is_object() && m->value("below_floor", false) ? m : nullptr;
+}
 
 std::string run_title(const RunData& run) {
   const std::string scenario = run.has_summary() ? run.summary.value("scenario", "") : "";
@@ -114,6 +162,7 @@ std::vector<HeadlineItem> headline_items(const std::vector<const RunData*>& runs
       {"motor current, peak per joint", "metrics.current_peak", "A"},
       {"elbow resting", "metrics.rest_fraction", ""},
       {"elbow normal force", "metrics.elbow_force_max", "N"},
+      {"other parts resting on the table", "contact.bodies", ""},
       {"energy balance residual", "balance_residual", "J"},
   };
   std::vector<HeadlineItem> out;
@@ -129,10 +178,12 @@ std::vector<HeadlineItem> headline_items(const std::vector<const RunData*>& runs
 std::string headline_value(const RunData& run, const HeadlineItem& item) {
   const Json* v = at(run, item.path);
   if (!v || v->is_null()) return "—";
+  if (const Json* m = below_floor(run, checked_metric(item.path))) return floor_text(run, *m, item.unit);
   if (item.path == "energy_final.electrical_in") return energy_in_text(run);
   if (item.path == "balance_residual") return residual_text(run);
   if (item.path == "metrics.elbow_force_max") return force_text(run);
   if (item.path == "metrics.rest_fraction") return rest_text(*v);
+  if (item.path == "contact.bodies") return unplanned_text(run);
   if (v->is_array() || v->is_object()) return each(*v, item.unit);
   return v->is_number() ? quantity(v->get<double>(), item.unit) : v->dump();
 }
@@ -145,7 +196,10 @@ std::string headline_sentence(const RunData& run) {
   text += " of " + quantity(s.value("final_time", 0.0), "s") + " simulated";
   if (status != "valid") return text + ". Its numbers below cover what it computed.";
   std::vector<std::string> parts;
-  if (has(run, "metrics.hand_error_rms"))
+  if (below_floor(run, "hand_error_rms"))
+    parts.push_back("the hand error is below the integration floor (it measures the integrator, "
+                    "not the arm; the report's accuracy check gives the numbers)");
+  else if (has(run, "metrics.hand_error_rms"))
     parts.push_back("the hand kept to its path within " +
                     quantity(number(run, "metrics.hand_error_rms"), "m") + " RMS (" +
                     quantity(number(run, "metrics.hand_error_max"), "m") + " at most)");
@@ -161,16 +215,22 @@ std::string headline_sentence(const RunData& run) {
                     rest_text(*rest));
   for (std::size_t k = 0; k < parts.size(); ++k)
     text += (k == 0 ? ": " : k + 1 == parts.size() ? " and " : ", ") + parts[k];
-  return text + ".";
+  text += ".";
+  // What else carried the arm: never left out of a run's first sentence.
+  for (const std::string& rest : unplanned_rests(run))
+    text += " The table also carried " + rest + ".";
+  return text;
 }
 
 std::string accuracy_check(const RunData& run) {
   const Json* check = at(run, "step_check");
   if (!check || !check->is_object())
-    return "not measured (elbowsim run --check-step reruns at half the step and gives the "
-           "accuracy floor)";
+    return "not measured (the run was made with --no-check-step; without it each run is "
+           "repeated refined and its numbers' integration floor stated)";
   if (check->contains("error")) return "failed: " + (*check)["error"].get<std::string>();
-  std::string text = "at half the step (" + quantity(check->value("half_step", 0.0), "s") + ")";
+  std::string text = check->contains("half_step")
+                         ? "at half the step (" + quantity(check->value("half_step", 0.0), "s") + ")"
+                         : "at " + check->value("refinement", std::string("a refined setting"));
   if (!check->value("valid_at_half_step", true)) return text + " the run is NOT VALID";
   const Json& m = check->value("metrics", Json::object());
   std::vector<std::string> changes;
@@ -184,6 +244,11 @@ std::string accuracy_check(const RunData& run) {
   if (changes.empty()) return text + " no metric was compared";
   for (std::size_t k = 0; k < changes.size(); ++k)
     text += (k == 0 ? " " : k + 1 == changes.size() ? " and " : ", ") + changes[k];
+  std::string below;
+  for (const auto& name : check->value("below_floor", Json::array()))
+    below += (below.empty() ? "" : ", ") + name.get<std::string>();
+  if (!below.empty())
+    text += "; below the integration floor (under 10 times their change, so not results): " + below;
   return text;
 }
 

@@ -36,6 +36,15 @@ std::vector<HeadlineItem> headline_items(const std::vector<const RunData*>& runs
 // the energy in with its drawn and regenerated parts); "—" where absent.
 std::string headline_value(const RunData& run, const HeadlineItem& item);
 
+// The parts of the arm the scene does not plan to rest on the table that
+// rested all the same (summary.json contact.bodies), one phrase each:
+// "link3 (a link, not a declared elbow) 99 % of the run, mean 8.7 N, peak 14.5 N".
+std::vector<std::string> unplanned_rests(const RunData& run);
+
+// The step check's entry (step_check.metrics.<metric>: value, floor, ...) of a
+// one-value metric that is below its integration floor, or nullptr.
+const nlohmann::ordered_json* below_floor(const RunData& run, const std::string& metric);
+
 // One or two sentences: the run's status and what it shows.
 std::string headline_sentence(const RunData& run);
 

@@ -32,7 +32,14 @@ void add_hand_path(const std::vector<const RunData*>& runs, const std::string& t
     }
   const HandPathFigures f = hand_path_figures(runs, title);
   add(f.path, folder, "hand_path", f.path_caption, "hand_path", f.path.height, set);
-  if (f.magnified)
+  std::string integrator_noise;  // runs whose hand error is below the integration floor
+  for (const RunData* run : runs)
+    if (below_floor(*run, "hand_error_rms")) integrator_noise += (integrator_noise.empty() ? "" : ", ") + run->label;
+  if (f.magnified && !integrator_noise.empty())
+    set.skipped.push_back("hand_path_error: the hand error of " + integrator_noise +
+                          " is below the integration floor (step check): magnified, it would "
+                          "show the integrator's error, not the arm's");
+  else if (f.magnified)
     add(*f.magnified, folder, "hand_path_error", f.magnified_caption, "hand_path",
         f.magnified->height, set);
   else

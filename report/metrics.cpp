@@ -31,6 +31,12 @@ std::string metric_unit(const std::string& path) {
   if (path == "model.total_mass") return "kg";
   if (path == "contact.max_abs_C") return "m";
   if (path == "contact.max_abs_Jc_qd") return "m/s";
+  if (starts_with(path, "contact.bodies.")) {  // contact.bodies.<body>.<quantity>
+    const std::string quantity = path.substr(path.rfind('.') + 1);
+    if (quantity == "force_mean" || quantity == "force_peak") return "N";
+    if (quantity == "friction_work") return "J";
+    return "";
+  }
   if (starts_with(path, "metrics.")) {  // metrics.<name>[.<joint or elbow>]
     const std::string rest = path.substr(8);
     return elbowsim::metric_unit(rest.substr(0, rest.find('.')));
@@ -53,6 +59,8 @@ nlohmann::ordered_json metrics_json(const Metrics& metrics) {
       case elbowsim::Metric::Shape::per_elbow:
         j[m.name] = nlohmann::ordered_json::object();
         for (std::size_t k = 0; k < m.values.size(); ++k) j[m.name][metrics.elbows[k]] = m.values[k];
+        break;
+      case elbowsim::Metric::Shape::per_body:  // summary.json's contact.bodies holds these
         break;
     }
   }

@@ -37,7 +37,7 @@ struct RunArguments {
   bool render = true;               // false: --no-render (skip output.video / output.frames)
   bool report = true;               // false: --no-report (skip report.html, plots/)
   std::vector<std::string> expect;  // --expect expressions over summary.json
-  bool check_step = false;          // --check-step: rerun at half the step (summary step_check)
+  bool check_step = true;           // false: --no-check-step (no rerun refined, no step_check)
   int render_jobs = 0;  // --jobs: variants drawn at once at most; 0: the cores available
 };
 

@@ -8,12 +8,27 @@
 namespace elbowsim {
 
 Scenario at_half_step(const Scenario& scenario) {
-  std::vector<std::string> overrides{"simulation.step=" + study::exact(scenario.model.options.step / 2),
-                                     "output.every=" + std::to_string(2 * scenario.output.every)};
+  const Options& o = scenario.model.options;
+  std::vector<std::string> overrides{"simulation.integrator=" + std::string(to_string(o.integrator))};
+  if (is_adaptive(o.integrator)) {
+    overrides.push_back("simulation.rtol=" + study::exact(o.rtol / 10));
+    overrides.push_back("simulation.atol=" + study::exact(o.atol / 10));
+  } else {
+    overrides.push_back("simulation.step=" + study::exact(o.step / 2));
+    overrides.push_back("output.every=" + std::to_string(2 * scenario.output.every));
+  }
   // The plan stays sampled as the scenario's: only the integration changes.
   if (scenario.experiment.needs_plan() && scenario.experiment.task.plan_step <= 0)
-    overrides.push_back("task.plan_step=" + study::exact(scenario.model.options.step));
+    overrides.push_back("task.plan_step=" + study::exact(o.step));
   return load_scenario_text(scenario.resolved_yaml, scenario.file, overrides);
+}
+
+std::string refinement_text(const Scenario& scenario) {
+  const Options& o = scenario.model.options;
+  if (is_adaptive(o.integrator)) return "rtol and atol / 10";
+  char text[64];
+  std::snprintf(text, sizeof text, "half the step (%g s)", o.step / 2);
+  return text;
 }
 
 nlohmann::ordered_json check_step(const Scenario& scenario, const RunResult& result) {
@@ -21,23 +36,31 @@ nlohmann::ordered_json check_step(const Scenario& scenario, const RunResult& res
   const Scenario halved = at_half_step(scenario);
   const RunResult half = simulate(halved.model, halved.experiment, RunOptions{halved.output.every, {}});
   nlohmann::ordered_json j;
+  j["refinement"] = refinement_text(scenario);
   j["step"] = h;
-  j["half_step"] = h / 2;
+  if (!is_adaptive(scenario.model.options.integrator)) j["half_step"] = h / 2;
   j["valid_at_half_step"] = half.valid;
   if (!half.valid) j["failure_at_half_step"] = half.failure;
   nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
+  nlohmann::ordered_json below = nlohmann::ordered_json::array();
   for (const Metric& m : result.metrics.list) {
     if (m.shape != Metric::Shape::one) continue;
     const Metric* other = half.metrics.find(m.name);
     if (!other) continue;
     const double a = m.values.front(), b = other->values.front();
     const double scale = std::max(std::abs(a), std::abs(b));
+    const double floor = std::abs(a - b);
+    const bool below_floor = half.valid && std::abs(a) < kFloorFactor * floor;
     metrics[m.name] = {{"unit", m.unit},
                        {"value", a},
                        {"at_half_step", b},
-                       {"relative_change", scale > 0 ? std::abs(a - b) / scale : 0.0}};
+                       {"relative_change", scale > 0 ? floor / scale : 0.0},
+                       {"floor", floor},
+                       {"below_floor", below_floor}};
+    if (below_floor) below.push_back(m.name);
   }
   j["metrics"] = metrics;
+  j["below_floor"] = below;
   return j;
 }
 

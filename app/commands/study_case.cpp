@@ -72,6 +72,9 @@ int run_study_case(const StudyPlan& plan, const study::CaseSpec& c, bool video) 
       args.scenario = plan.design.scenario;
       args.render = video;
       args.report = video;
+      // The step check on a point's first draw (or its only run) states the
+      // integration floor of the point; its other draws share the settings.
+      args.check_step = c.draw <= 0;
       std::vector<RunRecord> records;
       const int code = run_scenario(args, scenario, runs, records);
       if (interrupt_exit_code()) return interrupt_exit_code();

@@ -1,5 +1,9 @@
 #include "app/output/summary_json.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include "engine/contact/primitives.hpp"
 #include "engine/dynamics/energy.hpp"
 #include "engine/run/recorder.hpp"
 #include "report/metrics.hpp"
@@ -24,7 +28,78 @@ nlohmann::ordered_json model_json(const Model& m) {
   return {{"dof", m.dof}, {"total_mass", total_mass}, {"hand_link", m.hand_link}};
 }
 
-nlohmann::ordered_json contact_json(const Model& m, const RunResult& r) {
+// The event counts of each contact body (metrics' order: elbows, then links)
+// from the run's events: a slot belongs to its primitive's elbow or link.
+struct BodyEvents {
+  long landings = 0, releases = 0, sticks = 0, slips = 0;
+};
+
+std::vector<BodyEvents> body_events(const Model& m, const RunResult& r) {
+  const ContactGeometry geometry = contact_geometry(m);
+  const Metrics& metrics = r.metrics;
+  std::vector<BodyEvents> out(metrics.bodies.size());
+  for (const ContactEvent& e : r.events) {
+    if (e.slot < 0 || e.slot >= static_cast<int>(geometry.slots.size())) continue;
+    const Primitive& p = geometry.primitives[std::size_t(geometry.slots[std::size_t(e.slot)].primitive)];
+    for (std::size_t b = 0; b < metrics.bodies.size(); ++b) {
+      const bool same = p.elbow >= 0 ? int(b) == p.elbow && metrics.body_links[b] < 0
+                                     : metrics.body_links[b] == p.link;
+      if (!same) continue;
+      BodyEvents& c = out[b];
+      ++(e.kind == ContactEvent::Kind::landing   ? c.landings
+         : e.kind == ContactEvent::Kind::release ? c.releases
+         : e.kind == ContactEvent::Kind::stick   ? c.sticks
+                                                 : c.slips);
+    }
+  }
+  return out;
+}
+
+// What the scene plans for a body: "rest" (an elbow the task keeps on the
+// table, or any elbow without a task), "above" (an elbow the task holds above
+// it), "none" (a link's own solid: nothing plans it to touch).
+std::string planned(const Scenario& s, const Metrics& metrics, std::size_t b) {
+  if (metrics.body_links[b] >= 0) return "none";
+  const HandTask& task = s.experiment.task;
+  const auto& kept = task.elbows;
+  const bool named = std::find(kept.begin(), kept.end(), metrics.bodies[b]) != kept.end();
+  if (named && task.elbow_clearance > 0) return "above";
+  return "rest";
+}
+
+// Every contact body: where the scene plans it, how long it rested, its
+// forces, friction work and events (one object per body, by name).
+nlohmann::ordered_json bodies_json(const Scenario& s, const RunResult& r) {
+  const Metrics& metrics = r.metrics;
+  const std::vector<BodyEvents> events = body_events(s.model, r);
+  const auto value = [&](const char* name, std::size_t b) {
+    const Metric* m = metrics.find(name);
+    return m ? nlohmann::ordered_json(m->values[b]) : nlohmann::ordered_json(nullptr);
+  };
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  for (std::size_t b = 0; b < metrics.bodies.size(); ++b) {
+    nlohmann::ordered_json body;
+    const int link = metrics.body_links[b];
+    body["kind"] = link < 0 ? "elbow" : "link";
+    body["link"] = link < 0 ? s.model.elbows[b].link : link;
+    body["planned"] = planned(s, metrics, b);
+    body["rest_fraction"] = value("body_rest_fraction", b);
+    body["force_mean"] = value("body_force_mean", b);
+    body["force_peak"] = value("body_force_peak", b);
+    if (s.model.effects.friction) body["friction_work"] = value("body_friction_work", b);
+    body["landings"] = events[b].landings;
+    body["releases"] = events[b].releases;
+    if (s.model.has_coulomb_friction()) {
+      body["sticks"] = events[b].sticks;
+      body["slips"] = events[b].slips;
+    }
+    j[metrics.bodies[b]] = body;
+  }
+  return j;
+}
+
+nlohmann::ordered_json contact_json(const Scenario& s, const RunResult& r) {
+  const Model& m = s.model;
   long landings = 0, releases = 0, sticks = 0, slips = 0;
   for (const ContactEvent& e : r.events) {
     switch (e.kind) {
@@ -49,6 +124,7 @@ nlohmann::ordered_json contact_json(const Model& m, const RunResult& r) {
   j["max_abs_C"] = r.contact.max_abs_C;
   j["max_abs_Jc_qd"] = r.contact.max_abs_Cd;
   j["dependent_steps"] = r.contact.dependent_steps;
+  j["bodies"] = bodies_json(s, r);
   return j;
 }
 
@@ -115,7 +191,7 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   // Where the controller's model differs from the plant ([] when it knows it exactly).
   j["controller_model"] = scenario.controller_model_overrides;
   j["control_loop"] = control_loop_json(scenario.experiment.controller.loop);
-  j["contact"] = contact_json(m, result);
+  j["contact"] = contact_json(scenario, result);
   j["warnings"] = result.warnings;
   if (!result.saturation.empty()) j["saturation_share"] = result.saturation;  // per motor, warnings.hpp
   return j;
@@ -129,6 +205,13 @@ nlohmann::ordered_json summary_shape(const Scenario& scenario, bool step_check) 
   const std::size_t columns = placeholder.trajectory.columns().size();
   placeholder.trajectory.values.assign(2 * columns, 0.0);
   placeholder.trajectory.values[columns] = model.options.duration;  // row 1's time
+  // A link without a solid has no finite distance: it is no contact body.
+  const TrajectoryLayout& layout = placeholder.trajectory.layout;
+  if (layout.has_contact())
+    for (int j = 0; j < model.dof; ++j)
+      if (model.links[std::size_t(j)].collision.kind == LinkCollision::Kind::none)
+        for (std::size_t row : {std::size_t(0), columns})
+          placeholder.trajectory.values[row + std::size_t(layout.link_distance(j))] = INFINITY;
   placeholder.metrics = compute_metrics(placeholder.trajectory);
   if (model.has_motor()) placeholder.saturation.assign(static_cast<std::size_t>(model.dof), 0.0);
   nlohmann::ordered_json shape = run_summary(scenario, placeholder);

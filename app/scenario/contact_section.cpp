@@ -190,11 +190,10 @@ void check_contact_scene(const Value& root, const Model& model) {
 // An elbow or a link that starts deeper in the table than
 // contact.initial_penetration is a scene error: the contact model would have
 // to resolve it by a jump. Blames the elbow's entry, or the link's.
-void check_initial_penetration(const Value& root, const Model& model) {
+void check_initial_penetration(const Value& root, const Model& model, const Eigen::VectorXd& q,
+                               const std::string& pose) {
   if (!model.effects.contact) return;
   Data data(model);
-  const Eigen::VectorXd q =
-      model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
   forward_kinematics(model, data, q);
   for (const Primitive& p : data.contact.geometry.primitives) {
     for (int b = 0; b < static_cast<int>(model.table.size()); ++b) {
@@ -202,9 +201,9 @@ void check_initial_penetration(const Value& root, const Model& model) {
       if (d >= -model.contact.initial_penetration) continue;
       std::ostringstream msg;
       msg << "is " << -d << " m inside table box " << b
-          << " at the initial pose (more than contact.initial_penetration = "
+          << " at " << pose << " (more than contact.initial_penetration = "
           << model.contact.initial_penetration << " m); move the "
-          << (p.elbow >= 0 ? "elbow" : "link") << ", the table or initial.q";
+          << (p.elbow >= 0 ? "elbow" : "link") << ", the table, initial.q or the task";
       if (p.elbow >= 0) root.get("elbows").items()[static_cast<std::size_t>(p.elbow)].fail(msg.str());
       const Value robot = root.get("robot");
       const Value planar = robot.get("planar");

@@ -10,6 +10,7 @@
 #include "app/scenario/overrides.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/scenario/sections.hpp"
+#include "app/scenario/start_checks.hpp"
 
 namespace elbowsim {
 
@@ -89,11 +90,10 @@ void use_urdf_limits(const Value& task, const RobotInfo& robot, HandTask& out) {
 // The sections, in dependency order: effects and robot (dof) before motors,
 // elbows, initial state, inputs and the task. Fills `sets` with the variants:
 // and study: sections (with where each entry is written).
-// `plant`: false for the controller's model, whose table may be believed
-// where the arm's initial pose would be inside it (the arm is where the
-// plant's table is: its start pose is solved on the plant).
+// The checks at the pose the run starts from are load_once's (start_checks.hpp):
+// on the plant only, whose start is solved on its own table.
 Scenario read(const Value& root, const Source& source, OverrideSets& sets,
-              std::vector<VariantSpec::Entry>& beliefs, RobotInfo& robot_info, bool plant = true) {
+              std::vector<VariantSpec::Entry>& beliefs, RobotInfo& robot_info) {
   root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "elbows",
                    "table", "contact", "initial", "simulation", "inputs", "output", "render",
                    "task", "controller", "hand_load", "variants", "validity", "warnings",
@@ -131,7 +131,6 @@ Scenario read(const Value& root, const Source& source, OverrideSets& sets,
   s.output = read_output(root.get("output"), model.name);
   s.render = read_render(root.get("render"));
   finalize_model(model, source);
-  if (plant) check_initial_penetration(root, model);
   const auto texts = [](const VariantSpec& v) {
     std::vector<std::string> out;
     for (const VariantSpec::Entry& e : v.overrides) out.push_back(e.text);
@@ -162,7 +161,7 @@ Model read_believed(const YAML::Node& root, Source source,
   OverrideSets none;
   std::vector<VariantSpec::Entry> no_beliefs;
   RobotInfo robot;
-  Model believed = read(Value(source, copy), source, none, no_beliefs, robot, false).model;
+  Model believed = read(Value(source, copy), source, none, no_beliefs, robot).model;
   auto differs = [&](const char* what, std::size_t a, std::size_t b) {
     if (a == b) return;
     const VariantSpec::Entry& e = beliefs.front();
@@ -225,6 +224,7 @@ Scenario load_once(const std::string& text, const std::string& file, const Appli
         std::make_shared<const Model>(read_believed(root, source, beliefs, scenario.model));
     for (const VariantSpec::Entry& e : beliefs) scenario.controller_model_overrides.push_back(e.text);
   }
+  check_start(Value(source, root), scenario);
   // The scenario as run stands alone: a URDF read from a file goes in as its text.
   if (robot.form == RobotInfo::Form::urdf) root["robot"]["urdf"] = robot.urdf_text;
   YAML::Emitter resolved;

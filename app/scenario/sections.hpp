@@ -71,8 +71,11 @@ std::vector<JointFriction> read_joint_friction(const Value& section, const Value
 // effects.contact: true needs a non-empty elbows list and a table. Call after
 // model.effects and model.elbows are read.
 void check_contact_scene(const Value& root, const Model& model);
-// After finalize(): no elbow starts deeper in the table than allowed.
-void check_initial_penetration(const Value& root, const Model& model);
+// After finalize(): no elbow or link starts deeper in the table than
+// allowed, at joint angles q [rad], the pose the run starts from (`pose`
+// names it in the message: "the initial pose", "the task's first pose").
+void check_initial_penetration(const Value& root, const Model& model, const Eigen::VectorXd& q,
+                               const std::string& pose);
 
 // task, controller, hand_load (optional): the paper's experiment. Call after
 // model.elbows, model.table and model.initial are read; read_controller after

@@ -85,13 +85,15 @@ ValidityOptions read_validity(const Value& validity) {
 WarningOptions read_warnings(const Value& warnings) {
   WarningOptions out;
   if (!warnings.present()) return out;
-  warnings.allow_keys({"saturation_share", "hand_error"});
-  Value share = warnings.get("saturation_share");
-  if (share.present()) {
-    out.saturation_share = share.number();
-    if (!(out.saturation_share >= 0 && out.saturation_share <= 1))
-      share.fail("must be in [0, 1] (got " + format_number(out.saturation_share) + ")");
-  }
+  warnings.allow_keys({"saturation_share", "hand_error", "unplanned_contact_share"});
+  const auto share_in_unit_interval = [&](const char* key, double& value) {
+    const Value share = warnings.get(key);
+    if (!share.present()) return;
+    value = share.number();
+    if (!(value >= 0 && value <= 1)) share.fail("must be in [0, 1] (got " + format_number(value) + ")");
+  };
+  share_in_unit_interval("saturation_share", out.saturation_share);
+  share_in_unit_interval("unplanned_contact_share", out.unplanned_contact_share);
   out.hand_error = value_or(warnings.get("hand_error"), out.hand_error, positive);
   return out;
 }

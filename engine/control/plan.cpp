@@ -240,7 +240,10 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
   }
   feed_forward(model, experiment.controller, data, base, *plan);
   for (std::size_t r = 0; r < base.elbows.size(); ++r)
-    if (model.effects.contact && base.clearance == 0) plan->resting.push_back(base.elbows[r]);
+    if (base.clearance > 0)
+      plan->held.push_back(base.elbows[r]);
+    else if (model.effects.contact)
+      plan->resting.push_back(base.elbows[r]);
   return plan;
 }
 

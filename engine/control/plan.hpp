@@ -20,6 +20,7 @@ struct Plan {
   std::vector<Eigen::VectorXd> v_ff;    // [samples][n] feed-forward voltage [V] (pd_feedforward, force)
   std::vector<Eigen::VectorXd> f_ff;    // [samples][p] elbow forces the feed-forward assumes [N]
   std::vector<int> resting;             // elbows the plan keeps on the table (clearance 0, contact on)
+  std::vector<int> held;                // elbows the plan holds above the table (clearance > 0)
   std::vector<std::string> warnings;    // about the plan (a near-singular pose), for the run's warnings
 
   // The desired hand position at time t, linear between samples (clamped to the ends).

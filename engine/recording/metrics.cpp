@@ -20,7 +20,9 @@ constexpr Vocabulary kVocabulary[] = {
     {"power_peak", "W"},          {"energy_in_per_joint", "J"},
     {"current_peak", "A"},     {"current_rms", "A"},         {"elbow_force_mean", "N"},
     {"elbow_force_min", "N"},  {"elbow_force_max", "N"},     {"time_in_contact", "s"},
-    {"rest_fraction", ""},    {"elbow_force_peak", "N"},    {"elbow_drift_max", "m"}};
+    {"rest_fraction", ""},    {"elbow_force_peak", "N"},    {"elbow_drift_max", "m"},
+    {"body_rest_fraction", ""}, {"body_force_mean", "N"},   {"body_force_peak", "N"},
+    {"body_friction_work", "J"}};
 
 // Sampled series of one recording, with the integrals metrics need.
 struct Series {
@@ -146,6 +148,61 @@ void contact_metrics(const Series& s, Metrics& m) {
   add(m, "elbow_drift_max", Metric::Shape::per_elbow, drift);
 }
 
+// The columns of one contact body: its force, its resting flag and, with
+// friction, its friction loss so far.
+struct BodyColumns {
+  int force, resting, friction;
+};
+
+// Elbows by name, then the links whose solid has a finite distance somewhere.
+std::vector<BodyColumns> contact_bodies(const Series& s, Metrics& m) {
+  const TrajectoryLayout& L = s.rec.layout;
+  std::vector<BodyColumns> columns;
+  for (int k = 0; k < L.elbows(); ++k) {
+    m.bodies.push_back(L.groups().elbows[std::size_t(k)]);
+    m.body_links.push_back(-1);
+    columns.push_back({L.elbow_force(k), L.elbow_resting(k), L.elbow_friction(k)});
+  }
+  for (int j = 0; j < L.dof(); ++j) {
+    bool solid = false;
+    for (std::size_t r = 0; r < s.rows() && !solid; ++r) solid = std::isfinite(s.at(r, L.link_distance(j)));
+    if (!solid) continue;
+    m.bodies.push_back("link" + std::to_string(j));
+    m.body_links.push_back(j);
+    columns.push_back({L.link_force(j), L.link_resting(j), L.link_friction(j)});
+  }
+  return columns;
+}
+
+// Per contact body: rest share, time-weighted mean force while resting (each
+// resting sample holds until the next), peak force, friction work.
+void body_metrics(const Series& s, Metrics& m) {
+  if (!s.rec.layout.has_contact()) return;
+  const std::vector<BodyColumns> bodies = contact_bodies(s, m);
+  const std::size_t count = bodies.size();
+  std::vector<double> fraction(count), mean(count), peak(count), work(count);
+  const double T = s.span();
+  for (std::size_t b = 0; b < count; ++b) {
+    const BodyColumns& c = bodies[b];
+    auto resting = [&](std::size_t r) { return s.at(r, c.resting) >= 0.5; };
+    double held = 0, impulse = 0;
+    for (std::size_t r = 0; r + 1 < s.rows(); ++r)
+      if (resting(r)) {
+        held += s.t[r + 1] - s.t[r];
+        impulse += s.at(r, c.force) * (s.t[r + 1] - s.t[r]);
+      }
+    for (std::size_t r = 0; r < s.rows(); ++r) peak[b] = std::max(peak[b], std::abs(s.at(r, c.force)));
+    fraction[b] = T > 0 ? held / T : (resting(0) ? 1.0 : 0.0);
+    mean[b] = held > 0 ? impulse / held : (resting(0) ? s.at(0, c.force) : 0.0);
+    if (c.friction >= 0) work[b] = s.at(s.rows() - 1, c.friction);
+  }
+  add(m, "body_rest_fraction", Metric::Shape::per_body, fraction);
+  add(m, "body_force_mean", Metric::Shape::per_body, mean);
+  add(m, "body_force_peak", Metric::Shape::per_body, peak);
+  if (s.rec.layout.has_body_friction())
+    add(m, "body_friction_work", Metric::Shape::per_body, work);
+}
+
 }  // namespace
 
 const Metric* Metrics::find(const std::string& name) const {
@@ -176,6 +233,7 @@ Metrics compute_metrics(const Recording& recording) {
   energy_metrics(s, m);
   motor_metrics(s, m);
   contact_metrics(s, m);
+  body_metrics(s, m);
   return m;
 }
 

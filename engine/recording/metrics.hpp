@@ -28,6 +28,15 @@
 //   rest_fraction        -     elbow   share of the run the elbow rests (contact)
 //   elbow_force_peak     N     elbow   largest normal force on the elbow (contact)
 //   elbow_drift_max      m     elbow   largest |d| (signed distance) while it rests (contact)
+//   body_rest_fraction   -     body    share of the run the body rests on the table (contact)
+//   body_force_mean      N     body    its normal force averaged over the time it rests (0: never)
+//   body_force_peak      N     body    its largest normal force
+//   body_friction_work   J     body    energy friction took at it (E_friction_<body> at the end)
+//
+// The contact bodies (shape "body") are everything of the arm that can touch
+// the table: each declared elbow (by name), then each link with a solid of its
+// own ("link<j>"; a link without one records no finite distance and is left
+// out), so that a forearm lying on the table is reported like an elbow.
 #pragma once
 
 #include <string>
@@ -38,16 +47,18 @@
 namespace elbowsim {
 
 struct Metric {
-  enum class Shape { one, per_joint, per_elbow };
+  enum class Shape { one, per_joint, per_elbow, per_body };
   std::string name;            // from the vocabulary above
   std::string unit;            // "m", "J", ...; "" for ratios and counts
   Shape shape = Shape::one;
-  std::vector<double> values;  // 1, dof or elbows values
+  std::vector<double> values;  // 1, dof, elbows or bodies values
 };
 
 struct Metrics {
   std::vector<Metric> list;          // in vocabulary order; absent ones left out
   std::vector<std::string> elbows;   // the names behind per_elbow values
+  std::vector<std::string> bodies;   // the names behind per_body values: elbows, then link<j>
+  std::vector<int> body_links;       // [bodies] the link of a link body; -1 for an elbow
 
   const Metric* find(const std::string& name) const;  // nullptr when absent
   // The value of a one-value metric; throws std::out_of_range when absent.

@@ -54,6 +54,12 @@ TrajectoryLayout::TrajectoryLayout(Groups groups) : groups_(std::move(groups)) {
     for (int j = 0; j < n; ++j) {
       cols.push_back({"fn_link" + std::to_string(j), "N"});
       cols.push_back({"d_link" + std::to_string(j), "m"});
+      cols.push_back({"rest_link" + std::to_string(j), "1"});
+    }
+    if (groups_.friction) {
+      friction_ = size();
+      for (const std::string& e : groups_.elbows) cols.push_back({"E_friction_" + e, "J"});
+      add_joint_columns(cols, "E_friction_link", "J", n);
     }
   }
   // Each energy column's index, recorded as it is laid out (-1: not recorded).
@@ -114,6 +120,7 @@ TrajectoryLayout TrajectoryLayout::from_columns(const std::vector<Column>& colum
         g.elbows.push_back(elbow);
     }
   g.contact = has("E_friction") || has("fn_link0") || !g.elbows.empty();
+  g.friction = g.contact && (has("E_friction_link0") || has("E_friction_link1"));
   g.joint_friction = has("E_joint_friction");
   g.gear = has("E_gear");
   TrajectoryLayout layout(std::move(g));

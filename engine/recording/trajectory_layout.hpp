@@ -11,8 +11,12 @@
 //   hand_x, hand_y, hand_z [m];
 //   hand_d_x, hand_d_y, hand_d_z, hand_error [m] (a desired hand path);
 //   fn_<e> [N], d_<e> [m], rest_<e> [1] (contact);
-//   fn_link<j> [N], d_link<j> [m] (contact: the table's force on link j's own
-//     solid and its signed distance to the nearest box; inf for a link without a solid);
+//   fn_link<j> [N], d_link<j> [m], rest_link<j> [1] (contact: the table's force on
+//     link j's own solid, its signed distance to the nearest box, inf for a link
+//     without a solid, and whether any of its contact points rests);
+//   E_friction_<e> [J] per elbow, then E_friction_link<j> [J] per link (contact with
+//     friction: the energy friction took from the arm at that body so far, E_friction
+//     split by body);
 //   E_in, E_joule, E_viscous, KE_links, KE_rotors, PE, E_magnetic [J];
 //   E_friction, E_normal, E_impact, E_projection [J] (contact);
 //   balance_residual [J].
@@ -45,6 +49,7 @@ class TrajectoryLayout {
     bool desired_hand = false;        // hand_d_*, hand_error
     bool contact = false;             // elbow columns and contact energies
     std::vector<std::string> elbows;  // names, in model order (contact)
+    bool friction = false;            // E_friction_<body> columns: friction loss per body (contact)
     bool joint_friction = false;      // E_joint_friction
     bool gear = false;                // E_gear (gear efficiency below 1)
   };
@@ -80,8 +85,12 @@ class TrajectoryLayout {
   int elbow_force(int k) const { return elbow_ < 0 ? -1 : elbow_ + 3 * k; }
   int elbow_distance(int k) const { return elbow_ < 0 ? -1 : elbow_ + 3 * k + 1; }
   int elbow_resting(int k) const { return elbow_ < 0 ? -1 : elbow_ + 3 * k + 2; }
-  int link_force(int j) const { return link_ < 0 ? -1 : link_ + 2 * j; }
-  int link_distance(int j) const { return link_ < 0 ? -1 : link_ + 2 * j + 1; }
+  int link_force(int j) const { return link_ < 0 ? -1 : link_ + 3 * j; }
+  int link_distance(int j) const { return link_ < 0 ? -1 : link_ + 3 * j + 1; }
+  int link_resting(int j) const { return link_ < 0 ? -1 : link_ + 3 * j + 2; }
+  bool has_body_friction() const { return friction_ >= 0; }
+  int elbow_friction(int k) const { return friction_ < 0 ? -1 : friction_ + k; }
+  int link_friction(int j) const { return friction_ < 0 ? -1 : friction_ + elbows() + j; }
   int energy(Energy e) const;
   int balance_residual() const { return size() - 1; }
   // Index of the elbow called `name`, or -1.
@@ -90,7 +99,8 @@ class TrajectoryLayout {
  private:
   Groups groups_;
   std::vector<Column> columns_;
-  int q_ = 1, current_ = -1, torque_ = -1, hand_ = -1, desired_ = -1, elbow_ = -1, link_ = -1;
+  int q_ = 1, current_ = -1, torque_ = -1, hand_ = -1, desired_ = -1, elbow_ = -1, link_ = -1,
+      friction_ = -1;
   std::array<int, static_cast<std::size_t>(Energy::gear) + 1> energy_index_{};  // energy(): -1 if absent
 };
 

@@ -195,7 +195,9 @@ bool adaptive_step(const Model& model, Data& data, double h_max) {
   const double alpha = 1.0 / order - 0.75 * beta;
   for (;;) {
     trial(model, data, h);
-    const double err = error_norm(o, data.adaptive.error, data.x_start, data.x_b);
+    const int weighed = StateLayout(model).controlled;
+    const double err = error_norm(o, data.adaptive.error.head(weighed), data.x_start.head(weighed),
+                                  data.x_b.head(weighed));
     if (err <= 1.0) {
       const double factor =
           std::clamp(0.9 * std::pow(std::max(err, 1e-10), -alpha) * std::pow(a.error_last, beta), 0.2, 10.0);

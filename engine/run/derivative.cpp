@@ -62,6 +62,24 @@ void energy_rates(const Model& model, Data& data, ConstVec qd, double hand_power
   out[4] = normal;
 }
 
+// E_friction's rate split by contact body (each elbow, then each link): each
+// row's share, fn_r Cd_r - fn_r (Jf qd)_r (the first term on normal rows only),
+// which energy_rates sums. Needs energy_rates' Jf qd at this evaluation.
+void body_friction_rates(const Model& model, const Data& data, Eigen::Ref<Eigen::VectorXd> out) {
+  out.setZero();
+  const ContactData& c = data.contact;
+  if (c.active.empty()) return;
+  const int elbows = static_cast<int>(model.elbows.size());
+  const int pn = c.normal_rows();
+  const int p = pn + static_cast<int>(c.tangent_rows.size());
+  for (int r = 0; r < p; ++r) {
+    const int slot = r < pn ? c.active[std::size_t(r)] : c.tangent_rows[std::size_t(r - pn)].slot;
+    const Primitive& prim = c.primitive_of(slot);
+    out[prim.elbow >= 0 ? prim.elbow : elbows + prim.link] +=
+        (r < pn ? c.fn[r] * c.Cd[r] : 0.0) - c.fn[r] * c.Jf_qd[r];
+  }
+}
+
 // (M + Jm) qdd = tau - B_J + Jf^T fn with Jc qdd = gamma for the resting
 // elbows (eq. 30-33), stuck joints locked (joint friction); plain forward
 // dynamics when none rests.
@@ -109,6 +127,7 @@ void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
   // Friction loss of the sliding joints (a stuck joint does not move: qd_j = 0).
   if (s.joint_friction >= 0) N[s.joint_friction] = -data.joint_friction_torque.dot(qd);
   if (s.gear >= 0) N[s.gear] = data.gear_loss_power;
+  if (s.body_friction >= 0) body_friction_rates(model, data, N.segment(s.body_friction, s.size - s.body_friction));
 }
 
 }  // namespace elbowsim

@@ -9,6 +9,7 @@
 #include "engine/control/plan.hpp"
 #include "engine/dynamics/energy.hpp"
 #include "engine/dynamics/kinematics.hpp"
+#include "engine/run/state_layout.hpp"
 
 namespace elbowsim {
 
@@ -20,6 +21,7 @@ TrajectoryLayout trajectory_layout(const Model& model, bool desired_hand) {
   g.contact = model.effects.contact;
   g.joint_friction = model.effects.joint_friction;
   g.gear = model.gear_losses;
+  g.friction = model.effects.contact && model.effects.friction;
   if (g.contact)
     for (const Elbow& e : model.elbows) g.elbows.push_back(e.name);
   return TrajectoryLayout(std::move(g));
@@ -50,9 +52,16 @@ void write_hand(const Model& model, const TrajectoryLayout& L, const Data& data,
   row[L.hand_error()] = (hand - desired).norm();
 }
 
+// E_friction by body (state_layout.hpp: integrated with the motion).
+void write_body_friction(const TrajectoryLayout& L, const Data& data, int first, double* row) {
+  for (int k = 0; k < L.elbows(); ++k) row[L.elbow_friction(k)] = data.x[first + k];
+  for (int j = 0; j < L.dof(); ++j) row[L.link_friction(j)] = data.x[first + L.elbows() + j];
+}
+
 // Per elbow over its slots (one per table box): the normal force (0 unless a
 // row is on), the distance to the nearest box, resting on any. Per link, over
-// its own solid's slots: the summed normal force and the nearest distance.
+// its own solid's slots: the summed normal force, the nearest distance and
+// resting on any. With friction, the friction loss at each body so far.
 void write_contacts(const Model& model, const TrajectoryLayout& L, const Data& data, double* row) {
   const ContactData& c = data.contact;
   for (int k = 0; k < L.elbows(); ++k) {
@@ -63,10 +72,14 @@ void write_contacts(const Model& model, const TrajectoryLayout& L, const Data& d
   for (int j = 0; j < L.dof(); ++j) {
     row[L.link_force(j)] = 0;
     row[L.link_distance(j)] = std::numeric_limits<double>::infinity();
+    row[L.link_resting(j)] = 0;
   }
   for (int k = 0; k < c.slots(); ++k) {
     const Primitive& p = c.primitive_of(k);
-    if (p.elbow < 0) continue;
+    if (p.elbow < 0) {
+      if (c.resting[k]) row[L.link_resting(p.link)] = 1.0;
+      continue;
+    }
     row[L.elbow_distance(p.elbow)] = std::min(row[L.elbow_distance(p.elbow)], c.detected[k].distance);
     if (c.resting[k]) row[L.elbow_resting(p.elbow)] = 1.0;
   }
@@ -82,6 +95,7 @@ void write_contacts(const Model& model, const TrajectoryLayout& L, const Data& d
     const Primitive& p = c.primitive_of(c.active[r]);
     row[p.elbow >= 0 ? L.elbow_force(p.elbow) : L.link_force(p.link)] += c.fn[r];
   }
+  if (L.has_body_friction()) write_body_friction(L, data, StateLayout(model).body_friction, row);
 }
 
 void write_energies(const TrajectoryLayout& L, const Data& data, double* row) {

@@ -103,6 +103,9 @@ void add_warnings(const Model& model, const Data& data, RunResult& result) {
   if (plan && model.effects.contact)
     append(result.warnings,
            lift_off_warnings(model, data.contact.geometry, result.events, plan->resting));
+  if (model.effects.contact)
+    append(result.warnings, unplanned_contact_warnings(model, result.metrics,
+                                                       plan ? plan->held : std::vector<int>{}));
   append(result.warnings, hand_error_warnings(model, result.trajectory));
   append(result.warnings, model_warnings(model));
   if (plan) append(result.warnings, plan->warnings);

@@ -116,6 +116,36 @@ std::vector<std::string> lift_off_warnings(const Model& model, const ContactGeom
   return out;
 }
 
+std::vector<std::string> unplanned_contact_warnings(const Model& model, const Metrics& metrics,
+                                                    const std::vector<int>& held) {
+  const Metric* share = metrics.find("body_rest_fraction");
+  const Metric* mean = metrics.find("body_force_mean");
+  const Metric* peak = metrics.find("body_force_peak");
+  if (!share || !mean || !peak) return {};
+  std::vector<std::string> out;
+  for (std::size_t b = 0; b < metrics.bodies.size(); ++b) {
+    const int link = metrics.body_links[b];
+    const bool held_elbow =
+        link < 0 && std::find(held.begin(), held.end(), int(b)) != held.end();
+    if ((link < 0 && !held_elbow) || !(share->values[b] > model.warn.unplanned_contact_share))
+      continue;
+    const std::string what =
+        held_elbow ? "elbow '" + metrics.bodies[b] + "', which the task holds above the table,"
+                   : metrics.bodies[b] + " (link " + std::to_string(link) +
+                         "'s own solid, not a declared elbow)";
+    char forces[96];
+    std::snprintf(forces, sizeof forces, "mean %.3g N while resting, peak %.3g N", mean->values[b],
+                  peak->values[b]);
+    out.push_back(what + " rested on the table for " + percent(share->values[b]) + " of the run (" +
+                  forces + "; warnings: unplanned_contact_share " +
+                  percent(model.warn.unplanned_contact_share) +
+                  "): the table carried part of the arm there, so the run's energy and accuracy "
+                  "are those of an arm leaning on it; declare it as an elbow, or raise the arm "
+                  "or the table");
+  }
+  return out;
+}
+
 std::vector<std::string> hand_error_warnings(const Model& model, const Recording& recording) {
   const int column = recording.layout.hand_error();
   if (column < 0 || recording.rows() == 0) return {};

@@ -40,6 +40,14 @@ std::vector<std::string> lift_off_warnings(const Model& model, const ContactGeom
                                            const std::vector<ContactEvent>& events,
                                            const std::vector<int>& planned_resting);
 
+// One sentence per contact body (metrics' body_rest_fraction) the scene does
+// not plan to rest on the table, resting for more than
+// warn.unplanned_contact_share of the run: a link's own solid, or an elbow the
+// task holds above the table (`held`, model elbow indices). Names the body,
+// its share and forces, and what that means for the run's numbers.
+std::vector<std::string> unplanned_contact_warnings(const Model& model, const Metrics& metrics,
+                                                    const std::vector<int>& held);
+
 // One sentence when the hand was farther than warn.hand_error from its
 // desired point at some recorded sample (a task), with when and the RMS.
 std::vector<std::string> hand_error_warnings(const Model& model, const Recording& recording);

@@ -92,6 +92,34 @@ TEST_CASE("metrics: rest_fraction and time_in_contact hold each sample until the
   CHECK(m.find("elbow_drift_max")->values == std::vector<double>{3e-6, 0.0});
 }
 
+TEST_CASE("metrics: every contact body, elbow or link, gets its rest share, forces and friction work") {
+  // 11 samples at 0, 0.1, ..., 1.0 s; 3 links, one elbow. Link 2 rests on samples 2-6
+  // (0.5 s) pushed by 4, 4, 8, 8, 8 N: time-weighted mean (0.2 x 4 + 0.3 x 8) / 0.5 = 6.4 N;
+  // its friction loss grows to 1.5 J (the last sample's). Link 1 has no solid (its distance
+  // infinite throughout): no body.
+  Recording rec = timed({3, false, false, true, {"e"}, true}, 11, 0.1);
+  const TrajectoryLayout& L = rec.layout;
+  for (std::size_t r = 0; r < 11; ++r) {
+    const bool on = r >= 2 && r <= 6;
+    set(rec, r, L.link_resting(2), on ? 1.0 : 0.0);
+    set(rec, r, L.link_force(2), on ? (r <= 3 ? 4.0 : 8.0) : 0.0);
+    set(rec, r, L.link_friction(2), r >= 6 ? 1.5 : on ? 0.3 * double(r - 2) : 0.0);
+    set(rec, r, L.link_distance(1), INFINITY);
+    set(rec, r, L.link_force(0), r == 9 ? 0.5 : 0.0);  // a touch between samples: no rest
+  }
+  const Metrics m = compute_metrics(rec);
+  CHECK(m.bodies == std::vector<std::string>{"e", "link0", "link2"});
+  CHECK(m.body_links == std::vector<int>{-1, 0, 2});
+  const auto values = [&](const char* name) { return m.find(name)->values; };
+  CHECK(approx(values("body_rest_fraction")[2], 0.5, 1e-15));
+  CHECK(values("body_rest_fraction")[1] == 0.0);
+  CHECK(approx(values("body_force_mean")[2], 6.4, 1e-14));
+  CHECK(values("body_force_mean")[1] == 0.0);  // never rested
+  CHECK(values("body_force_peak") == std::vector<double>{0.0, 0.5, 8.0});
+  CHECK(approx(values("body_friction_work")[2], 1.5, 1e-14));
+  CHECK(values("body_friction_work")[0] == 0.0);
+}
+
 TEST_CASE("metrics: hand path length, energy in and Joule loss of a recording") {
   Recording rec = timed({1, false, false, false, {}}, 5, 0.25);
   const TrajectoryLayout& L = rec.layout;
@@ -111,16 +139,21 @@ TEST_CASE("metrics: hand path length, energy in and Joule loss of a recording") 
   CHECK_THROWS_AS(m["current_rms"], std::out_of_range);
 }
 
-TEST_CASE("metrics: every metric's unit is the vocabulary's; only samples and rest_fraction have none") {
-  Recording rec = timed({2, true, true, true, {"elbow"}}, 4, 0.1);
+TEST_CASE("metrics: every metric's unit is the vocabulary's; only samples and rest shares have none") {
+  Recording rec = timed({2, true, true, true, {"elbow"}, true}, 4, 0.1);
   const Metrics m = compute_metrics(rec);
-  CHECK(m.list.size() == 20);  // the whole vocabulary, for a run with everything
+  CHECK(m.list.size() == 24);  // the whole vocabulary, for a run with everything
+  CHECK(m.bodies == std::vector<std::string>{"elbow", "link0", "link1"});
   for (const Metric& metric : m.list) {
     CAPTURE(metric.name);
     CHECK(metric.unit == metric_unit(metric.name));
-    const bool unitless = metric.name == "samples" || metric.name == "rest_fraction";
+    const bool unitless = metric.name == "samples" || metric.name == "rest_fraction" ||
+                          metric.name == "body_rest_fraction";
     CHECK((metric_unit(metric.name) == "") == unitless);
-    CHECK(metric.values.size() == (metric.shape == Metric::Shape::per_joint ? 2u : 1u));  // 1 elbow
+    const std::size_t values = metric.shape == Metric::Shape::per_joint  ? 2u
+                               : metric.shape == Metric::Shape::per_body ? 3u
+                                                                         : 1u;  // 1 elbow
+    CHECK(metric.values.size() == values);
   }
   CHECK(metric_unit("current_rms") == "A");
   CHECK(metric_unit("nonsense") == "");

@@ -29,7 +29,7 @@ std::string refusal(const std::vector<Column>& columns) {
 
 bool same_groups(const Groups& a, const Groups& b) {
   return a.dof == b.dof && a.motors == b.motors && a.desired_hand == b.desired_hand &&
-         a.contact == b.contact && a.elbows == b.elbows;
+         a.contact == b.contact && a.elbows == b.elbows && a.friction == b.friction;
 }
 
 }  // namespace
@@ -44,7 +44,8 @@ TEST_CASE("trajectory layout: the exact columns (golden) of 2 joints, motors, a 
       {"tau1", "N m"},      {"hand_x", "m"},       {"hand_y", "m"},       {"hand_z", "m"},
       {"hand_d_x", "m"},    {"hand_d_y", "m"},     {"hand_d_z", "m"},     {"hand_error", "m"},
       {"fn_elbow", "N"},    {"d_elbow", "m"},      {"rest_elbow", "1"},   {"fn_link0", "N"},
-      {"d_link0", "m"},     {"fn_link1", "N"},     {"d_link1", "m"},      {"E_in", "J"},
+      {"d_link0", "m"},     {"rest_link0", "1"},   {"fn_link1", "N"},     {"d_link1", "m"},
+      {"rest_link1", "1"},  {"E_in", "J"},
       {"E_joule", "J"},     {"E_viscous", "J"},    {"KE_links", "J"},     {"KE_rotors", "J"},
       {"PE", "J"},          {"E_magnetic", "J"},   {"E_friction", "J"},   {"E_normal", "J"},
       {"E_impact", "J"},    {"E_projection", "J"}, {"E_drawn", "J"},      {"E_regenerated", "J"},
@@ -80,8 +81,21 @@ TEST_CASE("trajectory layout: the index accessors point at their columns, -1 whe
   CHECK(name(L.energy(Energy::drawn)) == "E_drawn");
   CHECK(name(L.energy(Energy::regenerated)) == "E_regenerated");
   CHECK(name(L.balance_residual()) == "balance_residual");
+  CHECK(name(L.link_force(1)) == "fn_link1");
+  CHECK(name(L.link_distance(1)) == "d_link1");
+  CHECK(name(L.link_resting(1)) == "rest_link1");
+  CHECK(L.elbow_friction(0) == -1);  // no friction
   CHECK(L.elbow("elbow") == 0);
   CHECK(L.elbow("knee") == -1);
+  Groups with_friction = full_groups();
+  with_friction.friction = true;
+  const TrajectoryLayout F(with_friction);
+  const auto fname = [&](int index) { return F.columns()[std::size_t(index)].name; };
+  CHECK(fname(F.elbow_friction(0)) == "E_friction_elbow");
+  CHECK(fname(F.link_friction(0)) == "E_friction_link0");
+  CHECK(fname(F.link_friction(1)) == "E_friction_link1");
+  CHECK(F.columns()[std::size_t(F.link_friction(1))].unit == "J");
+  CHECK(F.link_friction(1) + 1 == F.energy(Energy::in));
   const TrajectoryLayout bare(Groups{1, false, false, false, {}});
   CHECK(bare.size() == 1 + 3 + 1 + 3 + 7 + 1);
   CHECK(bare.current(0) == -1);
@@ -108,9 +122,9 @@ TEST_CASE("from_columns(columns()) round-trips the groups of every kind of layou
       for (bool desired : {false, true})
         for (const std::vector<std::string>& elbows :
              {std::vector<std::string>{}, {"elbow"}, {"left", "right"}})
-          for (bool contact : {false, true}) {
+          for (int contact = 0; contact < 3; ++contact) {  // off, on, on with friction
             if (!contact && !elbows.empty()) continue;  // elbows are recorded with contact only
-            const Groups g{dof, motors, desired, contact, elbows};
+            const Groups g{dof, motors, desired, contact > 0, elbows, contact == 2};
             const TrajectoryLayout L(g);
             const TrajectoryLayout back = TrajectoryLayout::from_columns(L.columns());
             CAPTURE(dof);
@@ -122,7 +136,7 @@ TEST_CASE("from_columns(columns()) round-trips the groups of every kind of layou
             CHECK(back.size() == L.size());
             ++layouts;
           }
-  CHECK(layouts == 3 * 2 * 2 * 4);
+  CHECK(layouts == 3 * 2 * 2 * 7);
 }
 
 TEST_CASE("from_columns refuses a renamed column, naming its position and the expected name") {
@@ -165,11 +179,11 @@ TEST_CASE("from_columns refuses a missing or an extra column, naming the positio
   const TrajectoryLayout L(full_groups());
   std::vector<Column> missing = L.columns();
   missing.pop_back();
-  CHECK(refusal(missing) == "trajectory column 41 is missing: expected 'balance_residual [J]'");
+  CHECK(refusal(missing) == "trajectory column 43 is missing: expected 'balance_residual [J]'");
   std::vector<Column> middle = L.columns();
-  middle.erase(middle.begin() + 28);  // E_joule
-  CHECK(refusal(middle).find("trajectory column 29 is 'E_viscous [J]', expected 'E_joule [J]'") == 0);
+  middle.erase(middle.begin() + 30);  // E_joule
+  CHECK(refusal(middle).find("trajectory column 31 is 'E_viscous [J]', expected 'E_joule [J]'") == 0);
   std::vector<Column> extra = L.columns();
   extra.push_back({"temperature", "K"});
-  CHECK(refusal(extra) == "trajectory column 42 'temperature [K]' is not a trajectory column");
+  CHECK(refusal(extra) == "trajectory column 44 'temperature [K]' is not a trajectory column");
 }
