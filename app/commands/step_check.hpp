@@ -19,7 +19,8 @@ Scenario at_half_step(const Scenario& scenario);
 // the same instants, and returns {step, half_step, valid_at_half_step,
 // metrics: {name: {unit, value, at_half_step, relative_change}}} for every
 // one-value metric of `result`. Throws ScenarioError (the halved step is not
-// a valid scenario) or PlanError.
+// a valid scenario) or PlanError. SIGINT or SIGTERM (interrupt.hpp) stops
+// the rerun: its numbers are then those of a cut run, not to be used.
 nlohmann::ordered_json check_step(const Scenario& scenario, const RunResult& result);
 
 }  // namespace elbowsim

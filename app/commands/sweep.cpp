@@ -16,6 +16,7 @@
 #include "app/output/folder_lock.hpp"
 #include "app/output/run_folder.hpp"
 #include "report/comparison.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
 
 namespace elbowsim {
@@ -89,7 +90,11 @@ int sweep_command(const SweepArguments& args) {
       std::vector<RunRecord> records;
       const int c = run_scenario(runs[i], scenarios[i], folder / (args.key + "=" + values[i]), records);
       if (c == exit_io) return exit_io;
-      if (interrupt_exit_code()) return interrupt_exit_code();  // no more runs, no table
+      if (interrupt_exit_code()) {  // no more runs, no table (run_scenario said what was kept)
+        std::cerr << "interrupted: the sweep stopped at " << args.key << "=" << values[i]
+                  << "; sweep.csv not written in " << folder.string() << '\n';
+        return interrupt_exit_code();
+      }
       if (code == exit_ok) code = c;
       for (const RunRecord& r : records) {
         row_values.push_back(values[i]);
@@ -104,8 +109,12 @@ int sweep_command(const SweepArguments& args) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_io;
   }
-  std::cout << "sweep of " << args.key << ": " << row_runs.size() << " runs; table in "
-            << (folder / "sweep.csv").string() << '\n';
+  std::cout << "sweep of " << args.key << ": " << counted(static_cast<long long>(row_runs.size()), "run")
+            << "; table in " << (folder / "sweep.csv").string() << '\n';
+  if (interrupt_exit_code()) {  // while the table was written: it is whole; no plots start
+    std::cerr << "interrupted: sweep.csv is written; no plots\n";
+    return interrupt_exit_code();
+  }
   // Plots against the value, when every value is a number.
   std::vector<report::SweepPoint> points;
   for (std::size_t r = 0; r < row_runs.size(); ++r) {

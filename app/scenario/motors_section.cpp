@@ -3,6 +3,7 @@
 // effects.motor is none, so that switching the motor on later cannot fail.
 #include "app/scenario/checks.hpp"
 #include "app/scenario/sections.hpp"
+#include "app/scenario/counted.hpp"
 
 namespace elbowsim::loader {
 
@@ -59,7 +60,7 @@ std::vector<Motor> read_motors(const Value& motors, const Model& model) {
   if (joints.present()) {
     items = joints.items();
     if (items.size() != n)
-      joints.fail("expected " + std::to_string(n) + " entries, one per joint (got " +
+      joints.fail("expected " + counted(static_cast<long long>(n), "entry", "entries") + ", one per joint (got " +
                   std::to_string(items.size()) + ")");
   }
   for (std::size_t i = 0; i < n; ++i) {
