@@ -1,10 +1,10 @@
 // elbowsim: headless simulator for robot arms resting their elbows on a table.
 // --set values are YAML and may hold commas: do not split them.
 #define CXXOPTS_VECTOR_DELIMITER '\0'
-#include <cxxopts.hpp>
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <cxxopts.hpp>
 #include <iostream>
 #include <thread>
 

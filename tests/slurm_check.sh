@@ -115,7 +115,9 @@ for _ in $(seq 100); do
   sleep 0.1
 done
 if [ "$state" != idle ] && grep -qs "Unable to initialize cgroup plugin" "$work"/slurmd*.log; then
-  echo "SKIP: slurmd cannot start here: $(grep -hs "cgroup" "$work"/slurmd*.log | head -n 3 | tr '\n' ' ')"
+  reason=$(grep -hs "cgroup" "$work"/slurmd*.log | sed 's/^\[[^]]*\] //; s/^slurmd: //' |
+    awk '!seen[$0]++ { printf "%s%s", sep, $0; sep = "; " }')
+  echo "SKIP: slurmd cannot start here ($reason)"
   exit 77  # (the EXIT trap stops what was started)
 fi
 [ "$state" = idle ] || fail "the node did not come up (sinfo: '$state')"

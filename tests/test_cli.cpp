@@ -1,13 +1,8 @@
 // The elbowsim command line, run as a process: exit codes, messages, outputs.
 #include <doctest/doctest.h>
-
-#include <chrono>
-
-#include "app/output/folder_lock.hpp"
-#include "support/process.hpp"
-#include "support/scratch.hpp"
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +10,10 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "app/output/folder_lock.hpp"
+#include "support/process.hpp"
+#include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
 
@@ -228,9 +227,9 @@ std::vector<std::string> temporaries(const fs::path& dir) {
   return found;
 }
 
-// Starts `command` in the background, sends it `signal` once `started`
-// exists (polled every 50 ms, 30 s at most), and returns its exit code
-// ("exit=N") followed by what it printed.
+// Starts `command` in the background (stdout and stderr into `log`), sends
+// it `signal` once `started` exists (polled every 50 ms, 30 s at most), and
+// returns its exit code ("exit=N") followed by what it printed.
 Outcome signal_once(const std::string& command, const fs::path& started, const std::string& signal,
                     const fs::path& log) {
   return elbowsim::testing::shell(
@@ -241,7 +240,9 @@ Outcome signal_once(const std::string& command, const fs::path& started, const s
 
 }  // namespace
 
-TEST_CASE("cli: SIGTERM during rendering: exit 143, nothing more started, no partial video, summary.json says interrupted at rendering") {
+TEST_CASE(
+    "cli: SIGTERM during rendering: exit 143, nothing more started, no partial video, summary.json "
+    "says interrupted at rendering") {
   const fs::path dir = scratch("cli", "interrupt_render");
   const fs::path out = dir / "out";
   // The pendulum for 20 s in two variants, each with a 30 fps video, and
@@ -295,6 +296,38 @@ TEST_CASE("cli: SIGTERM during rendering: exit 143, nothing more started, no par
   }
 }
 
+TEST_CASE(
+    "cli: stdout into a file is written line by line; SIGTERM in the second variant's simulation") {
+  // The first variant's line is in the file while the second still
+  // simulates (2000 s at 0.1 ms, far longer than the test waits), as a batch
+  // job's log shows it; block-buffered, it came at the exit. Then SIGTERM.
+  const fs::path dir = scratch("cli", "line_buffered");
+  const fs::path out = dir / "out", log = dir / "run.log";
+  const Outcome r = elbowsim::testing::shell(
+      "(" + std::string(ELBOWSIM_BINARY) + " run " + kPendulum + " --out " + out.string() +
+      " --no-render --no-report --set 'variants={quick: {simulation.duration: 0.5}, long:"
+      " {simulation.duration: 2000, simulation.step: 1.0e-4, output.every: 1000}}' > " +
+      log.string() + " 2>&1 & pid=$!; for i in $(seq 200); do grep -q 'steps to t' " +
+      log.string() + " && break; sleep 0.05; done; kill -0 $pid && grep -q 'steps to t' " +
+      log.string() +
+      " && echo 'seen while running'; kill -TERM $pid; wait $pid; echo \"exit=$?\"; cat " +
+      log.string() + ")");
+  INFO(r.output);
+  CHECK(r.output.find("seen while running") == 0);
+  CHECK(r.output.find("exit=143") != std::string::npos);
+  // The first variant ran whole; the second stopped in its simulation; no comparison.
+  const auto quick = nlohmann::json::parse(slurp(out / "quick" / "summary.json"));
+  CHECK(quick["completed"] == true);
+  CHECK(quick["interrupted"] == true);
+  CHECK(quick["interrupted_stage"] == "comparison");
+  const auto slow = nlohmann::json::parse(slurp(out / "long" / "summary.json"));
+  CHECK(slow["completed"] == false);
+  CHECK(slow["interrupted_stage"] == "simulation");
+  CHECK_FALSE(fs::exists(out / "comparison.csv"));
+  CHECK(r.output.find("interrupted (simulation): " + (out / "long").string() + " keeps ") !=
+        std::string::npos);
+}
+
 TEST_CASE("cli: run with variants prints the comparison's verdict sentences, as compare does") {
   const fs::path dir = scratch("cli", "run_verdict");
   const std::string variants =
@@ -319,37 +352,23 @@ TEST_CASE("cli: run with variants prints the comparison's verdict sentences, as 
   }
 }
 
-TEST_CASE("cli: stdout is written line by line into a pipe, in order with stderr") {
-  // The first variant's line on stdout comes before the second's error on
-  // stderr; block-buffered, stdout's lines came out at the exit, after it.
-  const fs::path dir = scratch("cli", "line_buffered");
-  const Outcome r = run("run " + kPendulum + " --out " + dir.string() +
-                        " --no-render --no-report --set simulation.duration=0.5"
-                        " --set 'variants={calm: {}, wild: {simulation.integrator: euler,"
-                        " simulation.step: 0.05, simulation.duration: 200, inputs: {torque:"
-                        " [{type: constant, value: 1.0e4}, {type: constant, value: 1.0e4}]}}}'");
-  INFO(r.output);
-  CHECK(r.exit_code == 3);
-  const std::size_t calm = r.output.find("two_link_pendulum: 500 steps to t = ");
-  const std::size_t wild = r.output.find("diverged at t = ");
-  REQUIRE(calm != std::string::npos);
-  REQUIRE(wild != std::string::npos);
-  CHECK(calm < wild);
-}
-
 TEST_CASE("cli: the folder's lock file is gone when run and sweep end, also after an error") {
   const fs::path dir = scratch("cli", "lock_removed");
-  REQUIRE(run("run " + kPendulum + " --out " + (dir / "run").string() + " --no-render --no-report").exit_code == 0);
+  REQUIRE(run("run " + kPendulum + " --out " + (dir / "run").string() + " --no-render --no-report")
+              .exit_code == 0);
   CHECK(fs::exists(dir / "run" / "summary.json"));
   CHECK_FALSE(fs::exists(dir / "run" / ".elbowsim.lock"));
-  REQUIRE(run("sweep " + kPendulum + " --key simulation.duration --values 0.1,0.2 --no-render --no-report --out " +
-              (dir / "sweep").string()).exit_code == 0);
+  REQUIRE(run("sweep " + kPendulum +
+              " --key simulation.duration --values 0.1,0.2 --no-render --no-report --out " +
+              (dir / "sweep").string())
+              .exit_code == 0);
   CHECK_FALSE(fs::exists(dir / "sweep" / ".elbowsim.lock"));
   // A run that fails (exit 3) ends the same way.
   CHECK(run("run " + kPendulum + " --out " + (dir / "failed").string() +
             " --no-render --no-report --set simulation.integrator=euler --set simulation.step=0.05"
             " --set simulation.duration=200 --set 'inputs={torque: [{type: constant, value: 1e4},"
-            " {type: constant, value: 1e4}]}'").exit_code == 3);
+            " {type: constant, value: 1e4}]}'")
+            .exit_code == 3);
   CHECK_FALSE(fs::exists(dir / "failed" / ".elbowsim.lock"));
 }
 

@@ -21,7 +21,8 @@ TEST_CASE("folder lock: held, a second lock is refused; released, the lock file 
   {
     const FolderLock held(dir);
     CHECK(fs::exists(dir / ".elbowsim.lock"));
-    CHECK_THROWS_AS(FolderLock{dir}, FolderInUse);  // its own open file: refused as another process is
+    CHECK_THROWS_AS(FolderLock{dir},
+                    FolderInUse);  // its own open file: refused as another process is
     std::ofstream(dir / "summary.json") << "{}";
   }
   CHECK_FALSE(fs::exists(dir / ".elbowsim.lock"));

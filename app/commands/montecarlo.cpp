@@ -18,10 +18,10 @@
 
 #include "app/commands/commands.hpp"
 #include "app/commands/interrupt.hpp"
-#include "app/scenario/counted.hpp"
 #include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
 #include "app/output/folder_lock.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/cases.hpp"
 #include "app/study/draws.hpp"
@@ -393,10 +393,13 @@ int montecarlo_command(const MonteCarloArguments& args) {
       if (interrupt_exit_code()) {
         // A case whose files were begun is whole (the signal came while they were written).
         const std::size_t complete = k + (doc.is_null() ? 0 : 1);
-        std::cerr << "interrupted: " << complete << " of " << counted(static_cast<long long>(plans.size()), "case")
-                  << " complete in " << folder.string();
+        std::cerr << "interrupted: " << complete << " of "
+                  << counted(static_cast<long long>(plans.size()), "case") << " complete in "
+                  << folder.string();
         if (complete < plans.size())
-          std::cerr << "; case " << (plans[complete].study_case.name.empty() ? "(the study)" : plans[complete].study_case.name)
+          std::cerr << "; case "
+                    << (plans[complete].study_case.name.empty() ? "(the study)"
+                                                                : plans[complete].study_case.name)
                     << " and the rest not written";
         std::cerr << (base.study.empty() ? "" : ", nor the study's tables") << '\n';
         return interrupt_exit_code();
@@ -405,9 +408,11 @@ int montecarlo_command(const MonteCarloArguments& args) {
       const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
       const std::string& name = plans[k].study_case.name;
       std::cout << base.model.name << (name.empty() ? "" : " " + name) << ": " << args.samples
-                << " draws x " << counted(static_cast<long long>(plans[k].variants.size()), "variant") << " (seed " << seed
-                << ", " << counted(static_cast<long long>(docs.back()["invalid"].size()), "invalid run") << ") in "
-                << plans[k].folder.string();
+                << " draws x "
+                << counted(static_cast<long long>(plans[k].variants.size()), "variant") << " (seed "
+                << seed << ", "
+                << counted(static_cast<long long>(docs.back()["invalid"].size()), "invalid run")
+                << ") in " << plans[k].folder.string();
       if (plans.size() > 1) std::cout << " [case " << k + 1 << " of " << plans.size() << "]";
       char took[32];  // printed only: the files stay byte-identical
       std::snprintf(took, sizeof took, ", %.1f s wall\n", wall.count());
@@ -415,7 +420,8 @@ int montecarlo_command(const MonteCarloArguments& args) {
       for (const Json& line : docs.back()["verdict"]) std::cout << "  " << line.get<std::string>() << "\n";
     }
     if (!base.study.empty() && interrupt_exit_code()) {
-      std::cerr << "interrupted: every case is complete in " << folder.string() << "; the study's tables not written\n";
+      std::cerr << "interrupted: every case is complete in " << folder.string()
+                << "; the study's tables not written\n";
       return interrupt_exit_code();
     }
     if (!base.study.empty()) {
@@ -425,8 +431,10 @@ int montecarlo_command(const MonteCarloArguments& args) {
       write_atomically(folder / "study.json", [&](std::ostream& out) { out << table.dump(2) << '\n'; });
       study::write_study_csv(folder / "study.csv", table);
       if (args.report) report::write_study_report(folder);
-      std::cout << base.model.name << ": study of " << counted(static_cast<long long>(plans.size()), "case") << " in " << folder.string()
-                << " (study.csv, study.json" << (args.report ? ", report.html" : "") << ")\n";
+      std::cout << base.model.name << ": study of "
+                << counted(static_cast<long long>(plans.size()), "case") << " in "
+                << folder.string() << " (study.csv, study.json"
+                << (args.report ? ", report.html" : "") << ")\n";
     }
   } catch (const ScenarioError& e) {
     std::cerr << "error: " << e.what() << '\n';

@@ -22,4 +22,8 @@ std::function<void(double)> terminal_progress(const std::string& label) {
   };
 }
 
+void end_progress_line() {
+  if (progress_on_terminal()) std::fputc('\n', stderr);
+}
+
 }  // namespace elbowsim

@@ -17,4 +17,8 @@ bool progress_on_terminal();
 // the line at 1.
 std::function<void(double)> terminal_progress(const std::string& label = "");
 
+// Ends a progress line a stage left unfinished (stopped by a signal) before
+// a message follows: a line break on a terminal, else nothing.
+void end_progress_line();
+
 }  // namespace elbowsim

@@ -38,7 +38,8 @@ std::string rerun_command(const fs::path& run_folder) {
 std::string render_stats_text(const RenderStats& s) {
   char what[200];
   // The length a player shows: frames / fps; the time it took, labelled apart.
-  std::snprintf(what, sizeof what, "%.3g s long: %d frames at %g fps, %dx%d, %s; rendered in %.1f s",
+  std::snprintf(what, sizeof what,
+                "%.3g s long: %d frames at %g fps, %dx%d, %s; rendered in %.1f s",
                 s.fps > 0 ? s.frames / s.fps : 0.0, s.frames, s.fps, s.width, s.height,
                 antialiasing(s).c_str(), s.wall_seconds);
   return what;
@@ -143,6 +144,7 @@ int render_with(const Scenario& scenario, const Recording& recording, const fs::
   try {
     const RenderStats stats = render_run(*source, settings, request, render_control());
     if (stats.interrupted) {
+      end_progress_line();
       std::cerr << "interrupted: no video or frames made; " << folder.string()
                 << " holds what it held before\n";
       return interrupt_exit_code();
@@ -195,7 +197,8 @@ std::vector<int> render_runs(const std::vector<RunToRender>& runs,
   }
   const int cores = available_cores();
   std::size_t frames = 0;
-  for (const RenderJob& j : jobs) frames += std::size_t(frame_count(j.source->end_time(), j.settings.fps));
+  for (const RenderJob& j : jobs)
+    frames += std::size_t(frame_count(j.source->end_time(), j.settings.fps));
   say_started(jobs.size(), frames, side.has_value());
   const RenderResults results =
       render_jobs(jobs, side, threads > 0 ? threads : cores, render_control());
@@ -203,6 +206,7 @@ std::vector<int> render_runs(const std::vector<RunToRender>& runs,
   // (the caller says what was kept); those drawn to the end are kept.
   bool interrupted = false;
   for (const RenderStats& stats : results.jobs) interrupted |= stats.interrupted;
+  if (interrupted) end_progress_line();
   if (jobs.size() > 1 && !interrupted)
     std::cout << "render: " << jobs.size() << " runs drawn at once on " << results.threads
               << (results.threads == 1 ? " thread" : " threads") << " (" << cores

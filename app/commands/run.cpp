@@ -138,6 +138,7 @@ RunOutcome simulate_one(const Scenario& scenario, const std::filesystem::path& f
     return outcome;
   }
   for (const std::string& warning : result.warnings) std::cerr << "warning: " << warning << '\n';
+  if (result.interrupted) end_progress_line();
   if (!result.completed) {
     std::cerr << "error: " << result.failure << "\n  kept " << result.trajectory.rows()
               << " recorded samples in " << folder.string() << '\n';
@@ -271,8 +272,8 @@ int compare_variants(const RunArguments& args, const std::vector<Scenario>& vari
     std::cerr << "error: " << e.what() << '\n';
     return exit_io;
   }
-  std::cout << variants.front().model.name << ": " << counted(static_cast<long long>(variants.size()), "variant")
-            << " compared in "
+  std::cout << variants.front().model.name << ": "
+            << counted(static_cast<long long>(variants.size()), "variant") << " compared in "
             << (folder / "comparison.csv").string() << '\n';
   return exit_ok;
 }

@@ -21,8 +21,8 @@ nlohmann::ordered_json check_step(const Scenario& scenario, const RunResult& res
   const double h = scenario.model.options.step;
   const Scenario halved = at_half_step(scenario);
   // A signal stops it as it stops the run (the caller then drops the result).
-  const RunResult half =
-      simulate(halved.model, halved.experiment, RunOptions{halved.output.every, {}, &interrupt_flag()});
+  const RunResult half = simulate(halved.model, halved.experiment,
+                                  RunOptions{halved.output.every, {}, &interrupt_flag()});
   nlohmann::ordered_json j;
   j["step"] = h;
   j["half_step"] = h / 2;

@@ -10,14 +10,14 @@
 #include <set>
 
 #include "app/commands/commands.hpp"
-#include "report/sweep_plots.hpp"
-#include "app/output/atomic_file.hpp"
 #include "app/commands/interrupt.hpp"
+#include "app/output/atomic_file.hpp"
 #include "app/output/folder_lock.hpp"
 #include "app/output/run_folder.hpp"
-#include "report/comparison.hpp"
 #include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
+#include "report/comparison.hpp"
+#include "report/sweep_plots.hpp"
 
 namespace elbowsim {
 
@@ -109,8 +109,9 @@ int sweep_command(const SweepArguments& args) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_io;
   }
-  std::cout << "sweep of " << args.key << ": " << counted(static_cast<long long>(row_runs.size()), "run")
-            << "; table in " << (folder / "sweep.csv").string() << '\n';
+  std::cout << "sweep of " << args.key << ": "
+            << counted(static_cast<long long>(row_runs.size()), "run") << "; table in "
+            << (folder / "sweep.csv").string() << '\n';
   if (interrupt_exit_code()) {  // while the table was written: it is whole; no plots start
     std::cerr << "interrupted: sweep.csv is written; no plots\n";
     return interrupt_exit_code();

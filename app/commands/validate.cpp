@@ -3,13 +3,13 @@
 #include <iostream>
 
 #include "app/commands/commands.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/cases.hpp"
 #include "engine/contact/geometry.hpp"
 #include "engine/control/plan.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/run/warnings.hpp"
-#include "app/scenario/counted.hpp"
 
 namespace elbowsim {
 

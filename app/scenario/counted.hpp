@@ -6,7 +6,8 @@
 namespace elbowsim {
 
 // `plural` defaults to `singular` + "s".
-inline std::string counted(long long n, const std::string& singular, const std::string& plural = "") {
+inline std::string counted(long long n, const std::string& singular,
+                           const std::string& plural = "") {
   return std::to_string(n) + " " + (n == 1 ? singular : plural.empty() ? singular + "s" : plural);
 }
 

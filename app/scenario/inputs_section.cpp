@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "app/scenario/checks.hpp"
-#include "app/scenario/sections.hpp"
 #include "app/scenario/counted.hpp"
+#include "app/scenario/sections.hpp"
 
 namespace elbowsim::loader {
 

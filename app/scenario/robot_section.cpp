@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "app/scenario/checks.hpp"
-#include "app/scenario/sections.hpp"
 #include "app/scenario/counted.hpp"
+#include "app/scenario/sections.hpp"
 
 namespace elbowsim::loader {
 
