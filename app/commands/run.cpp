@@ -356,6 +356,9 @@ int stop_variants(const RunArguments& args, const std::vector<Scenario>& variant
       std::filesystem::remove(folder / table);
     for (const std::string& name : derived_artefacts())
       std::filesystem::remove_all(folder / "compare" / name);
+    std::error_code none;  // compare/ made for the side-by-side, left empty
+    if (std::filesystem::is_empty(folder / "compare", none))
+      std::filesystem::remove(folder / "compare");
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_io;
