@@ -125,9 +125,9 @@ RenderControl render_control() { return {&interrupt_flag(), terminal_progress("r
 
 void say_started(std::size_t runs, std::size_t frames, bool side_by_side) {
   if (progress_on_terminal()) return;
-  std::cerr << "rendering " << counted(static_cast<long long>(frames), "frame") << " ("
+  std::cerr << "rendering " << counted(static_cast<long long>(frames), "frame") << " of "
             << counted(static_cast<long long>(runs), "run")
-            << (side_by_side ? ", and side by side" : "") << ")\n";
+            << (side_by_side ? ", and their side-by-side" : "") << '\n';
 }
 
 int render_with(const Scenario& scenario, const Recording& recording, const fs::path& folder,
