@@ -257,7 +257,8 @@ TEST_CASE(
   const Outcome r = signal_once(command, out / "heavy" / "video.tmp.mp4", "TERM", dir / "run.log");
   INFO(r.output);
   CHECK(r.output.find("exit=143") == 0);
-  CHECK(r.output.find("rendering 1202 frames of 2 runs, and their side-by-side\n") != std::string::npos);
+  CHECK(r.output.find("rendering 1202 frames of 2 runs, and their side-by-side\n") !=
+        std::string::npos);
   CHECK(r.output.find("interrupted (rendering): " + (out / "heavy").string() + " keeps ") !=
         std::string::npos);
   CHECK(r.output.find("interrupted: no comparison in " + out.string()) != std::string::npos);
