@@ -16,7 +16,6 @@ namespace elbowsim {
 
 struct Scenario;
 struct Recording;
-struct RenderStats;
 namespace report {
 struct Comparison;
 }
@@ -186,10 +185,5 @@ struct RunToRender {
 std::vector<int> render_runs(const std::vector<RunToRender>& runs,
                              const std::optional<std::filesystem::path>& side_by_side,
                              int& side_by_side_code, int threads = 0);
-
-// What a render made, as the video: and frames: lines say it: the video's
-// length (frames / fps), its frames, rate, size and anti-aliasing, then,
-// labelled apart, the time rendering took.
-std::string render_stats_text(const RenderStats& stats);
 
 }  // namespace elbowsim

@@ -1,6 +1,7 @@
 // elbowsim render RUN_DIR: re-renders a saved run (scenario.yaml + trajectory.csv)
 // without simulating; and render_runs, which run uses after simulating.
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -33,19 +34,18 @@ std::string rerun_command(const fs::path& run_folder) {
   return "`elbowsim render " + run_folder.string() + "`";
 }
 
-}  // namespace
-
+// What a render made, as the video: and frames: lines say it: the length a
+// player shows (frames / fps), frames, rate, size and anti-aliasing, then,
+// labelled apart, the time rendering took.
 std::string render_stats_text(const RenderStats& s) {
+  const double length = s.fps > 0 ? s.frames / s.fps : 0.0;
   char what[200];
-  // The length a player shows: frames / fps; the time it took, labelled apart.
-  std::snprintf(what, sizeof what,
-                "%.3g s long: %d frames at %g fps, %dx%d, %s; rendered in %.1f s",
-                s.fps > 0 ? s.frames / s.fps : 0.0, s.frames, s.fps, s.width, s.height,
-                antialiasing(s).c_str(), s.wall_seconds);
+  std::snprintf(what, sizeof what, length < 100 ? "%.3g" : "%.0f", length);  // 4.83, 20, 1200
+  std::snprintf(what + std::strlen(what), sizeof what - std::strlen(what),
+                " s long: %d frames at %g fps, %dx%d, %s; rendered in %.1f s", s.frames, s.fps,
+                s.width, s.height, antialiasing(s).c_str(), s.wall_seconds);
   return what;
 }
-
-namespace {
 
 // `rerun`: how to make the video again once the library is there.
 void print_stats(const RenderStats& s, const fs::path& folder, const std::string& rerun) {
