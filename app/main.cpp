@@ -1,9 +1,10 @@
 // elbowsim: headless simulator for robot arms resting their elbows on a table.
 // --set values are YAML and may hold commas: do not split them.
 #define CXXOPTS_VECTOR_DELIMITER '\0'
-#include <cxxopts.hpp>
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
+#include <cxxopts.hpp>
 #include <iostream>
 #include <thread>
 
@@ -301,6 +302,10 @@ int dispatch(const cxxopts::ParseResult& parsed) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Line by line even into a file or pipe (a batch job's log), so that stdout's
+  // lines and stderr's appear in the order they happened (std::cout writes
+  // through stdout: synced with stdio).
+  std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
   try {
     return dispatch(make_options().parse(argc, argv));
   } catch (const cxxopts::exceptions::exception& e) {

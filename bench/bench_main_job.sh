@@ -32,7 +32,7 @@ for r in $(seq "$repetitions"); do
     read -r user sys wall < "$work/time"
     /usr/bin/time -f "%e" -o "$work/render_time" "$elbowsim" render "$work/x/elbow_off" \
       > "$work/render_log" 2>&1
-    frames=$(sed -n 's/^video: .*(\([0-9]*\) frames.*/\1/p' "$work/render_log")
+    frames=$(sed -n 's/^video: .* \([0-9]*\) frames at .*/\1/p' "$work/render_log")
     render_wall=$(cat "$work/render_time")
     version="-"
     if command -v perf > /dev/null; then

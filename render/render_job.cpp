@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <exception>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 
@@ -88,10 +89,35 @@ struct Running {
   RenderStats stats;
   std::vector<double> times;
   int scale = 1;
+  std::size_t drawn = 0;  // frames drawn so far
   std::optional<OpenOutputs> outputs;
   std::unique_ptr<FrameWriter> writer;
 
   bool drawing() const { return writer && !writer->failed() && stats.error.empty(); }
+};
+
+// RenderControl for the drawing threads: the stop flag, and the frames drawn
+// by all of them reported as a share of all the jobs' frames.
+class Control {
+ public:
+  Control(const RenderControl& control, std::size_t total) : control_(control), total_(total) {}
+  bool stopped() const { return control_.stop && control_.stop->load(std::memory_order_relaxed); }
+  void frame_drawn() {
+    if (!control_.progress || total_ == 0) return;
+    const std::size_t n = ++drawn_;
+    if (n * 100 / total_ == (n - 1) * 100 / total_ && n != total_) return;  // every whole per cent
+    std::lock_guard lock(mutex_);
+    if (n <= reported_) return;  // another thread said more already
+    reported_ = n;
+    control_.progress(double(n) / double(total_));
+  }
+
+ private:
+  const RenderControl& control_;
+  const std::size_t total_;
+  std::atomic<std::size_t> drawn_{0};
+  std::mutex mutex_;
+  std::size_t reported_ = 0;
 };
 
 // Panel i of n across the frame, in pixels: one panel, the whole frame.
@@ -115,11 +141,23 @@ void draw_frame(Running& r, GlRenderer& renderer, int k) {
   renderer.end_frame(frame.rgba.data());
   r.stats.finish_seconds += seconds_since(t0);
   r.writer->push(std::move(frame));
+  ++r.drawn;
+}
+
+// Stopped from outside: the jobs not fully drawn keep nothing (finish() does
+// not commit a job with an error), and a side-by-side stops waiting for them.
+void interrupt(const std::vector<Running*>& jobs, SideBySide* side) {
+  for (Running* r : jobs)
+    if (r->drawing() && r->drawn < r->times.size()) {
+      r->stats.interrupted = true;
+      r->stats.error = "interrupted by a signal before its last frame";
+    }
+  if (side) side->abort();
 }
 
 // Draws `jobs` in turns, frame by frame, in a context of this thread. A GL
 // failure stops them all (they share the context).
-void draw_jobs(const std::vector<Running*>& jobs, SideBySide* side) {
+void draw_jobs(const std::vector<Running*>& jobs, SideBySide* side, Control& control) {
   try {
     OsmesaContext context;
     std::vector<std::unique_ptr<GlRenderer>> renderers;  // destroyed before the context
@@ -136,7 +174,9 @@ void draw_jobs(const std::vector<Running*>& jobs, SideBySide* side) {
       for (std::size_t j = 0; j < jobs.size(); ++j) {
         Running& r = *jobs[j];
         if (k >= r.times.size() || !r.drawing()) continue;
+        if (control.stopped()) return interrupt(jobs, side);
         draw_frame(r, *renderers[j], int(k));
+        control.frame_drawn();
         // A job that has ended is closed at once: a side-by-side's longer
         // panels wait for its frames until it is.
         if (k + 1 == r.times.size()) r.writer->close();
@@ -249,7 +289,8 @@ std::string side_by_side_problem(const std::vector<RenderJob>& jobs) {
 }
 
 RenderResults render_jobs(const std::vector<RenderJob>& jobs,
-                          const std::optional<RenderRequest>& side_by_side, int threads) {
+                          const std::optional<RenderRequest>& side_by_side, int threads,
+                          const RenderControl& control) {
   if (jobs.empty()) throw std::invalid_argument("render_jobs: no jobs");
   // With a drawing thread on every core, llvmpipe's own rasteriser threads
   // only add hand-offs (0.4 s of the main job's 10 s of CPU, wall time the
@@ -289,21 +330,28 @@ RenderResults render_jobs(const std::vector<RenderJob>& jobs,
   SideBySide* composer = side ? &*side : nullptr;
 
   std::vector<Running> running(jobs.size());
-  for (std::size_t i = 0; i < jobs.size(); ++i) start(running[i], jobs[i], composer, int(i));
+  std::size_t total = 0;  // frames to draw
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    start(running[i], jobs[i], composer, int(i));
+    if (running[i].stats.error.empty()) total += running[i].times.size();
+  }
+  Control drawing(control, total);
   const std::vector<std::vector<Running*>> by_thread = groups(running, threads);
   results.threads = int(by_thread.size());
   std::vector<std::thread> helpers;
   for (std::size_t t = 1; t < by_thread.size(); ++t)
-    helpers.emplace_back([&, t] { draw_jobs(by_thread[t], composer); });
-  draw_jobs(by_thread[0], composer);
+    helpers.emplace_back([&, t] { draw_jobs(by_thread[t], composer, drawing); });
+  draw_jobs(by_thread[0], composer, drawing);
   for (std::thread& h : helpers) h.join();
   for (Running& r : running) finish(r, started);
   for (Running& r : running) results.jobs.push_back(r.stats);
 
   if (side_stats) {
-    for (const Running& r : running)
+    for (const Running& r : running) {
+      side_stats->interrupted |= r.stats.interrupted;
       if (side_stats->error.empty() && !r.stats.error.empty())
         side_stats->error = "a panel failed: " + r.stats.error;
+    }
     if (side_stats->error.empty() && side) side_stats->error = side->error();
     try {
       if (side_stats->error.empty()) side_outputs->finish(*side_stats);
@@ -323,9 +371,10 @@ RenderResults render_jobs(const std::vector<RenderJob>& jobs,
 }
 
 RenderStats render_run(const FrameSource& source, const RenderSettings& settings,
-                       const RenderRequest& request) {
-  RenderStats stats = render_jobs({{&source, settings, request}}, std::nullopt, 1).jobs.front();
-  if (!stats.error.empty()) throw std::runtime_error(stats.error);
+                       const RenderRequest& request, const RenderControl& control) {
+  RenderStats stats =
+      render_jobs({{&source, settings, request}}, std::nullopt, 1, control).jobs.front();
+  if (!stats.error.empty() && !stats.interrupted) throw std::runtime_error(stats.error);
   return stats;
 }
 

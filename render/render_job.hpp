@@ -14,7 +14,9 @@
 // fewer drawing threads than cores, else in the drawing threads.
 #pragma once
 
+#include <atomic>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +50,7 @@ struct RenderStats {
   std::string video_command;
   std::string gl;     // GL renderer and version used
   std::string error;  // why this render failed ("" if it did not): nothing of it was kept
+  bool interrupted = false;  // stopped by RenderControl::stop (error says so): nothing kept
   // Where the time went [s]. Drawing thread: building scenes, issuing the
   // draws (llvmpipe transforms and bins the triangles), waiting for a free
   // buffer when the writer is behind ("readback"), end of frame (llvmpipe
@@ -74,6 +77,17 @@ struct RenderResults {
   int threads = 0;                          // drawing threads used: min(threads, jobs)
 };
 
+// What may stop renders early and what hears how far they are; both optional.
+struct RenderControl {
+  // Read before each frame is drawn: once true, the renders not fully drawn
+  // stop and keep nothing (RenderStats::interrupted), nor does a side-by-side
+  // they are panels of. Set by a signal handler (SIGINT, SIGTERM).
+  const std::atomic<bool>* stop = nullptr;
+  // The share of all the jobs' frames drawn so far (0 .. 1), at every whole
+  // per cent and at the end; called from the drawing threads, one call at a time.
+  std::function<void(double)> progress;
+};
+
 // Renders every job for its recording's duration, drawing up to `threads`
 // jobs at once, and with `side_by_side` the jobs' frames side by side, left
 // to right in job order, into side_by_side->folder. Outputs appear only when
@@ -83,7 +97,8 @@ struct RenderResults {
 // std::invalid_argument for no jobs, or when the side-by-side's jobs differ
 // in height or fps (side_by_side_problem).
 RenderResults render_jobs(const std::vector<RenderJob>& jobs,
-                          const std::optional<RenderRequest>& side_by_side, int threads);
+                          const std::optional<RenderRequest>& side_by_side, int threads,
+                          const RenderControl& control = {});
 
 // The cores this process may run on (its CPU affinity, so `taskset -c 0`
 // gives 1): render_jobs' usual number of drawing threads.
@@ -93,9 +108,10 @@ int available_cores();
 // must have one height and one rate.
 std::string side_by_side_problem(const std::vector<RenderJob>& jobs);
 
-// One job in the calling thread; throws std::runtime_error with its error.
+// One job in the calling thread; throws std::runtime_error with its error
+// (not when interrupted: the stats say so).
 RenderStats render_run(const FrameSource& source, const RenderSettings& settings,
-                       const RenderRequest& request);
+                       const RenderRequest& request, const RenderControl& control = {});
 
 // One panel of one frame, without GL: `source` at time t [s] in `panel`
 // (output pixels of the frame): its camera, scene, inset (rectangle within

@@ -5,8 +5,10 @@
 # array of a small study (elbowsim study --slurm writes submit.sh; sbatch
 # --wait); merged, its table must equal a local --jobs 2 run of the same
 # study byte for byte. Everything this script starts it stops, by PID.
-# Skipped (exit 77) only where the Slurm or munge programs are not installed
-# (apt-get install slurm-wlm munge; .ci/setup does) or not run as root.
+# Skipped (exit 77), saying why, only where Slurm cannot run here: its or
+# munge's programs not installed (apt-get install slurm-wlm munge; .ci/setup
+# does), not run as root, or no cgroup filesystem at /sys/fs/cgroup (a chroot,
+# some containers), which slurmd needs ("Unable to initialize cgroup plugin").
 #
 # usage: slurm_check.sh ELBOWSIM SOURCE_DIR [STUDY_FILE TASKS]
 # With a study file (bench/bench_study.sh: the experiment's task-speed study),
@@ -25,6 +27,13 @@ for program in munged slurmctld slurmd sbatch sinfo; do
 done
 if [ "$(id -u)" != 0 ]; then
   echo "SKIP: a private Slurm here needs root (slurmd starts jobs as their user)"
+  exit 77
+fi
+# slurmd's cgroup plugin reads the cgroup filesystem (v1 or v2) at /sys/fs/cgroup.
+if ! awk '($3 == "cgroup" || $3 == "cgroup2") && $2 ~ "^/sys/fs/cgroup(/|$)" { found = 1 }
+          END { exit !found }' /proc/mounts 2> /dev/null; then
+  echo "SKIP: no cgroup filesystem is mounted at /sys/fs/cgroup (a chroot or a container" \
+    "without it), and slurmd cannot start without one"
   exit 77
 fi
 
@@ -98,11 +107,19 @@ slurmctld -D -i -f "$SLURM_CONF" > "$work/slurmctld.out.log" 2>&1 &
 pids+=($!)
 slurmd -D -f "$SLURM_CONF" -N "$node" > "$work/slurmd.out.log" 2>&1 &
 pids+=($!)
+slurmd_pid=$!
 for _ in $(seq 100); do
   state=$(sinfo -h -N -o %t 2> /dev/null)
   [ "$state" = idle ] && break
+  kill -0 "$slurmd_pid" 2> /dev/null || break  # slurmd gave up
   sleep 0.1
 done
+if [ "$state" != idle ] && grep -qs "Unable to initialize cgroup plugin" "$work"/slurmd*.log; then
+  reason=$(grep -hs "cgroup" "$work"/slurmd*.log | sed 's/^\[[^]]*\] //; s/^slurmd: //' |
+    awk '!seen[$0]++ { printf "%s%s", sep, $0; sep = "; " }')
+  echo "SKIP: slurmd cannot start here ($reason)"
+  exit 77  # (the EXIT trap stops what was started)
+fi
 [ "$state" = idle ] || fail "the node did not come up (sinfo: '$state')"
 up=$(date +%s.%N)
 

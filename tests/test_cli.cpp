@@ -1,19 +1,19 @@
 // The elbowsim command line, run as a process: exit codes, messages, outputs.
 #include <doctest/doctest.h>
-
-#include <chrono>
-
-#include "app/output/folder_lock.hpp"
-#include "support/process.hpp"
-#include "support/scratch.hpp"
 #include <sys/wait.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
+
+#include "app/output/folder_lock.hpp"
+#include "support/process.hpp"
+#include "support/scratch.hpp"
 
 namespace fs = std::filesystem;
 
@@ -214,6 +214,163 @@ TEST_CASE("cli: SIGINT or SIGTERM during a run: what was recorded is written, ma
     for (const auto& entry : fs::directory_iterator(out))
       CHECK(entry.path().filename().string().find(".tmp") == std::string::npos);
   }
+}
+
+namespace {
+
+// Every file under `dir` (recursively) whose name holds "tmp": what a write cut short would leave.
+std::vector<std::string> temporaries(const fs::path& dir) {
+  std::vector<std::string> found;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.path().filename().string().find("tmp") != std::string::npos)
+      found.push_back(entry.path().string());
+  return found;
+}
+
+// Starts `command` in the background (stdout and stderr into `log`), sends
+// it `signal` once `started` exists (polled every 50 ms, 30 s at most), and
+// returns its exit code ("exit=N") followed by what it printed.
+Outcome signal_once(const std::string& command, const fs::path& started, const std::string& signal,
+                    const fs::path& log) {
+  return elbowsim::testing::shell(
+      "(" + command + " > " + log.string() + " 2>&1 & pid=$!; for i in $(seq 600); do [ -e " +
+      started.string() + " ] && break; sleep 0.05; done; kill -" + signal +
+      " $pid; wait $pid; echo \"exit=$?\"; cat " + log.string() + ")");
+}
+
+}  // namespace
+
+TEST_CASE(
+    "cli: SIGTERM during rendering: exit 143, nothing more started, no partial video, summary.json "
+    "says interrupted at rendering") {
+  const fs::path dir = scratch("cli", "interrupt_render");
+  const fs::path out = dir / "out";
+  // The pendulum for 20 s in two variants, each with a 30 fps video, and
+  // their side-by-side: 2 x 601 frames, seconds of drawing after a
+  // simulation of a fraction of a second. The signal goes once the first
+  // video's temporary file exists: rendering has begun.
+  const std::string command =
+      std::string(ELBOWSIM_BINARY) + " run " + kPendulum + " --out " + out.string() +
+      " --set simulation.duration=20 --set output.every=10 --set output.video=true"
+      " --set 'render.size=[320, 240]'"
+      " --set 'variants={heavy: {}, light: {\"robot.planar.links[1].mass\": 0.5}}'";
+  const Outcome r = signal_once(command, out / "heavy" / "video.tmp.mp4", "TERM", dir / "run.log");
+  INFO(r.output);
+  CHECK(r.output.find("exit=143") == 0);
+  CHECK(r.output.find("rendering 1202 frames of 2 runs, and their side-by-side\n") !=
+        std::string::npos);
+  CHECK(r.output.find("interrupted (rendering): " + (out / "heavy").string() + " keeps ") !=
+        std::string::npos);
+  CHECK(r.output.find("interrupted: no comparison in " + out.string()) != std::string::npos);
+  // Nothing started after the signal: no report, no comparison.
+  CHECK_FALSE(
+      fs::exists(out / "compare"));  // no report, no side-by-side video, not even its folder
+  CHECK_FALSE(fs::exists(out / "comparison.csv"));
+  CHECK_FALSE(fs::exists(out / "comparison.json"));
+  for (const char* variant : {"heavy", "light"}) {
+    CAPTURE(variant);
+    const fs::path folder = out / variant;
+    CHECK_FALSE(fs::exists(folder / "video.mp4"));  // not half a video
+    CHECK_FALSE(fs::exists(folder / "report.html"));
+    CHECK_FALSE(fs::exists(folder / ".elbowsim.lock"));
+    REQUIRE(fs::exists(folder / "summary.json"));
+    const auto summary = nlohmann::json::parse(slurp(folder / "summary.json"));
+    CHECK(summary["interrupted"] == true);
+    CHECK(summary["interrupted_stage"] == "rendering");
+    CHECK(summary["completed"] == true);  // the simulation itself ran to its end
+    CHECK(fs::exists(folder / "trajectory.csv"));
+  }
+  CHECK(temporaries(out).empty());
+  CHECK_FALSE(fs::exists(out / ".elbowsim.lock"));
+
+  SUBCASE("SIGINT during `render` of a run folder: exit 130, the folder as it was") {
+    const fs::path folder = out / "heavy";
+    const std::string manifest = slurp(folder / "manifest.json");
+    const Outcome again = signal_once(std::string(ELBOWSIM_BINARY) + " render " + folder.string(),
+                                      folder / "video.tmp.mp4", "INT", dir / "render.log");
+    INFO(again.output);
+    CHECK(again.output.find("exit=130") == 0);
+    CHECK(again.output.find("interrupted: no video or frames made") != std::string::npos);
+    CHECK_FALSE(fs::exists(folder / "video.mp4"));
+    CHECK(slurp(folder / "manifest.json") == manifest);
+    CHECK(temporaries(out).empty());
+  }
+}
+
+TEST_CASE(
+    "cli: stdout into a file is written line by line; SIGTERM in the second variant's simulation") {
+  // The first variant's line is in the file while the second still
+  // simulates (2000 s at 0.1 ms, far longer than the test waits), as a batch
+  // job's log shows it; block-buffered, it came at the exit. Then SIGTERM.
+  const fs::path dir = scratch("cli", "line_buffered");
+  const fs::path out = dir / "out", log = dir / "run.log";
+  const Outcome r = elbowsim::testing::shell(
+      "(" + std::string(ELBOWSIM_BINARY) + " run " + kPendulum + " --out " + out.string() +
+      " --no-render --no-report --set 'variants={quick: {simulation.duration: 0.5}, long:"
+      " {simulation.duration: 2000, simulation.step: 1.0e-4, output.every: 1000}}' > " +
+      log.string() + " 2>&1 & pid=$!; for i in $(seq 200); do grep -q 'steps to t' " +
+      log.string() + " && break; sleep 0.05; done; kill -0 $pid && grep -q 'steps to t' " +
+      log.string() +
+      " && echo 'seen while running'; kill -TERM $pid; wait $pid; echo \"exit=$?\"; cat " +
+      log.string() + ")");
+  INFO(r.output);
+  CHECK(r.output.find("seen while running") == 0);
+  CHECK(r.output.find("exit=143") != std::string::npos);
+  // The first variant ran whole; the second stopped in its simulation; no comparison.
+  const auto quick = nlohmann::json::parse(slurp(out / "quick" / "summary.json"));
+  CHECK(quick["completed"] == true);
+  CHECK(quick["interrupted"] == true);
+  CHECK(quick["interrupted_stage"] == "comparison");
+  const auto slow = nlohmann::json::parse(slurp(out / "long" / "summary.json"));
+  CHECK(slow["completed"] == false);
+  CHECK(slow["interrupted_stage"] == "simulation");
+  CHECK_FALSE(fs::exists(out / "comparison.csv"));
+  CHECK(r.output.find("interrupted (simulation): " + (out / "long").string() + " keeps ") !=
+        std::string::npos);
+}
+
+TEST_CASE("cli: run with variants prints the comparison's verdict sentences, as compare does") {
+  const fs::path dir = scratch("cli", "run_verdict");
+  const std::string variants =
+      " --set simulation.duration=0.5 --no-render"
+      " --set 'variants={heavy: {}, light: {\"robot.planar.links[1].mass\": 0.5}}'";
+  for (const std::string report : {"", " --no-report"}) {
+    CAPTURE(report);
+    const fs::path out = dir / (report.empty() ? "report" : "tables");
+    const Outcome r = run("run " + kPendulum + " --out " + out.string() + variants + report);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    const auto verdict = nlohmann::json::parse(slurp(out / "comparison.json"))["verdict"];
+    REQUIRE_FALSE(verdict.empty());
+    for (const auto& sentence : verdict)
+      CHECK(r.output.find(sentence.get<std::string>() + "\n") != std::string::npos);
+    // The same sentences as compare prints of the same folders.
+    const Outcome c = run("compare " + (out / "heavy").string() + " " + (out / "light").string() +
+                          " --out " + (out / "cmp").string());
+    REQUIRE(c.exit_code == 0);
+    for (const auto& sentence : verdict)
+      CHECK(c.output.find(sentence.get<std::string>() + "\n") != std::string::npos);
+  }
+}
+
+TEST_CASE("cli: the folder's lock file is gone when run and sweep end, also after an error") {
+  const fs::path dir = scratch("cli", "lock_removed");
+  REQUIRE(run("run " + kPendulum + " --out " + (dir / "run").string() + " --no-render --no-report")
+              .exit_code == 0);
+  CHECK(fs::exists(dir / "run" / "summary.json"));
+  CHECK_FALSE(fs::exists(dir / "run" / ".elbowsim.lock"));
+  REQUIRE(run("sweep " + kPendulum +
+              " --key simulation.duration --values 0.1,0.2 --no-render --no-report --out " +
+              (dir / "sweep").string())
+              .exit_code == 0);
+  CHECK_FALSE(fs::exists(dir / "sweep" / ".elbowsim.lock"));
+  // A run that fails (exit 3) ends the same way.
+  CHECK(run("run " + kPendulum + " --out " + (dir / "failed").string() +
+            " --no-render --no-report --set simulation.integrator=euler --set simulation.step=0.05"
+            " --set simulation.duration=200 --set 'inputs={torque: [{type: constant, value: 1e4},"
+            " {type: constant, value: 1e4}]}'")
+            .exit_code == 3);
+  CHECK_FALSE(fs::exists(dir / "failed" / ".elbowsim.lock"));
 }
 
 TEST_CASE("cli: report and compare refuse a cut or mismatched run folder (exit 2, the reason)") {

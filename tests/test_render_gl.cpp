@@ -125,6 +125,11 @@ TEST_CASE("render video: run writes an H.264 yuv420p mp4 of duration x fps frame
   INFO(run.output);
   REQUIRE(run.exit_code == 0);
   CHECK(run.output.find("video: " + (dir / "video.mp4").string()) != std::string::npos);
+  // The line gives the video's length (11 frames at 20 fps play 0.55 s), and
+  // the time rendering took labelled apart.
+  CHECK(run.output.find("video: " + (dir / "video.mp4").string() +
+                        " (0.55 s long: 11 frames at 20 fps, 160x120, FXAA; rendered in ") !=
+        std::string::npos);
   REQUIRE(fs::exists(dir / "video.mp4"));
   CHECK_FALSE(fs::exists(dir / "frames"));
   for (const auto& entry : fs::directory_iterator(dir))
@@ -148,6 +153,7 @@ TEST_CASE("render video: run writes an H.264 yuv420p mp4 of duration x fps frame
                                   "csv=p=0 " +
                                   (dir / "video.mp4").string());
     CHECK(reprobe.output == "h264,96,64,yuv420p,6\n");
+    CHECK(again.output.find(" (0.6 s long: 6 frames at 10 fps, 96x64, ") != std::string::npos);
   }
   SUBCASE("render --camera with a pose and a field of view, --follow hand") {
     const Outcome close =

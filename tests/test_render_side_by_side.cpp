@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -240,6 +241,53 @@ TEST_CASE("render side by side: panels without a video, its encoded frames are t
     expected.append(yuv.begin(), yuv.end());
   }
   CHECK(decoded_yuv(dir / "both" / "video.mp4") == expected);
+}
+
+TEST_CASE("render_jobs: a stop raised mid-render keeps nothing of the renders nor their side-by-side") {
+  // Two runs of 6 frames each (1 s at 5 fps), videos and frames, side by
+  // side. The progress callback raises the stop once a quarter of the 12
+  // frames are drawn, before either run can have drawn its 6 (as a signal
+  // handler would raise it).
+  const Model model = render_fixture::arm();
+  const Recording full = render_fixture::recording();
+  const RenderSettings settings = panel_settings(kWidth);
+  const FrameSource left(model, full, settings, "left"), right(model, full, settings, "right");
+  for (int threads : {1, 2}) {
+    CAPTURE(threads);
+    const fs::path dir = scratch("render", "stopped_" + std::to_string(threads));
+    for (const char* sub : {"left", "right", "both"}) fs::create_directories(dir / sub);
+    std::atomic<bool> stop{false};
+    std::vector<double> shares;
+    const RenderControl control{&stop, [&](double share) {
+                                  shares.push_back(share);
+                                  if (share >= 0.25) stop = true;
+                                }};
+    const RenderResults results = render_jobs({{&left, settings, {dir / "left", true, true}},
+                                               {&right, settings, {dir / "right", true, true}}},
+                                              RenderRequest{dir / "both", true, true}, threads,
+                                              control);
+    for (const RenderStats& stats : results.jobs) {
+      CHECK(stats.interrupted);
+      CHECK_FALSE(stats.error.empty());
+      CHECK(stats.frames == 0);
+      CHECK_FALSE(stats.video_written);
+      CHECK_FALSE(stats.frames_written);
+    }
+    REQUIRE(results.side_by_side);
+    CHECK(results.side_by_side->interrupted);
+    CHECK(files_under(dir).empty());  // no video, no frames, no temporary left
+    REQUIRE_FALSE(shares.empty());
+    CHECK(shares.back() < 1.0);
+    CHECK(std::is_sorted(shares.begin(), shares.end()));
+  }
+  // Not stopped: the progress rises to 1, every frame once.
+  const fs::path dir = scratch("render", "progress");
+  std::vector<double> shares;
+  const RenderResults results =
+      render_jobs({{&left, settings, {dir, false, true}}}, std::nullopt, 1,
+                  RenderControl{nullptr, [&](double share) { shares.push_back(share); }});
+  CHECK(results.jobs[0].frames == 6);
+  CHECK(shares == std::vector<double>{1 / 6.0, 2 / 6.0, 3 / 6.0, 4 / 6.0, 5 / 6.0, 1.0});
 }
 
 TEST_CASE("render_jobs: runs drawn on 2 threads write the same bytes as on 1, mp4s included") {

@@ -265,7 +265,10 @@ TEST_CASE("a bad override is named in the message") {
   CHECK(error_of(kTwoLink, {"robot.planar.links[0].mass=-1"}) ==
         "command line --set robot.planar.links[0].mass=-1: robot.planar.links[0].mass: "
         "must be > 0 (got -1)");
-  CHECK(contains(error_of(kTwoLink, {"robot.planar.links[5].mass=1"}), "index out of range"));
+  CHECK(contains(error_of(kTwoLink, {"robot.planar.links[5].mass=1"}),
+                 "index out of range (the list has 2 items)"));
+  CHECK(contains(error_of(kTwoLink, {"initial.q=[0.5]", "initial.q[3]=1"}),
+                 "index out of range (the list has 1 item)"));
   CHECK(contains(error_of(kTwoLink, {"simulation.step"}), "expected key.path=value"));
   CHECK(contains(error_of(kTwoLink, {"name.x=1"}), "name is not a map"));
   CHECK(contains(error_of(kTwoLink, {"simulation.step=[1,"}), "invalid YAML value"));

@@ -255,6 +255,18 @@ TEST_CASE("error: per-joint lists must have dof entries") {
               "expected 2 entries, one per joint (got 1)");
   CHECK_ERROR(two_link_with("inputs: {voltage: [{type: zero}]}\n"), "x.yaml:9:", "inputs.voltage",
               "expected 2 profiles");
+  // One joint: counted in the singular.
+  const std::string one_link = yaml(R"(
+name: a
+robot: {planar: {links: [{length: 1, mass: 1}]}}
+simulation: {duration: 1}
+)");
+  CHECK_ERROR(one_link + "initial: {q: [0.1, 0.2]}\n", "x.yaml:4:", "initial.q",
+              "expected a list of 1 number (one per joint) (got 2)");
+  CHECK_ERROR(one_link + "motors: {joints: [{}, {}]}\n", "x.yaml:4:", "motors.joints",
+              "expected 1 entry, one per joint (got 2)");
+  CHECK_ERROR(one_link + "inputs: {voltage: [{type: zero}, {type: zero}]}\n",
+              "x.yaml:4:", "inputs.voltage", "expected 1 profile, one per joint (got 2)");
   std::string damping = kTwoLink;
   damping.replace(damping.find("simulation:"), 0, "  damping: [0.1]\n");
   CHECK_ERROR(damping, "x.yaml:7:12:", "robot.damping", "expected a list of 2 numbers");

@@ -111,6 +111,11 @@ int accuracy_command(const AccuracyArguments& args) {
     write_atomically(folder / "work_precision.csv",
                      [&](std::ostream& out) { out << report::work_precision_csv(doc); });
     write_atomically(folder / "accuracy.json", [&](std::ostream& out) { out << doc.dump(2) << '\n'; });
+    if (interrupt_exit_code()) {  // while the tables were written: they are whole; no report starts
+      std::cerr << "interrupted: wrote work_precision.csv and accuracy.json to " << folder.string()
+                << "; no report\n";
+      return interrupt_exit_code();
+    }
     report::write_accuracy_report(doc, folder);
     for (const Json& v : doc["verdict"])
       for (const Json& row : v["targets"])

@@ -1,7 +1,8 @@
 // The subcommands of the elbowsim command line. Each returns the exit code:
 // 0 success, 1 I/O failure, 2 bad input (scenario or usage), 3 the run
 // stopped early (diverged); what it recorded is still written; 4 an
-// --expect expression does not hold.
+// --expect expression does not hold; 128 + the signal (130 SIGINT, 143
+// SIGTERM): interrupted, nothing more started (app/commands/interrupt.hpp).
 #pragma once
 
 #include <cstdint>
@@ -15,6 +16,9 @@ namespace elbowsim {
 
 struct Scenario;
 struct Recording;
+namespace report {
+struct Comparison;
+}
 
 // A run folder a command wrote: its variant ("" without variants) and where it is.
 struct RunRecord {
@@ -138,6 +142,10 @@ int accuracy_command(const AccuracyArguments& args);
 int report_command(const ReportArguments& args);
 int compare_command(const CompareArguments& args);
 
+// The comparison's verdict sentences (report/comparison.hpp), one a line on
+// stdout: compare, and run with variants, print them.
+void print_verdict(const report::Comparison& comparison);
+
 // Writes report.html and plots/ into a run folder from its files. Used by run and report.
 int report_outputs(const std::filesystem::path& folder);
 
@@ -170,9 +178,10 @@ struct RunToRender {
 // by side, left to right, into that folder (video.mp4 when the first run
 // asks for a video, frames/ when it asks for frames; each panel is the run's
 // own frame, not drawn again). Returns one code per run (exit_ok,
-// exit_bad_input, exit_io); `side_by_side_code` gets the side-by-side's
-// (exit_io when it failed; exit_ok, with a warning, when the runs' frames
-// differ in height or rate and none is made).
+// exit_bad_input, exit_io, or 128 + the signal when SIGINT or SIGTERM stopped
+// it before its last frame: nothing of it kept); `side_by_side_code` gets the
+// side-by-side's (exit_io when it failed; exit_ok, with a warning, when the
+// runs' frames differ in height or rate and none is made; 128 + the signal).
 std::vector<int> render_runs(const std::vector<RunToRender>& runs,
                              const std::optional<std::filesystem::path>& side_by_side,
                              int& side_by_side_code, int threads = 0);

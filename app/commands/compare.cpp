@@ -61,6 +61,10 @@ fs::path default_out(const std::string& first) {
 
 }  // namespace
 
+void print_verdict(const report::Comparison& comparison) {
+  for (const std::string& sentence : comparison.verdict) std::cout << sentence << '\n';
+}
+
 int compare_command(const CompareArguments& args) {
   if (args.folders.size() < 2) {
     std::cerr << "error: compare needs two or more run folders\n";
@@ -88,7 +92,7 @@ int compare_command(const CompareArguments& args) {
   try {
     const auto keys = differing(runs);
     const report::ComparisonFiles files = report::write_comparison_report(runs, out, {}, false, keys);
-    for (const std::string& sentence : files.comparison.verdict) std::cout << sentence << '\n';
+    print_verdict(files.comparison);
     for (const auto& [key, values] : keys) {
       std::cout << "differs: " << key << ":";
       for (std::size_t r = 0; r < runs.size(); ++r)

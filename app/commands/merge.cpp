@@ -9,6 +9,7 @@
 
 #include "app/commands/commands.hpp"
 #include "app/output/atomic_file.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/study/case_record.hpp"
 #include "report/merged_study.hpp"
 #include "report/noise_floor.hpp"
@@ -109,16 +110,18 @@ int merge_command(const MergeArguments& args) {
     if (s.draws > 0)
       write_atomically(out / "points.csv", [&](std::ostream& o) { report::write_points_table(o, s); });
     const fs::path html = report::write_merged_report(s, out);
-    std::cout << "study " << s.name << ": " << s.rows.size() << " runs (" << done << " done, " << failed
-              << " failed, " << missing << " missing); table " << (out / "table.csv").string()
-              << (s.draws > 0 ? ", points " + (out / "points.csv").string() : "") << ", report " << html.string()
-              << '\n';
+    std::cout << "study " << s.name << ": " << counted(static_cast<long long>(s.rows.size()), "run")
+              << " (" << done << " done, " << failed << " failed, " << missing
+              << " missing); table " << (out / "table.csv").string()
+              << (s.draws > 0 ? ", points " + (out / "points.csv").string() : "") << ", report "
+              << html.string() << '\n';
   } catch (const std::exception& e) {
     std::cerr << "error: merge: " << e.what() << '\n';
     return exit_io;
   }
   if (missing) {
-    std::cerr << "warning: " << missing << " runs are missing: run the study again (or its shards) to finish them\n";
+    std::cerr << "warning: " << counted(missing, "run") << (missing == 1 ? " is" : " are")
+              << " missing: run the study again (or its shards) to finish them\n";
     return exit_run_failed;
   }
   return exit_ok;

@@ -21,6 +21,7 @@
 #include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
 #include "app/output/folder_lock.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/cases.hpp"
 #include "app/study/draws.hpp"
@@ -347,6 +348,8 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
   doc["invalid"] = invalid;
   doc["verdict"] = verdict;
 
+  // The case's files go together, once begun (a signal is seen after them).
+  if (interrupt_exit_code()) return Json();
   std::filesystem::create_directories(plan.folder);
   write_samples_csv(plan.folder / "samples.csv", variants, draws, samples);
   write_atomically(plan.folder / "montecarlo.json", [&](std::ostream& out) { out << doc.dump(2) << '\n'; });
@@ -388,22 +391,38 @@ int montecarlo_command(const MonteCarloArguments& args) {
       const auto started = std::chrono::steady_clock::now();
       Json doc = run_case(args, base, plans[k], draws, seed);
       if (interrupt_exit_code()) {
-        std::cerr << "interrupted: " << k << " of " << plans.size() << " cases complete in "
-                  << folder.string() << "; case " << (plans[k].study_case.name.empty() ? "(the study)" : plans[k].study_case.name)
-                  << " and the rest not written, nor the study's tables\n";
+        // A case whose files were begun is whole (the signal came while they were written).
+        const std::size_t complete = k + (doc.is_null() ? 0 : 1);
+        std::cerr << "interrupted: " << complete << " of "
+                  << counted(static_cast<long long>(plans.size()), "case") << " complete in "
+                  << folder.string();
+        if (complete < plans.size())
+          std::cerr << "; case "
+                    << (plans[complete].study_case.name.empty() ? "(the study)"
+                                                                : plans[complete].study_case.name)
+                    << " and the rest not written";
+        std::cerr << (base.study.empty() ? "" : ", nor the study's tables") << '\n';
         return interrupt_exit_code();
       }
       docs.push_back(std::move(doc));
       const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
       const std::string& name = plans[k].study_case.name;
       std::cout << base.model.name << (name.empty() ? "" : " " + name) << ": " << args.samples
-                << " draws x " << plans[k].variants.size() << " variants (seed " << seed << ", "
-                << docs.back()["invalid"].size() << " invalid runs) in " << plans[k].folder.string();
+                << " draws x "
+                << counted(static_cast<long long>(plans[k].variants.size()), "variant") << " (seed "
+                << seed << ", "
+                << counted(static_cast<long long>(docs.back()["invalid"].size()), "invalid run")
+                << ") in " << plans[k].folder.string();
       if (plans.size() > 1) std::cout << " [case " << k + 1 << " of " << plans.size() << "]";
       char took[32];  // printed only: the files stay byte-identical
       std::snprintf(took, sizeof took, ", %.1f s wall\n", wall.count());
       std::cout << took;
       for (const Json& line : docs.back()["verdict"]) std::cout << "  " << line.get<std::string>() << "\n";
+    }
+    if (!base.study.empty() && interrupt_exit_code()) {
+      std::cerr << "interrupted: every case is complete in " << folder.string()
+                << "; the study's tables not written\n";
+      return interrupt_exit_code();
     }
     if (!base.study.empty()) {
       std::vector<study::StudyCase> cases;
@@ -412,8 +431,10 @@ int montecarlo_command(const MonteCarloArguments& args) {
       write_atomically(folder / "study.json", [&](std::ostream& out) { out << table.dump(2) << '\n'; });
       study::write_study_csv(folder / "study.csv", table);
       if (args.report) report::write_study_report(folder);
-      std::cout << base.model.name << ": study of " << plans.size() << " cases in " << folder.string()
-                << " (study.csv, study.json" << (args.report ? ", report.html" : "") << ")\n";
+      std::cout << base.model.name << ": study of "
+                << counted(static_cast<long long>(plans.size()), "case") << " in "
+                << folder.string() << " (study.csv, study.json"
+                << (args.report ? ", report.html" : "") << ")\n";
     }
   } catch (const ScenarioError& e) {
     std::cerr << "error: " << e.what() << '\n';

@@ -1,6 +1,7 @@
 // elbowsim render RUN_DIR: re-renders a saved run (scenario.yaml + trajectory.csv)
 // without simulating; and render_runs, which run uses after simulating.
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -8,10 +9,14 @@
 
 #include "app/commands/camera_option.hpp"
 #include "app/commands/commands.hpp"
+#include "app/commands/interrupt.hpp"
+#include "app/commands/progress.hpp"
 #include "app/output/run_folder.hpp"
 #include "app/output/run_manifest.hpp"
 #include "app/output/trajectory_csv.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
+#include "render/playback.hpp"
 #include "render/render_job.hpp"
 
 namespace elbowsim {
@@ -29,11 +34,22 @@ std::string rerun_command(const fs::path& run_folder) {
   return "`elbowsim render " + run_folder.string() + "`";
 }
 
+// What a render made, as the video: and frames: lines say it: the length a
+// player shows (frames / fps), frames, rate, size and anti-aliasing, then,
+// labelled apart, the time rendering took.
+std::string render_stats_text(const RenderStats& s) {
+  const double length = s.fps > 0 ? s.frames / s.fps : 0.0;
+  char what[200];
+  std::snprintf(what, sizeof what, length < 100 ? "%.3g" : "%.0f", length);  // 4.83, 20, 1200
+  std::snprintf(what + std::strlen(what), sizeof what - std::strlen(what),
+                " s long: %d frames at %g fps, %dx%d, %s; rendered in %.1f s", s.frames, s.fps,
+                s.width, s.height, antialiasing(s).c_str(), s.wall_seconds);
+  return what;
+}
+
 // `rerun`: how to make the video again once the library is there.
 void print_stats(const RenderStats& s, const fs::path& folder, const std::string& rerun) {
-  char what[160];
-  std::snprintf(what, sizeof what, "%d frames, %dx%d, %g fps, %s, %.1f s", s.frames, s.width,
-                s.height, s.fps, antialiasing(s).c_str(), s.wall_seconds);
+  const std::string what = render_stats_text(s);
   if (s.video_written)
     std::cout << "video: " << (folder / "video.mp4").string() << " (" << what << ")\n";
   if (s.frames_written && s.video_unavailable.empty())
@@ -103,6 +119,17 @@ std::string title(const Scenario& scenario) {
                                   : scenario.model.name + ": " + scenario.variant;
 }
 
+// Stopped by SIGINT or SIGTERM; progress on a terminal, else a line saying
+// it starts (how many frames: the video lines say when it ended).
+RenderControl render_control() { return {&interrupt_flag(), terminal_progress("rendering ")}; }
+
+void say_started(std::size_t runs, std::size_t frames, bool side_by_side) {
+  if (progress_on_terminal()) return;
+  std::cerr << "rendering " << counted(static_cast<long long>(frames), "frame") << " of "
+            << counted(static_cast<long long>(runs), "run")
+            << (side_by_side ? ", and their side-by-side" : "") << '\n';
+}
+
 int render_with(const Scenario& scenario, const Recording& recording, const fs::path& folder,
                 const RenderSettings& settings, RenderRequest request) {
   request.folder = folder;
@@ -113,8 +140,16 @@ int render_with(const Scenario& scenario, const Recording& recording, const fs::
     std::cerr << "error: cannot render " << folder.string() << ": " << e.what() << '\n';
     return exit_bad_input;
   }
+  say_started(1, std::size_t(frame_count(source->end_time(), settings.fps)), false);
   try {
-    print_stats(render_run(*source, settings, request), folder, rerun_command(folder));
+    const RenderStats stats = render_run(*source, settings, request, render_control());
+    if (stats.interrupted) {
+      end_progress_line();
+      std::cerr << "interrupted: no video or frames made; " << folder.string()
+                << " holds what it held before\n";
+      return interrupt_exit_code();
+    }
+    print_stats(stats, folder, rerun_command(folder));
   } catch (const std::exception& e) {
     std::cerr << "error: rendering failed: " << e.what() << '\n';
     return exit_io;
@@ -161,15 +196,27 @@ std::vector<int> render_runs(const std::vector<RunToRender>& runs,
     }
   }
   const int cores = available_cores();
-  const RenderResults results = render_jobs(jobs, side, threads > 0 ? threads : cores);
-  if (jobs.size() > 1)
+  std::size_t frames = 0;
+  for (const RenderJob& j : jobs)
+    frames += std::size_t(frame_count(j.source->end_time(), j.settings.fps));
+  say_started(jobs.size(), frames, side.has_value());
+  const RenderResults results =
+      render_jobs(jobs, side, threads > 0 ? threads : cores, render_control());
+  // Interrupted: the runs not fully drawn keep nothing and say nothing here
+  // (the caller says what was kept); those drawn to the end are kept.
+  bool interrupted = false;
+  for (const RenderStats& stats : results.jobs) interrupted |= stats.interrupted;
+  if (interrupted) end_progress_line();
+  if (jobs.size() > 1 && !interrupted)
     std::cout << "render: " << jobs.size() << " runs drawn at once on " << results.threads
               << (results.threads == 1 ? " thread" : " threads") << " (" << cores
               << (cores == 1 ? " core" : " cores") << " available)\n";
   for (std::size_t j = 0; j < jobs.size(); ++j) {
     const RenderStats& stats = results.jobs[j];
     const fs::path& folder = runs[job_run[j]].folder;
-    if (!stats.error.empty()) {
+    if (stats.interrupted) {
+      codes[job_run[j]] = interrupt_exit_code();
+    } else if (!stats.error.empty()) {
       std::cerr << "error: rendering " << folder.string() << " failed: " << stats.error << '\n';
       codes[job_run[j]] = exit_io;
     } else {
@@ -177,7 +224,9 @@ std::vector<int> render_runs(const std::vector<RunToRender>& runs,
     }
   }
   if (results.side_by_side) {
-    if (!results.side_by_side->error.empty()) {
+    if (results.side_by_side->interrupted) {
+      side_by_side_code = interrupt_exit_code();
+    } else if (!results.side_by_side->error.empty()) {
       std::cerr << "error: side-by-side video: " << results.side_by_side->error << '\n';
       side_by_side_code = exit_io;
     } else {
@@ -202,6 +251,7 @@ int render_command(const RenderArguments& args) {
   }
   // A scenario that asked for neither gets a video: that is what render is for.
   const bool video = scenario.output.video || !scenario.output.frames;
+  install_interrupt_handlers();
   const int code =
       render_with(scenario, recording, folder, settings,
                   {folder, video, scenario.output.frames, scenario.output.lossless_video});

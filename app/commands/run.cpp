@@ -1,6 +1,6 @@
 #include <unistd.h>
 
-#include <chrono>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
@@ -9,6 +9,7 @@
 
 #include "app/commands/commands.hpp"
 #include "app/commands/interrupt.hpp"
+#include "app/commands/progress.hpp"
 #include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
 #include "app/output/events_csv.hpp"
@@ -17,6 +18,7 @@
 #include "app/output/run_manifest.hpp"
 #include "app/output/summary_json.hpp"
 #include "app/output/trajectory_csv.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
 #include "engine/control/inverse_kinematics.hpp"
 #include "engine/run/recorder.hpp"
@@ -26,20 +28,6 @@
 namespace elbowsim {
 
 namespace {
-
-// A progress line on stderr, only on a terminal and only once a run has taken
-// longer than a second.
-std::function<void(double)> terminal_progress() {
-  if (!isatty(STDERR_FILENO)) return {};
-  const auto start = std::chrono::steady_clock::now();
-  return [start](double fraction) {
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (elapsed < 1.0) return;
-    std::fprintf(stderr, "\r  %5.1f %%  (%.1f s elapsed)", 100.0 * fraction, elapsed);
-    if (fraction >= 1.0) std::fputc('\n', stderr);
-  };
-}
 
 void write_outputs(const Scenario& scenario, const RunResult& result,
                    const nlohmann::ordered_json& summary, const std::filesystem::path& folder) {
@@ -75,9 +63,22 @@ struct RunOutcome {
   int code = exit_ok;
   nlohmann::ordered_json summary;  // as written to summary.json
   RunResult result;
-  bool rendered = false;  // video or frames made by this run
+  bool rendered = false;  // video or frames made by this run (or its render failed)
+  bool reported = false;  // report.html written (or failed)
   bool recorded() const { return result.trajectory.rows() > 0; }
 };
+
+// A signal stopped `stage` of the run (or kept it from starting): the
+// summary says so, interrupted_stage right after interrupted.
+void set_interrupted(nlohmann::ordered_json& summary, const std::string& stage) {
+  nlohmann::ordered_json marked;
+  for (const auto& [key, value] : summary.items()) {
+    if (key == "interrupted_stage") continue;
+    marked[key] = key == "interrupted" ? nlohmann::ordered_json(true) : value;
+    if (key == "interrupted") marked["interrupted_stage"] = stage;
+  }
+  summary = std::move(marked);
+}
 
 // A hand task that cannot be followed stops the run before it starts: it
 // counts as a run that stopped early (a sweep goes on past an unreachable
@@ -95,10 +96,13 @@ RunResult simulate_or_fail(const Scenario& scenario) {
 
 // The step check (step_check.hpp) into the summary, and on stdout one line:
 // the largest change of a headline metric, then each metric below its floor.
+// A signal stops it: no step_check then.
 void add_step_check(const Scenario& scenario, const RunResult& result,
                     nlohmann::ordered_json& summary) {
   try {
-    summary["step_check"] = check_step(scenario, result);
+    nlohmann::ordered_json check = check_step(scenario, result);
+    if (interrupt_exit_code()) return set_interrupted(summary, "step_check");
+    summary["step_check"] = std::move(check);
   } catch (const std::exception& e) {
     summary["step_check"] = {{"error", e.what()}};
     std::cerr << "warning: step check: " << e.what() << '\n';
@@ -136,7 +140,9 @@ RunOutcome simulate_one(const Scenario& scenario, const std::filesystem::path& f
   outcome.result = simulate_or_fail(scenario);
   const RunResult& result = outcome.result;
   outcome.summary = run_summary(scenario, result);
-  if (args.check_step && result.valid && !interrupt_exit_code()) add_step_check(scenario, result, outcome.summary);
+  if (result.interrupted) set_interrupted(outcome.summary, "simulation");
+  if (args.check_step && result.valid && !interrupt_exit_code())
+    add_step_check(scenario, result, outcome.summary);
   try {
     std::filesystem::create_directories(folder);
     write_outputs(scenario, result, outcome.summary, folder);
@@ -146,6 +152,7 @@ RunOutcome simulate_one(const Scenario& scenario, const std::filesystem::path& f
     return outcome;
   }
   for (const std::string& warning : result.warnings) std::cerr << "warning: " << warning << '\n';
+  if (result.interrupted) end_progress_line();
   if (!result.completed) {
     std::cerr << "error: " << result.failure << "\n  kept " << result.trajectory.rows()
               << " recorded samples in " << folder.string() << '\n';
@@ -157,9 +164,9 @@ RunOutcome simulate_one(const Scenario& scenario, const std::filesystem::path& f
               << result.final_time << " s in " << result.wall_seconds << " s; outputs in "
               << folder.string() << '\n';
   }
-  // Interrupted: the data files are written; nothing more is started.
+  // Interrupted: the data files are written; nothing more is started
+  // (the caller marks the summary and says what was kept: stop_runs).
   if (interrupt_exit_code()) {
-    std::cerr << "interrupted: wrote what was recorded to " << folder.string() << '\n';
     outcome.code = interrupt_exit_code();
     return outcome;
   }
@@ -173,11 +180,11 @@ bool wants_render(const Scenario& scenario, const RunOutcome& outcome, const Run
   return outcome.recorded() && args.render && (scenario.output.video || scenario.output.frames);
 }
 
-// After rendering (`rendered`: its code): the manifest, then the report,
-// which reads the folder back and embeds the video only when the manifest
-// lists it. Returns exit_io when the manifest cannot be written.
-int finish_run(const Scenario& scenario, const std::filesystem::path& folder,
-               const RunArguments& args, RunOutcome& outcome, int rendered) {
+// After rendering: what it made goes in the manifest (the report embeds the
+// video only when the manifest lists it). Returns exit_io when the manifest
+// cannot be written.
+int record_render(const Scenario& scenario, const std::filesystem::path& folder,
+                  RunOutcome& outcome) {
   try {
     if (outcome.rendered) record_rendered(folder, scenario.output.video, scenario.output.frames);
   } catch (const std::exception& e) {
@@ -185,9 +192,76 @@ int finish_run(const Scenario& scenario, const std::filesystem::path& folder,
     outcome.code = exit_io;
     return exit_io;
   }
-  const int reported = outcome.recorded() && args.report ? report_outputs(folder) : exit_ok;
-  if (outcome.code == exit_ok) outcome.code = rendered != exit_ok ? rendered : reported;
   return exit_ok;
+}
+
+// The first of the run's stages not done, which a signal seen now stopped or
+// kept from starting; "" when none is left. `compared`: the variants'
+// comparison comes after the run's own stages.
+std::string pending_stage(const Scenario& scenario, const RunOutcome& outcome,
+                          const RunArguments& args, bool compared) {
+  if (outcome.summary.contains("interrupted_stage"))  // simulation, step_check
+    return outcome.summary["interrupted_stage"].get<std::string>();
+  if (wants_render(scenario, outcome, args) && !outcome.rendered) return "rendering";
+  if (outcome.recorded() && args.report && !outcome.reported) return "report";
+  return compared ? "comparison" : "";
+}
+
+// The files the manifest lists, and those asked for that it does not (not
+// made: the signal came first), as "a, b, c".
+std::pair<std::string, std::string> kept_and_missing(const Scenario& scenario,
+                                                     const std::filesystem::path& folder,
+                                                     const RunArguments& args) {
+  std::vector<std::string> listed;
+  try {
+    listed = read_manifest(folder).value_or(std::vector<std::string>{});
+  } catch (const std::exception&) {
+  }
+  const auto has = [&](const std::string& f) {
+    return std::find(listed.begin(), listed.end(), f) != listed.end();
+  };
+  std::string kept, missing;
+  for (const std::string& f : listed) kept += (kept.empty() ? "" : ", ") + f;
+  for (const auto& [file, wanted] :
+       {std::pair<std::string, bool>{"video.mp4", args.render && scenario.output.video},
+        {"frames/", args.render && scenario.output.frames},
+        {"report.html", args.report}})
+    if (wanted && !has(file)) missing += (missing.empty() ? "" : ", ") + file;
+  return {kept, missing};
+}
+
+// After a signal: each run's summary.json names the first of its stages not
+// done (interrupted_stage; rewritten atomically, nothing else touched), and
+// stderr says what each folder keeps. Returns the signal's exit code, or
+// exit_io when a summary cannot be written.
+int stop_runs(const std::vector<const Scenario*>& scenarios,
+              const std::vector<std::filesystem::path>& folders, std::vector<RunOutcome>& outcomes,
+              const RunArguments& args, bool compared) {
+  bool stopped = false;
+  for (std::size_t k = 0; k < outcomes.size(); ++k) {
+    RunOutcome& outcome = outcomes[k];
+    const std::string stage = pending_stage(*scenarios[k], outcome, args, compared);
+    if (stage.empty()) continue;  // every stage of this run was done
+    stopped = true;
+    outcome.code = interrupt_exit_code();
+    if (!outcome.summary.contains("interrupted_stage")) {
+      set_interrupted(outcome.summary, stage);
+      try {
+        if (scenarios[k]->output.summary)
+          write_atomically(folders[k] / "summary.json",
+                           [&](std::ostream& out) { out << outcome.summary.dump(2) << '\n'; });
+      } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << '\n';
+        return exit_io;
+      }
+    }
+    const auto [kept, missing] = kept_and_missing(*scenarios[k], folders[k], args);
+    std::cerr << "interrupted (" << stage << "): " << folders[k].string() << " keeps " << kept
+              << (scenarios[k]->output.summary ? " (summary.json says interrupted)" : "")
+              << (missing.empty() ? "" : "; not made: " + missing) << '\n';
+  }
+  if (!stopped) std::cerr << "interrupted after the run's last stage: its outputs are complete\n";
+  return interrupt_exit_code();
 }
 
 // The variants' comparison: comparison.json and comparison.csv in `folder`
@@ -200,16 +274,20 @@ int compare_variants(const RunArguments& args, const std::vector<Scenario>& vari
     for (const Scenario& v : variants) loaded.push_back(load_run_folder(folder / v.variant));
     const report::ComparisonTables tables{folder, "variant"};
     if (!args.report) {
-      report::write_comparison_tables(report::compare_runs(loaded), tables);
+      const report::Comparison comparison = report::compare_runs(loaded);
+      report::write_comparison_tables(comparison, tables);
+      print_verdict(comparison);
     } else {
       const auto files = report::write_comparison_report(loaded, folder / "compare", tables, video);
+      print_verdict(files.comparison);
       std::cout << "comparison report: " << files.html.string() << '\n';
     }
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_io;
   }
-  std::cout << variants.front().model.name << ": " << variants.size() << " variants compared in "
+  std::cout << variants.front().model.name << ": "
+            << counted(static_cast<long long>(variants.size()), "variant") << " compared in "
             << (folder / "comparison.csv").string() << '\n';
   return exit_ok;
 }
@@ -239,6 +317,8 @@ bool recording_fits(const Scenario& s) {
 // Renders the runs that want it, all at once (render_runs), and with a
 // side-by-side folder their frames side by side; then finishes each run
 // (manifest, report). Returns exit_io on an I/O error that stops everything.
+// A signal stops the rendering (a run drawn to its end keeps its video) and
+// starts no report: the caller then calls stop_runs.
 int render_and_finish(const std::vector<const Scenario*>& scenarios,
                       const std::vector<std::filesystem::path>& folders,
                       std::vector<RunOutcome>& outcomes, const RunArguments& args,
@@ -253,20 +333,56 @@ int render_and_finish(const std::vector<const Scenario*>& scenarios,
     }
   std::vector<int> rendered(scenarios.size(), exit_ok);
   side_by_side_code = exit_ok;
-  if (!runs.empty()) {
+  if (!runs.empty() && !interrupt_exit_code()) {
     // Side by side only when every run is drawn.
     const bool all = runs.size() == scenarios.size();
     const std::vector<int> codes =
         render_runs(runs, all ? side_by_side : std::nullopt, side_by_side_code, args.render_jobs);
     for (std::size_t j = 0; j < runs.size(); ++j) {
-      rendered[which[j]] = codes[j];
-      outcomes[which[j]].rendered = true;
+      const bool stopped = codes[j] > 128;  // by a signal: nothing of it kept
+      rendered[which[j]] = stopped ? exit_ok : codes[j];
+      outcomes[which[j]].rendered = !stopped;
     }
   }
   for (std::size_t k = 0; k < scenarios.size(); ++k)
-    if (finish_run(*scenarios[k], folders[k], args, outcomes[k], rendered[k]) == exit_io)
-      return exit_io;
+    if (record_render(*scenarios[k], folders[k], outcomes[k]) == exit_io) return exit_io;
+  for (std::size_t k = 0; k < scenarios.size(); ++k) {
+    if (interrupt_exit_code()) break;  // no report starts after a signal
+    RunOutcome& outcome = outcomes[k];
+    const int reported = outcome.recorded() && args.report ? report_outputs(folders[k]) : exit_ok;
+    outcome.reported = true;
+    if (outcome.code == exit_ok) outcome.code = rendered[k] != exit_ok ? rendered[k] : reported;
+  }
   return exit_ok;
+}
+
+// After a signal, a scenario's variants: stop_runs for those simulated; the
+// comparison an earlier run left in `folder` goes (it is of other data), and
+// stderr says which variants were not run and that no comparison was made.
+int stop_variants(const RunArguments& args, const std::vector<Scenario>& variants,
+                  const std::filesystem::path& folder,
+                  const std::vector<const Scenario*>& scenarios,
+                  const std::vector<std::filesystem::path>& folders,
+                  std::vector<RunOutcome>& outcomes) {
+  const int code = stop_runs(scenarios, folders, outcomes, args, true);
+  try {
+    for (const char* table : {"comparison.csv", "comparison.json"})
+      std::filesystem::remove(folder / table);
+    for (const std::string& name : derived_artefacts())
+      std::filesystem::remove_all(folder / "compare" / name);
+    std::error_code none;  // compare/ made for the side-by-side, left empty
+    if (std::filesystem::is_empty(folder / "compare", none))
+      std::filesystem::remove(folder / "compare");
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return exit_io;
+  }
+  std::string not_run;
+  for (std::size_t k = scenarios.size(); k < variants.size(); ++k)
+    not_run += (not_run.empty() ? "" : ", ") + variants[k].variant;
+  std::cerr << "interrupted: no comparison in " << folder.string()
+            << (not_run.empty() ? "" : "; not run: " + not_run) << '\n';
+  return code;
 }
 
 // Each variant into folder/<variant>/ (all loaded first: a bad one writes
@@ -291,9 +407,10 @@ int run_variants(const RunArguments& args, const Scenario& scenario,
   for (const Scenario& v : variants) {
     outcomes.push_back(simulate_one(v, folder / v.variant, args));
     if (outcomes.back().code == exit_io) return exit_io;
-    if (interrupt_exit_code()) return interrupt_exit_code();  // no more runs, no comparison
     scenarios.push_back(&v);
     folders.push_back(folder / v.variant);
+    if (interrupt_exit_code())  // no more runs, no comparison
+      return stop_variants(args, variants, folder, scenarios, folders, outcomes);
   }
   // compare/ holds only what this run makes: an earlier run's side-by-side
   // video, frames or report go first (a --no-render run must not show an old video).
@@ -311,6 +428,8 @@ int run_variants(const RunArguments& args, const Scenario& scenario,
   if (render_and_finish(scenarios, folders, outcomes, args, side_by_side, side_code) == exit_io ||
       side_code == exit_io)
     return exit_io;
+  if (interrupt_exit_code())  // during rendering or a report, or before the comparison
+    return stop_variants(args, variants, folder, scenarios, folders, outcomes);
   int code = exit_ok;
   nlohmann::ordered_json summaries;  // variant -> summary, for --expect
   for (std::size_t k = 0; k < variants.size(); ++k) {
@@ -320,6 +439,10 @@ int run_variants(const RunArguments& args, const Scenario& scenario,
   }
   const bool video = side_by_side && std::filesystem::exists(compare / "video.mp4");
   if (compare_variants(args, variants, folder, video) == exit_io) return exit_io;
+  if (interrupt_exit_code()) {  // during the comparison, which was written whole
+    std::cerr << "interrupted after the comparison, the last stage: the outputs are complete\n";
+    return interrupt_exit_code();
+  }
   // Expectations name the variant first: "elbow_on.energy_final.joule < ...".
   const int checked = check_expectations(args.expect, summaries);
   return code != exit_ok ? code : checked;
@@ -345,6 +468,7 @@ int run_scenario(const RunArguments& args, const Scenario& scenario,
   if (!interrupt_exit_code() &&
       render_and_finish({&scenario}, {folder}, outcomes, args, std::nullopt, side_code) == exit_io)
     return exit_io;
+  if (interrupt_exit_code()) return stop_runs({&scenario}, {folder}, outcomes, args, false);
   const int checked = check_expectations(args.expect, outcome.summary);
   records.push_back({"", folder});
   return outcome.code != exit_ok ? outcome.code : checked;

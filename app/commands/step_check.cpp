@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "app/commands/interrupt.hpp"
 #include "app/study/draws.hpp"
 #include "engine/run/simulator.hpp"
 
@@ -34,7 +35,9 @@ std::string refinement_text(const Scenario& scenario) {
 nlohmann::ordered_json check_step(const Scenario& scenario, const RunResult& result) {
   const double h = scenario.model.options.step;
   const Scenario halved = at_half_step(scenario);
-  const RunResult half = simulate(halved.model, halved.experiment, RunOptions{halved.output.every, {}});
+  // A signal stops it as it stops the run (the caller then drops the result).
+  const RunResult half = simulate(halved.model, halved.experiment,
+                                  RunOptions{halved.output.every, {}, &interrupt_flag()});
   nlohmann::ordered_json j;
   j["refinement"] = refinement_text(scenario);
   j["step"] = h;

@@ -34,7 +34,9 @@ std::string refinement_text(const Scenario& scenario);
 // steps), valid_at_half_step, metrics: {name: {unit, value, at_half_step,
 // relative_change, floor, below_floor}}, below_floor: [names]} for every
 // one-value metric of `result`; floor = |value - at_half_step|, below_floor:
-// |value| < kFloorFactor floor. Throws ScenarioError or PlanError.
+// |value| < kFloorFactor floor. Throws ScenarioError or PlanError. SIGINT or
+// SIGTERM (interrupt.hpp) stops the rerun: its numbers are then those of a
+// cut run, not to be used.
 nlohmann::ordered_json check_step(const Scenario& scenario, const RunResult& result);
 
 }  // namespace elbowsim

@@ -14,6 +14,7 @@
 #include "app/commands/interrupt.hpp"
 #include "app/commands/study_plan.hpp"
 #include "app/output/atomic_file.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/case_record.hpp"
 
@@ -128,7 +129,8 @@ std::string state_of(const StudyPlan& plan, const study::CaseSpec& c) {
 }
 
 void list_cases(const StudyPlan& plan, const std::vector<long>& which) {
-  std::cout << "study " << plan.design.name << ": " << plan.cases.size() << " cases of "
+  std::cout << "study " << plan.design.name << ": "
+            << counted(static_cast<long long>(plan.cases.size()), "case") << " of "
             << plan.design.scenario << " in " << plan.folder.string() << "\n";
   for (const long k : which) {
     const study::CaseSpec& c = plan.cases[k];
@@ -164,14 +166,15 @@ int write_scheduler_file(const StudyArguments& args, const StudyPlan& plan) {
     });
     std::filesystem::permissions(plan.folder / "submit.sh", std::filesystem::perms::owner_exec,
                                  std::filesystem::perm_options::add);
-    std::cout << "Slurm job array of " << tasks << " tasks: sbatch " << (plan.folder / "submit.sh").string() << '\n';
+    std::cout << "Slurm job array of " << counted(tasks, "task") << ": sbatch "
+              << (plan.folder / "submit.sh").string() << '\n';
   }
   if (args.k8s) {
     write_atomically(plan.folder / "job.yaml", [&](std::ostream& out) {
       out << k8s_job(plan, command_of(args, plan, false), tasks);
     });
-    std::cout << "Kubernetes Indexed Job of " << tasks << " completions: kubectl apply -f "
-              << (plan.folder / "job.yaml").string() << '\n';
+    std::cout << "Kubernetes Indexed Job of " << counted(tasks, "completion")
+              << ": kubectl apply -f " << (plan.folder / "job.yaml").string() << '\n';
   }
   std::cout << "then: elbowsim merge " << plan.folder.string() << '\n';
   return exit_ok;
@@ -260,9 +263,9 @@ int study_command(const StudyArguments& args) {
     io += c == exit_io || c == exit_bad_input || c == 127;
   }
   if (!args.only) {  // (a case alone, as --jobs runs it, says "case ...: done")
-    std::cout << "study " << plan.design.name << ": " << ran << " cases run (" << failed << " failed), "
-              << finished << " already finished, of " << plan.cases.size() << " in " << plan.folder.string()
-              << (args.shard ? " (shard " + *args.shard + ")" : "") << '\n';
+    std::cout << "study " << plan.design.name << ": " << counted(ran, "case") << " run (" << failed
+              << " failed), " << finished << " already finished, of " << plan.cases.size() << " in "
+              << plan.folder.string() << (args.shard ? " (shard " + *args.shard + ")" : "") << '\n';
   } else if (finished) {
     std::cout << "case " << *args.only << " is finished (--video runs it again with its videos)\n";
   }

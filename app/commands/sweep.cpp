@@ -10,13 +10,14 @@
 #include <set>
 
 #include "app/commands/commands.hpp"
-#include "report/sweep_plots.hpp"
-#include "app/output/atomic_file.hpp"
 #include "app/commands/interrupt.hpp"
+#include "app/output/atomic_file.hpp"
 #include "app/output/folder_lock.hpp"
 #include "app/output/run_folder.hpp"
-#include "report/comparison.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
+#include "report/comparison.hpp"
+#include "report/sweep_plots.hpp"
 
 namespace elbowsim {
 
@@ -89,7 +90,11 @@ int sweep_command(const SweepArguments& args) {
       std::vector<RunRecord> records;
       const int c = run_scenario(runs[i], scenarios[i], folder / (args.key + "=" + values[i]), records);
       if (c == exit_io) return exit_io;
-      if (interrupt_exit_code()) return interrupt_exit_code();  // no more runs, no table
+      if (interrupt_exit_code()) {  // no more runs, no table (run_scenario said what was kept)
+        std::cerr << "interrupted: the sweep stopped at " << args.key << "=" << values[i]
+                  << "; sweep.csv not written in " << folder.string() << '\n';
+        return interrupt_exit_code();
+      }
       if (code == exit_ok) code = c;
       for (const RunRecord& r : records) {
         row_values.push_back(values[i]);
@@ -104,8 +109,13 @@ int sweep_command(const SweepArguments& args) {
     std::cerr << "error: " << e.what() << '\n';
     return exit_io;
   }
-  std::cout << "sweep of " << args.key << ": " << row_runs.size() << " runs; table in "
+  std::cout << "sweep of " << args.key << ": "
+            << counted(static_cast<long long>(row_runs.size()), "run") << "; table in "
             << (folder / "sweep.csv").string() << '\n';
+  if (interrupt_exit_code()) {  // while the table was written: it is whole; no plots start
+    std::cerr << "interrupted: sweep.csv is written; no plots\n";
+    return interrupt_exit_code();
+  }
   // Plots against the value, when every value is a number.
   std::vector<report::SweepPoint> points;
   for (std::size_t r = 0; r < row_runs.size(); ++r) {

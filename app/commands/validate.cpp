@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "app/commands/commands.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/cases.hpp"
 #include "engine/contact/geometry.hpp"
@@ -140,7 +141,7 @@ int validate_command(const std::string& scenario, const std::vector<std::string>
         load_scenario_case(scenario, c.levels, "", sets);
         for (const auto& [variant, overrides] : s.variants) load_scenario_case(scenario, c.levels, variant, sets);
       }
-      std::cout << "study      " << cases.size() << " cases (";
+      std::cout << "study      " << counted(static_cast<long long>(cases.size()), "case") << " (";
       for (std::size_t a = 0; a < s.study.size(); ++a)
         std::cout << (a ? " x " : "") << s.study[a].levels.size() << " " << s.study[a].name;
       std::cout << "), each loaded\n";

@@ -2,7 +2,8 @@
 // would mix their files (rows of both in one trajectory.csv, a summary of one
 // beside the trajectory of the other). A run holds an exclusive lock on
 // <folder>/.elbowsim.lock (flock: released by the kernel when the process
-// ends, however it ends) while it writes.
+// ends, however it ends) while it writes, and removes the file when done (a
+// process killed outright leaves it, unlocked: the next run takes it).
 #pragma once
 
 #include <filesystem>
@@ -20,9 +21,9 @@ class FolderLock {
  public:
   // Creates the folder if needed and takes its lock without waiting. Throws
   // FolderInUse when another process holds it, std::runtime_error when the
-  // lock file cannot be opened (naming it). A folder it created that holds
-  // nothing but the lock when it is released (the run wrote nothing: a full
-  // disk, a failed plan) is removed: the place is left as it was.
+  // lock file cannot be opened (naming it). Released, it removes the lock
+  // file, and a folder it created that is then empty (the run wrote
+  // nothing: a full disk, a failed plan): the place is left as it was.
   explicit FolderLock(const std::filesystem::path& folder);
   ~FolderLock();
   FolderLock(const FolderLock&) = delete;

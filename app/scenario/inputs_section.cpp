@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/scenario/checks.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/sections.hpp"
 
 namespace elbowsim::loader {
@@ -77,7 +78,7 @@ std::vector<InputProfile> read_profiles(const Value& v, int dof) {
   if (v.is_sequence()) {
     std::vector<Value> items = v.items();
     if (items.size() != out.size())
-      v.fail("expected " + std::to_string(dof) + " profiles, one per joint (got " +
+      v.fail("expected " + counted(dof, "profile") + ", one per joint (got " +
              std::to_string(items.size()) + "); or give a map {joint index: profile}");
     for (std::size_t i = 0; i < items.size(); ++i) out[i] = read_profile(items[i]);
     return out;

@@ -2,6 +2,7 @@
 // all joints plus optional per-joint overrides. Read and validated even when
 // effects.motor is none, so that switching the motor on later cannot fail.
 #include "app/scenario/checks.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/sections.hpp"
 
 namespace elbowsim::loader {
@@ -59,8 +60,8 @@ std::vector<Motor> read_motors(const Value& motors, const Model& model) {
   if (joints.present()) {
     items = joints.items();
     if (items.size() != n)
-      joints.fail("expected " + std::to_string(n) + " entries, one per joint (got " +
-                  std::to_string(items.size()) + ")");
+      joints.fail("expected " + counted(static_cast<long long>(n), "entry", "entries") +
+                  ", one per joint (got " + std::to_string(items.size()) + ")");
   }
   for (std::size_t i = 0; i < n; ++i) {
     Value inductance = common_inductance;

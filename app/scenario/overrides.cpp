@@ -4,6 +4,7 @@
 #include <charconv>
 #include <vector>
 
+#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
 
 namespace elbowsim::loader {
@@ -56,7 +57,9 @@ YAML::Node descend(YAML::Node node, const Override& o, std::size_t k) {
     if (!node.IsSequence())
       fail(o, there, (here.empty() ? "the document" : here) + " is not a list");
     if (static_cast<std::size_t>(s.index) >= node.size())
-      fail(o, there, "index out of range (the list has " + std::to_string(node.size()) + " items)");
+      fail(o, there,
+           "index out of range (the list has " +
+               counted(static_cast<long long>(node.size()), "item") + ")");
     return node[static_cast<std::size_t>(s.index)];
   }
   if (!node.IsMap() && !node.IsNull()) fail(o, there, here + " is not a map");

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "app/scenario/checks.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/sections.hpp"
 
 namespace elbowsim::loader {
@@ -77,7 +78,7 @@ bool is_index(const std::string& text) {
 }
 
 std::string link_range(int n) {
-  return "the robot has " + std::to_string(n) + " links: " + std::to_string(-n) + " .. " +
+  return "the robot has " + counted(n, "link") + ": " + std::to_string(-n) + " .. " +
          std::to_string(n - 1);
 }
 

@@ -13,6 +13,7 @@
 #include <set>
 
 #include "app/scenario/checks.hpp"
+#include "app/scenario/counted.hpp"
 #include "app/scenario/overrides.hpp"
 #include "app/scenario/sections.hpp"
 
@@ -55,7 +56,7 @@ void expand(const YAML::Node& node, const std::vector<KeyStep>& steps, std::size
   const long last = s.index == kEveryItem ? static_cast<long>(node.size()) - 1 : s.index;
   if (last >= static_cast<long>(node.size()))
     where.fail(prefix + "[" + std::to_string(last) + "] is out of range (the list has " +
-               std::to_string(node.size()) + " items)");
+               counted(static_cast<long long>(node.size()), "item") + ")");
   for (long i = first; i <= last; ++i)
     expand(node[static_cast<std::size_t>(i)], steps, k + 1,
            prefix + "[" + std::to_string(i) + "]", where, absent_ok, out);

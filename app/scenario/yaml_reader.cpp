@@ -6,6 +6,7 @@
 #include <map>
 #include <system_error>
 
+#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
 
 namespace elbowsim::loader {
@@ -262,8 +263,8 @@ std::string Value::text() const {
 }
 
 Eigen::VectorXd Value::numbers(long size, std::string_view what) const {
-  std::string expected = size < 0 ? std::string("a list of numbers")
-                                  : "a list of " + std::to_string(size) + " numbers";
+  std::string expected =
+      size < 0 ? std::string("a list of numbers") : "a list of " + counted(size, "number");
   if (!what.empty()) expected += " (" + std::string(what) + ")";
   if (!is_sequence())
     fail("expected " + expected + " (got " + (exists_ ? describe(node_) : "nothing") + ")");
