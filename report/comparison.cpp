@@ -1,7 +1,6 @@
 #include "report/comparison.hpp"
 
 #include <algorithm>
-
 #include <cmath>
 #include <cstdio>
 #include <map>

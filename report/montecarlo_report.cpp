@@ -128,9 +128,9 @@ std::string metrics_section(const Json& doc) {
   for (const auto& [variant, metrics] : all.items())
     for (const auto& [name, m] : metrics.items()) {
       const std::string unit = m.value("unit", "");
-      out += "<tr><td>" + html::escape(variant) + "</td><td>" + html::escape(name) +
-             "</td><td>" + std::to_string(m.value("valid", 0)) + "</td><td>" +
-             fmt(number(m, "mean"), unit) + "</td><td>" +
+      out += "<tr><td>" + html::escape(variant) + "</td><td>" + html::escape(name) + "</td><td>" +
+             std::to_string(m.value("valid", 0)) + "</td><td>" + fmt(number(m, "mean"), unit) +
+             "</td><td>" +
              html::escape(interval(m.value("ci95", Json()), unit, m.value("no_interval", "")) +
                           draw_list(m.value("draws", Json::array()))) +
              "</td><td>" + fmt(number(m, "median"), unit) + "</td></tr>\n";
@@ -157,8 +157,8 @@ std::string pairs_section(const Json& doc) {
       out += "<tr><td>" + html::escape(p.value("a", "") + " / " + p.value("b", "")) + "</td><td>" +
              html::escape(metric) + "</td><td>" + (ratio ? "ratio A/B" : "difference A − B") +
              "</td><td>" + std::to_string(r.value("pairs", 0)) + "</td><td>" + fmt(value, unit) +
-             "</td><td>" + html::escape(interval(r.value("ci95", Json()), unit, "")) +
-             "</td><td>" + html::escape(percent(number(r, "win_rate"))) + " of draws</td><td>" +
+             "</td><td>" + html::escape(interval(r.value("ci95", Json()), unit, "")) + "</td><td>" +
+             html::escape(percent(number(r, "win_rate"))) + " of draws</td><td>" +
              html::escape(r.value("outcome", "") + (reason.empty() ? "" : ": " + reason) +
                           draw_list(r.value("draws", Json::array()))) +
              "</td></tr>\n";
@@ -210,8 +210,8 @@ void write_montecarlo_report(const std::filesystem::path& folder) {
   const EnergyShown energy = energy_shown(doc);
   add(ecdf(doc, energy.metric, "Electrical energy over the draws",
            plot::linear_axis(energy.label, "J")),
-      "ecdf_energy.png", "Empirical distribution of each variant's " + energy.label +
-                             " (valid draws).");
+      "ecdf_energy.png",
+      "Empirical distribution of each variant's " + energy.label + " (valid draws).");
   add(scatter(doc), "energy_vs_hand_error.png",
       "Each draw of each variant: " + energy.label + " against RMS hand error.");
 
@@ -239,8 +239,8 @@ void write_montecarlo_report(const std::filesystem::path& folder) {
     rows.push_back({"accuracy floor, " + variant,
                     "RMS hand error " + fmt(number(f, "hand_error_rms_step"), "m") + " at step " +
                         fmt(number(f, "step"), "s") + ", " +
-                        fmt(number(f, "hand_error_rms_half_step"), "m") +
-                        " at half of it: floor " + fmt(number(f, "floor"), "m")});
+                        fmt(number(f, "hand_error_rms_half_step"), "m") + " at half of it: floor " +
+                        fmt(number(f, "floor"), "m")});
   page += html::info_table(rows);
   page += metrics_section(doc) + pairs_section(doc) + parameters_section(doc);
   page += "<h2>Distributions</h2>\n";

@@ -28,8 +28,8 @@ double standard_error(std::size_t n, double sum, double sum2) {
 
 // The bootstrap-t interval of the mean, studentized on a linear or a log
 // scale: t* = (g(mean*) - g(mean)) / (g'(mean*) se*), g the identity or log.
-Interval studentized(const std::vector<double>& x, double level, int resamples,
-                     std::uint64_t seed, Scale scale) {
+Interval studentized(const std::vector<double>& x, double level, int resamples, std::uint64_t seed,
+                     Scale scale) {
   if (x.size() < 2) throw std::invalid_argument("bootstrap: needs at least 2 values");
   const std::size_t n = x.size();
   const double m = mean(x);
@@ -53,8 +53,7 @@ Interval studentized(const std::vector<double>& x, double level, int resamples,
     const double se_r = standard_error(n, s, s2);
     if (!(se_r > 1e-9 * se)) continue;
     const double shift = s / static_cast<double>(n);  // mean* - mean
-    t.push_back(scale == Scale::linear ? shift / se_r
-                                       : std::log1p(shift / m) * (m + shift) / se_r);
+    t.push_back(scale == Scale::linear ? shift / se_r : std::log1p(shift / m) * (m + shift) / se_r);
   }
   if (t.empty()) return {m, m};
   std::sort(t.begin(), t.end());
@@ -70,8 +69,7 @@ std::string count(std::size_t n, const char* one, const char* many) {
 // Why no interval is given for n values; "" when n is enough.
 std::string too_few(std::size_t n, const char* one, const char* many) {
   if (n >= kMinIntervalValues) return "";
-  return count(n, one, many) + "; an interval needs at least " +
-         std::to_string(kMinIntervalValues);
+  return count(n, one, many) + "; an interval needs at least " + std::to_string(kMinIntervalValues);
 }
 
 bool finite(const Interval& i) { return std::isfinite(i.low) && std::isfinite(i.high); }
@@ -130,8 +128,10 @@ Estimate estimate_mean(const std::vector<double>& x, Scale scale, double level, 
     }
   }
   const Interval ci = studentized(x, level, resamples, seed, scale);
-  if (finite(ci)) e.ci = ci;
-  else e.no_interval = "the bootstrap interval is not finite";
+  if (finite(ci))
+    e.ci = ci;
+  else
+    e.no_interval = "the bootstrap interval is not finite";
   return e;
 }
 
@@ -157,8 +157,10 @@ PairedStatistic paired(const std::vector<double>& y, const std::vector<double>& 
   if (!out.problem.empty()) return out;
   const Interval l = studentized(y, level, resamples, seed, Scale::linear);
   const Interval ci{back(l.low), back(l.high)};
-  if (finite(ci)) out.ci = ci;
-  else out.problem = "the bootstrap interval is not finite";
+  if (finite(ci))
+    out.ci = ci;
+  else
+    out.problem = "the bootstrap interval is not finite";
   return out;
 }
 
@@ -174,8 +176,10 @@ PairedStatistic paired_ratio(const std::vector<double>& a, const std::vector<dou
   std::vector<double> logs;
   std::vector<std::size_t> bad;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (!(a[i] > 0 && b[i] > 0 && std::isfinite(a[i]) && std::isfinite(b[i]))) bad.push_back(i);
-    else logs.push_back(std::log(a[i] / b[i]));
+    if (!(a[i] > 0 && b[i] > 0 && std::isfinite(a[i]) && std::isfinite(b[i])))
+      bad.push_back(i);
+    else
+      logs.push_back(std::log(a[i] / b[i]));
   }
   if (!bad.empty()) {
     PairedStatistic out;
@@ -194,8 +198,10 @@ PairedStatistic paired_difference(const std::vector<double>& a, const std::vecto
   std::vector<double> d;
   std::vector<std::size_t> bad;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (!(std::isfinite(a[i]) && std::isfinite(b[i]))) bad.push_back(i);
-    else d.push_back(a[i] - b[i]);
+    if (!(std::isfinite(a[i]) && std::isfinite(b[i])))
+      bad.push_back(i);
+    else
+      d.push_back(a[i] - b[i]);
   }
   if (!bad.empty()) {
     PairedStatistic out;

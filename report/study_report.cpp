@@ -118,9 +118,10 @@ std::string case_table(const Json& doc) {
         const Json x = c.value("metrics", Json::object())
                            .value(v.get<std::string>(), Json::object())
                            .value(m.metric, Json::object());
-        out += "<td class=\"num\">" +
-               html::escape(with_interval(x.value("mean", Json()), x.value("ci95", Json()), m.unit)) +
-               "</td>";
+        out +=
+            "<td class=\"num\">" +
+            html::escape(with_interval(x.value("mean", Json()), x.value("ci95", Json()), m.unit)) +
+            "</td>";
       }
       const Json r = pair.value(m.metric, Json::object());
       const std::string outcome = r.value("outcome", "no verdict");

@@ -4,9 +4,9 @@
 // --jobs; identical variants -> no significant difference).
 #include <doctest/doctest.h>
 
-#include <filesystem>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -183,7 +183,9 @@ TEST_CASE("cli: run --check-step: the run again at half the step, every metric's
                   .contains("step_check"));
 }
 
-TEST_CASE("paired verdict: stated when the interval excludes 1 or 0, refused below the floor or with invalid draws") {
+TEST_CASE(
+    "paired verdict: stated when the interval excludes 1 or 0, refused below the floor or with "
+    "invalid draws") {
   using elbowsim::study::PairedSamples;
   PairedSamples s;
   s.a = "on";
@@ -193,11 +195,13 @@ TEST_CASE("paired verdict: stated when the interval excludes 1 or 0, refused bel
     const double x = 1.0 + 0.1 * i;
     s.b_values["energy_drawn"].push_back(x);
     s.a_values["energy_drawn"].push_back(0.5 * x);
-    s.b_values["energy_in"].push_back(x - 1.5);  // both signs: the motors fed back more in some draws
+    // The net energy has both signs: the motors fed back more in some draws.
+    s.b_values["energy_in"].push_back(x - 1.5);
     s.a_values["energy_in"].push_back(0.5 * x - 1.5);
     s.b_values["hand_error_rms"].push_back(1e-3 * x);
     s.a_values["hand_error_rms"].push_back(1e-3 * x * (i % 2 ? 1.2 : 0.8));  // as often above as below
-    for (const char* m : {"energy_drawn", "energy_in", "hand_error_rms"}) s.draw_index[m].push_back(i);
+    for (const char* m : {"energy_drawn", "energy_in", "hand_error_rms"})
+      s.draw_index[m].push_back(i);
   }
   s.floor_a = s.floor_b = 1e-7;
   auto verdict = [](const PairedSamples& p) {
@@ -205,11 +209,13 @@ TEST_CASE("paired verdict: stated when the interval excludes 1 or 0, refused bel
   };
   auto v = verdict(s);
   REQUIRE(v.size() == 3);
-  CHECK(v[0].starts_with("electrical energy drawn from the supply: on 50 % lower than off (paired 95 % CI of "
-                         "on/off: 0.5–0.5, 20 draws; on lower in 100 % of draws)"));
+  CHECK(v[0].starts_with(
+      "electrical energy drawn from the supply: on 50 % lower than off (paired 95 % CI of "
+      "on/off: 0.5–0.5, 20 draws; on lower in 100 % of draws)"));
   // The mean difference: 0.5 x the mean of 1.0 .. 2.9, 0.975 J.
-  CHECK(v[1].starts_with("net electrical energy (drawn − regenerated): on 975 mJ lower than off (paired 95 % "
-                         "CI of on − off: "));
+  CHECK(v[1].starts_with(
+      "net electrical energy (drawn − regenerated): on 975 mJ lower than off (paired 95 % "
+      "CI of on − off: "));
   CHECK(v[2].starts_with("RMS hand error: no significant difference between on and off"));
   const auto json = elbowsim::study::paired_verdict(s, 1);
   CHECK(json["energy_in"]["statistic"] == "difference");
@@ -222,14 +228,17 @@ TEST_CASE("paired verdict: stated when the interval excludes 1 or 0, refused bel
   PairedSamples floor = s;  // errors of 1-3 mm against a 0.2 mm floor: below 10 x
   floor.floor_a = 2e-4;
   CHECK(verdict(floor)[2] ==
-        "RMS hand error: no verdict (the medians (1.86 mm, 1.95 mm) are not above 10 x the accuracy floor "
-        "(200 µm, 100 nm; step halving of the nominal runs): they measure the integrator, not the arm)");
+        "RMS hand error: no verdict (the medians (1.86 mm, 1.95 mm) are not above 10 x the "
+        "accuracy floor "
+        "(200 µm, 100 nm; step halving of the nominal runs): they measure the integrator, not the "
+        "arm)");
 
   PairedSamples invalid = s;  // 3 of 20 draws with an invalid run: 15 % > 10 %
   invalid.dropped = 3;
   v = verdict(invalid);
-  CHECK(v[0] == "electrical energy drawn from the supply: no verdict (3 of 20 draws have an invalid run; "
-                "a verdict allows 10 %)");
+  CHECK(v[0] ==
+        "electrical energy drawn from the supply: no verdict (3 of 20 draws have an invalid run; "
+        "a verdict allows 10 %)");
   PairedSamples one = s;  // 1 of 20: the verdict stands, the draw is named as left out
   one.dropped = 1;
   v = verdict(one);
@@ -238,7 +247,9 @@ TEST_CASE("paired verdict: stated when the interval excludes 1 or 0, refused bel
   CHECK(v[3] == "1 of 20 draws left out: a run of the pair was invalid (listed below)");
 }
 
-TEST_CASE("paired verdict: a statistic that cannot be computed gives its reason and draws; the rest stand") {
+TEST_CASE(
+    "paired verdict: a statistic that cannot be computed gives its reason and draws; the rest "
+    "stand") {
   using elbowsim::study::PairedSamples;
   PairedSamples s;
   s.a = "on";
@@ -247,20 +258,24 @@ TEST_CASE("paired verdict: a statistic that cannot be computed gives its reason 
   for (int i = 0; i < 12; ++i) {
     const double x = 1.0 + 0.1 * i;
     s.b_values["energy_drawn"].push_back(x);
-    s.a_values["energy_drawn"].push_back(i == 4 || i == 9 ? 0.0 : 0.5 * x);  // drew nothing: no ratio
+    s.a_values["energy_drawn"].push_back(i == 4 || i == 9 ? 0.0
+                                                          : 0.5 * x);  // drew nothing: no ratio
     s.b_values["hand_error_rms"].push_back(1e-3 * x);
     s.a_values["hand_error_rms"].push_back(0.3e-3 * x);
     for (const char* m : {"energy_drawn", "hand_error_rms"}) s.draw_index[m].push_back(100 + i);
-  }  // no energy_in: not recorded
+  }                                                      // no energy_in: not recorded
   const auto p = elbowsim::study::paired_verdict(s, 1);  // does not throw
   const auto v = p["verdict"].get<std::vector<std::string>>();
   REQUIRE(v.size() == 3);
-  CHECK(v[0] == "electrical energy drawn from the supply: no verdict (a ratio needs values > 0; 2 pairs "
-                "have a value <= 0 or not finite: draws 104, 109)");
+  CHECK(v[0] ==
+        "electrical energy drawn from the supply: no verdict (a ratio needs values > 0; 2 pairs "
+        "have a value <= 0 or not finite: draws 104, 109)");
   CHECK(p["energy_drawn"]["outcome"] == "no verdict");
   CHECK(p["energy_drawn"]["draws"] == nlohmann::json::array({104, 109}));
   CHECK_FALSE(p["energy_drawn"].contains("ratio"));
-  CHECK(v[1] == "net electrical energy (drawn − regenerated): no verdict (energy_in is not recorded in these runs)");
+  CHECK(v[1] ==
+        "net electrical energy (drawn − regenerated): no verdict (energy_in is not recorded in "
+        "these runs)");
   CHECK(v[2].starts_with("RMS hand error: on 70 % lower than off"));
   CHECK(p["hand_error_rms"]["outcome"] == "lower");
 
@@ -313,12 +328,13 @@ std::vector<double> numbers(const nlohmann::json& array) {
 
 }  // namespace
 
-TEST_CASE("cli: montecarlo: draws whose net energy is negative finish (exit 0) with every statistic") {
+TEST_CASE(
+    "cli: montecarlo: draws whose net energy is negative finish (exit 0) with every statistic") {
   const fs::path dir = elbowsim::testing::scratch("cli", "montecarlo_regenerating");
   const fs::path file = dir / "lowering.yaml";
   std::ofstream(file) << kLowering;
-  const auto r = elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples 12 --jobs 2 --out " +
-                                                 (dir / "mc").string());
+  const auto r = elbowsim::testing::run_elbowsim(
+      "montecarlo " + file.string() + " --samples 12 --jobs 2 --out " + (dir / "mc").string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const auto doc = nlohmann::json::parse(elbowsim::testing::slurp(dir / "mc" / "montecarlo.json"));
@@ -335,7 +351,8 @@ TEST_CASE("cli: montecarlo: draws whose net energy is negative finish (exit 0) w
   }
   for (double held : numbers(doc["draws"]["held"]["energy_in"])) CHECK(held > 0);
   // samples.csv holds them.
-  CHECK(elbowsim::testing::slurp(dir / "mc" / "samples.csv").find(",lowered,true,") != std::string::npos);
+  CHECK(elbowsim::testing::slurp(dir / "mc" / "samples.csv").find(",lowered,true,") !=
+        std::string::npos);
 
   // Every statistic computed: the ratio of drawn energy, the difference of
   // net energy (negative: lowered - held), the ratio of hand errors.
@@ -348,7 +365,8 @@ TEST_CASE("cli: montecarlo: draws whose net energy is negative finish (exit 0) w
   CHECK(pair["energy_in"]["ci95"][1].get<double>() < 0);
   CHECK(pair["energy_in"]["outcome"] == "lower");
   CHECK(pair["hand_error_rms"].contains("ci95"));
-  CHECK(r.output.find("net electrical energy (drawn − regenerated): lowered ") != std::string::npos);
+  CHECK(r.output.find("net electrical energy (drawn − regenerated): lowered ") !=
+        std::string::npos);
   // The net energy's interval on a linear scale (negative), the never-negative
   // regenerated energy's on a log scale; held regenerates nothing: [0, 0].
   const auto& lowered = doc["metrics"]["lowered"];
@@ -364,22 +382,27 @@ TEST_CASE("cli: montecarlo: draws whose net energy is negative finish (exit 0) w
   CHECK(html.find("difference A − B") != std::string::npos);
 }
 
-TEST_CASE("cli: montecarlo: 3 draws give no interval and no verdict; 30 give log-scale intervals above 0") {
+TEST_CASE(
+    "cli: montecarlo: 3 draws give no interval and no verdict; 30 give log-scale intervals above "
+    "0") {
   const fs::path dir = elbowsim::testing::scratch("cli", "montecarlo_intervals");
   const fs::path file = dir / "lowering.yaml";
   std::ofstream(file) << kLowering;
   auto run = [&](int samples) {
     const std::string out = (dir / std::to_string(samples)).string();
-    const auto r = elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples " +
-                                                   std::to_string(samples) + " --jobs 2 --out " + out);
+    const auto r =
+        elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples " +
+                                        std::to_string(samples) + " --jobs 2 --out " + out);
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
-    return std::make_pair(r.output, nlohmann::json::parse(elbowsim::testing::slurp(out + "/montecarlo.json")));
+    return std::make_pair(
+        r.output, nlohmann::json::parse(elbowsim::testing::slurp(out + "/montecarlo.json")));
   };
   const auto [few_output, few] = run(3);
-  for (const char* what : {"electrical energy drawn from the supply", "net electrical energy (drawn − regenerated)",
-                           "RMS hand error"})
-    CHECK(few_output.find(std::string(what) + ": no verdict (3 pairs; an interval needs at least 10)") !=
+  for (const char* what : {"electrical energy drawn from the supply",
+                           "net electrical energy (drawn − regenerated)", "RMS hand error"})
+    CHECK(few_output.find(std::string(what) +
+                          ": no verdict (3 pairs; an interval needs at least 10)") !=
           std::string::npos);
   CHECK(few_output.find("CI") == std::string::npos);
   for (const auto& [variant, metrics] : few["metrics"].items())
@@ -392,8 +415,8 @@ TEST_CASE("cli: montecarlo: 3 draws give no interval and no verdict; 30 give log
     CHECK_FALSE(few["pairs"][0][m].contains("ci95"));
     CHECK(few["pairs"][0][m]["outcome"] == "no verdict");
   }
-  CHECK(elbowsim::testing::slurp(dir / "3" / "report.html").find("none: 3 values; an interval needs at least 10") !=
-        std::string::npos);
+  CHECK(elbowsim::testing::slurp(dir / "3" / "report.html")
+            .find("none: 3 values; an interval needs at least 10") != std::string::npos);
 
   const auto [many_output, many] = run(30);
   for (const char* m : {"energy_drawn", "hand_error_rms"}) {
@@ -418,15 +441,18 @@ TEST_CASE("cli: montecarlo: 3 draws give no interval and no verdict; 30 give log
   }
 }
 
-TEST_CASE("cli: montecarlo over a study: a case whose statistic cannot be computed keeps its row, with the reason") {
+TEST_CASE(
+    "cli: montecarlo over a study: a case whose statistic cannot be computed keeps its row, with "
+    "the reason") {
   const fs::path dir = elbowsim::testing::scratch("cli", "montecarlo_study_reason");
   const fs::path file = dir / "lowering.yaml";
   // Unpowered (0 V, open loop) the arm sinks against its shorted motors: no
   // energy is drawn from the supply in any draw, so no ratio of it.
-  std::ofstream(file) << kLowering
-                      << "study: {axes: {drive: {planned: {}, unpowered: {controller.type: open_loop}}}}\n";
-  const auto r = elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples 10 --jobs 2 --out " +
-                                                 (dir / "mc").string());
+  std::ofstream(file)
+      << kLowering
+      << "study: {axes: {drive: {planned: {}, unpowered: {controller.type: open_loop}}}}\n";
+  const auto r = elbowsim::testing::run_elbowsim(
+      "montecarlo " + file.string() + " --samples 10 --jobs 2 --out " + (dir / "mc").string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const auto study = nlohmann::json::parse(elbowsim::testing::slurp(dir / "mc" / "study.json"));
@@ -447,10 +473,13 @@ TEST_CASE("cli: montecarlo over a study: a case whose statistic cannot be comput
   // study.csv: a row per case, the reason and the draws in the unpowered one's.
   const std::string csv = elbowsim::testing::slurp(dir / "mc" / "study.csv");
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 3);
-  CHECK(csv.find("\nunpowered,unpowered,lowered,held,0,,,,,no verdict,\"a ratio needs values > 0; 10 pairs have a "
-                 "value <= 0 or not finite: draws 0, 1, 2, 3, 4, 5, 6, 7, 8, 9\",") != std::string::npos);
-  CHECK(study["verdict"][0] == "Electrical energy drawn from the supply, lowered against held: higher in 1 of 2 "
-                               "cases; no verdict in 1 of 2 cases");
+  CHECK(csv.find("\nunpowered,unpowered,lowered,held,0,,,,,no verdict,\"a ratio needs values > 0; "
+                 "10 pairs have a "
+                 "value <= 0 or not finite: draws 0, 1, 2, 3, 4, 5, 6, 7, 8, 9\",") !=
+        std::string::npos);
+  CHECK(study["verdict"][0] ==
+        "Electrical energy drawn from the supply, lowered against held: higher in 1 of 2 "
+        "cases; no verdict in 1 of 2 cases");
   const std::string html = elbowsim::testing::slurp(dir / "mc" / "report.html");
   CHECK(html.find("no verdict: a ratio needs values &gt; 0") != std::string::npos);
 }

@@ -141,7 +141,9 @@ TEST_CASE("verdict: computed from the numbers") {
     const auto d = r::compare_runs({run_with("a", 10.0), run_with("b", 10.2)});
     CHECK(d.verdict[0] == "a: 2.0 % less net electrical energy than b (10 J vs 10.2 J).");
   }
-  SUBCASE("motors that feed back more than they draw: drawn energy as a percentage, net as a difference") {
+  SUBCASE(
+      "motors that feed back more than they draw: drawn energy as a percentage, net as a "
+      "difference") {
     // The supply's energy is positive: the percentage is of it.
     auto on = run_with("on", -0.1), off = run_with("off", 15.5);
     on.summary["energy_final"]["drawn"] = 2.08;

@@ -81,11 +81,15 @@ std::vector<double> sample(std::mt19937_64& gen, int distribution, std::size_t n
   std::exponential_distribution<double> exponential(1.0);
   std::vector<double> x(n);
   for (double& v : x)
-    v = distribution == 0 ? 5 + 2 * z(gen) : distribution == 1 ? exponential(gen) : std::exp(0.5 * z(gen));
+    v = distribution == 0   ? 5 + 2 * z(gen)
+        : distribution == 1 ? exponential(gen)
+                            : std::exp(0.5 * z(gen));
   return x;
 }
 
-TEST_CASE("bootstrap on a log scale: the interval of a positive mean stays above 0 and keeps its coverage") {
+TEST_CASE(
+    "bootstrap on a log scale: the interval of a positive mean stays above 0 and keeps its "
+    "coverage") {
   // Five RMS errors, one far out (the issue's case: a linear interval of an
   // RMS error reached -0.86 mm).
   const std::vector<double> rms = {2e-4, 3e-4, 2.5e-4, 3e-3, 4e-4};
@@ -121,7 +125,9 @@ TEST_CASE("coverage at small n: why intervals start at kMinIntervalValues values
     Scale scale;
     double truth;
   };
-  const Case cases[] = {{0, Scale::linear, 5.0}, {1, Scale::linear, 1.0}, {1, Scale::log, 1.0},
+  const Case cases[] = {{0, Scale::linear, 5.0},
+                        {1, Scale::linear, 1.0},
+                        {1, Scale::log, 1.0},
                         {2, Scale::log, std::exp(0.125)}};
   auto run = [](const Case& c, std::size_t n, double& coverage, double& span_p99, int& infinite) {
     std::mt19937_64 gen(4242 + n);
@@ -165,7 +171,8 @@ TEST_CASE("coverage at small n: why intervals start at kMinIntervalValues values
   CHECK(kMinIntervalValues == 10);  // the docs (scenarios/README.md, uncertainty) say 10
 }
 
-TEST_CASE("estimate_mean: an interval from 10 values, on a log scale above 0; otherwise the reason") {
+TEST_CASE(
+    "estimate_mean: an interval from 10 values, on a log scale above 0; otherwise the reason") {
   std::mt19937_64 gen(5);
   const std::vector<double> skewed = sample(gen, 2, 30);
   const Estimate e = estimate_mean(skewed, Scale::log, 0.95, 2000, 1);
@@ -242,7 +249,7 @@ TEST_CASE("paired difference: any signs; identical variants give [0, 0]; a shift
   std::normal_distribution<double> z(0.0, 1.0);
   std::vector<double> a, b;
   for (int i = 0; i < 30; ++i) {
-    b.push_back(0.2 * z(gen));           // net energies of both signs
+    b.push_back(0.2 * z(gen));                    // net energies of both signs
     a.push_back(b.back() - 0.5 + 0.05 * z(gen));  // 0.5 J less, in every draw
   }
   const PairedStatistic d = paired_difference(a, b, 0.95, 4000, 1);

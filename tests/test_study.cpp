@@ -189,8 +189,9 @@ TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same by
   }
   // The heavier hand costs energy in every case: the verdict says so.
   CHECK(doc["tally"][0]["energy_drawn"]["lower"].size() == 4);
-  CHECK(contains(doc["verdict"][0].get<std::string>(),
-                 "Electrical energy drawn from the supply, light against heavy: lower in 4 of 4 cases"));
+  CHECK(contains(
+      doc["verdict"][0].get<std::string>(),
+      "Electrical energy drawn from the supply, light against heavy: lower in 4 of 4 cases"));
   CHECK(doc["tally"][0]["energy_in"]["lower"].size() == 4);
   // The short cases ran 0.3 s: less energy than the long ones.
   const auto energy = [&](int k) { return doc["cases"][k]["metrics"]["light"]["energy_in"]["mean"].get<double>(); };
@@ -208,9 +209,12 @@ TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same by
   CHECK(contains(samples, "\n5,heavy,true,10,"));
   // study.csv: per compared quantity its statistic, outcome and reason.
   const std::string csv = elbowsim::testing::slurp(dir / "one" / "study.csv");
-  CHECK(contains(csv, "energy_drawn ratio a/b,energy_drawn ratio low,energy_drawn ratio high,"
-                      "energy_drawn a lower share,energy_drawn outcome,energy_drawn reason,"));
-  CHECK(contains(csv, "energy_in difference a-b [J],energy_in difference low [J],energy_in difference high [J],"));
+  CHECK(contains(csv,
+                 "energy_drawn ratio a/b,energy_drawn ratio low,energy_drawn ratio high,"
+                 "energy_drawn a lower share,energy_drawn outcome,energy_drawn reason,"));
+  CHECK(contains(
+      csv,
+      "energy_in difference a-b [J],energy_in difference low [J],energy_in difference high [J],"));
 
   const auto some = run("some", "--case pose=high --no-report");
   REQUIRE(some.exit_code == 0);

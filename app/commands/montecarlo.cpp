@@ -47,13 +47,11 @@ struct StudiedMetric {
   const char* unit;
   report::Scale scale;
 };
-const StudiedMetric kMetrics[] = {{"energy_in", "J", report::Scale::linear},
-                                  {"energy_drawn", "J", report::Scale::log},
-                                  {"energy_regenerated", "J", report::Scale::log},
-                                  {"joule", "J", report::Scale::log},
-                                  {"hand_error_rms", "m", report::Scale::log},
-                                  {"hand_error_max", "m", report::Scale::log},
-                                  {"hand_error_final", "m", report::Scale::log}};
+const StudiedMetric kMetrics[] = {
+    {"energy_in", "J", report::Scale::linear},       {"energy_drawn", "J", report::Scale::log},
+    {"energy_regenerated", "J", report::Scale::log}, {"joule", "J", report::Scale::log},
+    {"hand_error_rms", "m", report::Scale::log},     {"hand_error_max", "m", report::Scale::log},
+    {"hand_error_final", "m", report::Scale::log}};
 
 struct Sample {
   bool valid = false;
@@ -260,8 +258,10 @@ Json metric_json(const StudiedMetric& k, const std::vector<double>& x,
          {"valid", e.n},
          {"mean", e.mean},
          {"median", e.median}};
-  if (e.ci) m["ci95"] = {e.ci->low, e.ci->high};
-  else m["no_interval"] = e.no_interval;
+  if (e.ci)
+    m["ci95"] = {e.ci->low, e.ci->high};
+  else
+    m["no_interval"] = e.no_interval;
   if (!e.involved.empty()) {
     Json involved = Json::array();
     for (std::size_t i : e.involved) involved.push_back(from[i]);

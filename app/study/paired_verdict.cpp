@@ -40,8 +40,8 @@ std::string difference(const std::string& a, const std::string& b, const Compare
     return std::string(q.what) + ": no significant difference between " + a + " and " + b + " (" +
            ci + ", contains " + (q.ratio ? "1" : "0") + ")";
   const bool lower = r.value < none;
-  const std::string size = q.ratio ? report::percent(std::abs(r.value - 1))
-                                   : number(std::abs(r.value), q.unit);
+  const std::string size =
+      q.ratio ? report::percent(std::abs(r.value - 1)) : number(std::abs(r.value), q.unit);
   return std::string(q.what) + ": " + a + " " + size + (lower ? " lower" : " higher") + " than " +
          b + " (" + ci + "; " + a + " lower in " + report::percent(r.win_rate) + " of draws)";
 }
@@ -94,7 +94,8 @@ nlohmann::ordered_json paired_verdict(const PairedSamples& s, std::uint64_t seed
       continue;
     }
     const auto index = s.draw_index.find(m);
-    const std::vector<long> draws = index == s.draw_index.end() ? std::vector<long>() : index->second;
+    const std::vector<long> draws =
+        index == s.draw_index.end() ? std::vector<long>() : index->second;
     const report::PairedStatistic r =
         q.ratio ? report::paired_ratio(ia->second, ib->second, kConfidenceLevel,
                                        kBootstrapResamples, seed)
@@ -115,8 +116,8 @@ nlohmann::ordered_json paired_verdict(const PairedSamples& s, std::uint64_t seed
       const double ma = report::median(ia->second), mb = report::median(ib->second);
       if (!(ma > kFloorFactor * s.floor_a && mb > kFloorFactor * s.floor_b)) {
         no_verdict("the medians (" + number(ma, "m") + ", " + number(mb, "m") +
-                       ") are not above 10 x the accuracy floor (" + number(s.floor_a, "m") +
-                       ", " + number(s.floor_b, "m") +
+                       ") are not above 10 x the accuracy floor (" + number(s.floor_a, "m") + ", " +
+                       number(s.floor_b, "m") +
                        "; step halving of the nominal runs): they measure the integrator, not "
                        "the arm",
                    {});

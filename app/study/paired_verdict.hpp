@@ -31,7 +31,7 @@ struct ComparedQuantity {
   const char* metric;  // its name in the run's metrics
   const char* what;    // in a sentence
   const char* unit;
-  bool ratio;          // a ratio of positive values, else a difference
+  bool ratio;  // a ratio of positive values, else a difference
 };
 inline constexpr ComparedQuantity kCompared[] = {
     {"energy_drawn", "electrical energy drawn from the supply", "J", true},

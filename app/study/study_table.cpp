@@ -102,8 +102,10 @@ Json study_document(const Scenario& base, const std::string& file, const std::ve
           const Json& x = metrics[q.metric];
           Json& y = c["metrics"][variant][q.metric];
           y = {{"mean", x["mean"]}, {"median", x["median"]}};
-          if (x.contains("ci95")) y["ci95"] = x["ci95"];
-          else y["no_interval"] = x.value("no_interval", "");
+          if (x.contains("ci95"))
+            y["ci95"] = x["ci95"];
+          else
+            y["no_interval"] = x.value("no_interval", "");
         }
     for (const auto& [variant, f] : d["accuracy_floor"].items()) c["accuracy_floor"][variant] = f["floor"];
     Json pairs = Json::array();
@@ -133,7 +135,8 @@ void write_study_csv(const std::filesystem::path& path, const Json& study) {
     out << ",a,b,invalid_runs";
     for (const ComparedQuantity& q : kCompared) {
       const std::string m = q.metric, unit = std::string(" [") + q.unit + "]";
-      if (q.ratio) out << "," << m << " ratio a/b," << m << " ratio low," << m << " ratio high";
+      if (q.ratio)
+        out << "," << m << " ratio a/b," << m << " ratio low," << m << " ratio high";
       else
         out << "," << m << " difference a-b" << unit << "," << m << " difference low" << unit << ","
             << m << " difference high" << unit;
@@ -154,9 +157,10 @@ void write_study_csv(const std::filesystem::path& path, const Json& study) {
           const Json r = p.value(m, Json::object());
           const Json ci = r.value("ci95", Json::array());
           out << "," << number(r.value(q.ratio ? "ratio" : "difference", Json())) << ","
-              << (ci.size() == 2 ? number(ci[0]) : "") << "," << (ci.size() == 2 ? number(ci[1]) : "")
-              << "," << number(r.value("win_rate", Json())) << "," << r.value("outcome", "no verdict")
-              << "," << csv_text(r.value("reason", "") + draw_list(r.value("draws", Json::array())));
+              << (ci.size() == 2 ? number(ci[0]) : "") << ","
+              << (ci.size() == 2 ? number(ci[1]) : "") << "," << number(r.value("win_rate", Json()))
+              << "," << r.value("outcome", "no verdict") << ","
+              << csv_text(r.value("reason", "") + draw_list(r.value("draws", Json::array())));
           for (const std::string& v : {a, b}) {
             const Json mv = c.value("metrics", Json::object()).value(v, Json::object()).value(m, Json::object());
             out << "," << number(mv.value("mean", Json()));
