@@ -3,7 +3,7 @@
 // of its summary.json except timings (so the table is the same bytes however
 // and wherever the cases ran), written as table.csv; with repeats (the draws
 // of a Monte Carlo design) the mean of each headline metric per point and
-// variant with its 95 % bootstrap interval (from 10 draws), points.csv; and report.html with
+// variant with its 95 % bootstrap interval (from 15 draws), points.csv; and report.html with
 // plots over every numeric swept key.
 #pragma once
 
@@ -53,7 +53,7 @@ struct MergedPoint {
 std::vector<MergedPoint> merged_points(const MergedStudy& study);
 
 // The mean of headline metric h over a point's valid draws with its 95 %
-// bootstrap interval: on a log scale (never below 0) except for the net
+// BCa bootstrap interval: on a log scale (never below 0) except for the net
 // energy in, which can be negative; none below kMinIntervalValues draws.
 Estimate headline_estimate(const std::vector<double>& values, std::size_t h);
 

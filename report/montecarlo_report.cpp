@@ -115,10 +115,10 @@ std::string draw_list(const Json& draws) {
 
 std::string metrics_section(const Json& doc) {
   std::string out =
-      "<h2>Metrics per variant (valid draws)</h2>\n<p>The interval of a metric that is never "
-      "negative is taken on a log scale (it stays above 0); of the net energy in, which is "
-      "negative when the motors feed back more than they draw, on a linear scale. No interval "
-      "below " +
+      "<h2>Metrics per variant (valid draws)</h2>\n<p>Means with their 95 % BCa bootstrap "
+      "intervals (percentiles of resampled means, corrected for bias and skew): the interval of "
+      "a metric that is never negative never is either; the net energy in is negative when the "
+      "motors feed back more than they draw. No interval below " +
       std::to_string(doc.value("min_interval_draws", 0)) +
       " valid draws.</p>\n<table id=\"mc-metrics\"><thead><tr>"
       "<th>variant</th><th>metric</th><th>valid draws</th><th>mean</th>"

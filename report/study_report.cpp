@@ -86,8 +86,8 @@ plot::LinePlot ratio_plot(const Json& doc) {
 std::string case_table(const Json& doc) {
   const Json& variants = doc.value("variants", Json::array());
   std::string out =
-      "<h2>Cases</h2>\n<p>Means over the valid draws with their 95 % bootstrap intervals (on a "
-      "log scale for quantities that are never negative); energy drawn is what the supply "
+      "<h2>Cases</h2>\n<p>Means over the valid draws with their 95 % BCa bootstrap intervals "
+      "(never below 0 for quantities that never are); energy drawn is what the supply "
       "delivered, net energy what it delivered less what the motors fed back (negative when "
       "they fed back more). Ratios (of energy drawn and of RMS hand error) and the difference of "
       "net energy are paired (same draw), a / b and a − b of the first pair of variants; the "

@@ -102,7 +102,7 @@ TEST_CASE("cli: montecarlo: same seed -> same bytes (jobs 1 or 2); identical var
   const fs::path file = dir / "holding.yaml";
   std::ofstream(file) << kHolding << "variants: {a: {}, b: {}}\n";
   auto run = [&](const std::string& out, const std::string& options) {
-    return elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples 10 --out " +
+    return elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples 15 --out " +
                                            (dir / out).string() + " " + options);
   };
   const auto first = run("one", "--jobs 1 --no-report");
@@ -124,8 +124,8 @@ TEST_CASE("cli: montecarlo: same seed -> same bytes (jobs 1 or 2); identical var
 
   const auto doc = nlohmann::json::parse(elbowsim::testing::slurp(dir / "one" / "montecarlo.json"));
   CHECK(doc["seed"] == 7);  // the scenario's
-  CHECK(doc["samples"] == 10);
-  CHECK(doc["min_interval_draws"] == 10);
+  CHECK(doc["samples"] == 15);
+  CHECK(doc["min_interval_draws"] == 15);
   CHECK(doc["invalid"].empty());
   const auto& energy = doc["pairs"][0]["energy_drawn"];
   CHECK(energy["statistic"] == "ratio");
@@ -141,7 +141,7 @@ TEST_CASE("cli: montecarlo: same seed -> same bytes (jobs 1 or 2); identical var
   CHECK(first.output.find("no significant difference") != std::string::npos);
 
   // The draws vary the plant: link 0's mass differs between draws.
-  CHECK(doc["metrics"]["a"]["energy_in"]["valid"] == 10);
+  CHECK(doc["metrics"]["a"]["energy_in"]["valid"] == 15);
   const auto& e = doc["draws"]["a"]["energy_in"];
   CHECK(e[0] != e[1]);
 }
@@ -254,8 +254,8 @@ TEST_CASE(
   PairedSamples s;
   s.a = "on";
   s.b = "off";
-  s.draws = 12;
-  for (int i = 0; i < 12; ++i) {
+  s.draws = 15;
+  for (int i = 0; i < 15; ++i) {
     const double x = 1.0 + 0.1 * i;
     s.b_values["energy_drawn"].push_back(x);
     s.a_values["energy_drawn"].push_back(i == 4 || i == 9 ? 0.0
@@ -287,7 +287,7 @@ TEST_CASE(
   CHECK(q["hand_error_rms"]["ratio"].get<double>() == doctest::Approx(0.3));
   CHECK_FALSE(q["hand_error_rms"].contains("ci95"));
   CHECK(q["hand_error_rms"]["outcome"] == "no verdict");
-  CHECK(q["verdict"][2] == "RMS hand error: no verdict (3 pairs; an interval needs at least 10)");
+  CHECK(q["verdict"][2] == "RMS hand error: no verdict (3 pairs; an interval needs at least 15)");
 }
 
 namespace {
@@ -334,7 +334,7 @@ TEST_CASE(
   const fs::path file = dir / "lowering.yaml";
   std::ofstream(file) << kLowering;
   const auto r = elbowsim::testing::run_elbowsim(
-      "montecarlo " + file.string() + " --samples 12 --jobs 2 --out " + (dir / "mc").string());
+      "montecarlo " + file.string() + " --samples 15 --jobs 2 --out " + (dir / "mc").string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const auto doc = nlohmann::json::parse(elbowsim::testing::slurp(dir / "mc" / "montecarlo.json"));
@@ -343,7 +343,7 @@ TEST_CASE(
   const std::vector<double> net = numbers(doc["draws"]["lowered"]["energy_in"]);
   const std::vector<double> drawn = numbers(doc["draws"]["lowered"]["energy_drawn"]);
   const std::vector<double> fed_back = numbers(doc["draws"]["lowered"]["energy_regenerated"]);
-  REQUIRE(net.size() == 12);
+  REQUIRE(net.size() == 15);
   for (std::size_t d = 0; d < net.size(); ++d) {
     CHECK(net[d] < -1.0);
     CHECK(drawn[d] > 0);
@@ -402,21 +402,21 @@ TEST_CASE(
   for (const char* what : {"electrical energy drawn from the supply",
                            "net electrical energy (drawn − regenerated)", "RMS hand error"})
     CHECK(few_output.find(std::string(what) +
-                          ": no verdict (3 pairs; an interval needs at least 10)") !=
+                          ": no verdict (3 pairs; an interval needs at least 15)") !=
           std::string::npos);
   CHECK(few_output.find("CI") == std::string::npos);
   for (const auto& [variant, metrics] : few["metrics"].items())
     for (const auto& [name, m] : metrics.items()) {
       CAPTURE(name);
       CHECK_FALSE(m.contains("ci95"));
-      CHECK(m["no_interval"] == "3 values; an interval needs at least 10");
+      CHECK(m["no_interval"] == "3 values; an interval needs at least 15");
     }
   for (const char* m : {"energy_drawn", "energy_in", "hand_error_rms"}) {
     CHECK_FALSE(few["pairs"][0][m].contains("ci95"));
     CHECK(few["pairs"][0][m]["outcome"] == "no verdict");
   }
   CHECK(elbowsim::testing::slurp(dir / "3" / "report.html")
-            .find("none: 3 values; an interval needs at least 10") != std::string::npos);
+            .find("none: 3 values; an interval needs at least 15") != std::string::npos);
 
   const auto [many_output, many] = run(30);
   for (const char* m : {"energy_drawn", "hand_error_rms"}) {
@@ -435,6 +435,9 @@ TEST_CASE(
     const elbowsim::report::Interval log = elbowsim::report::bootstrap_mean_log(x, 0.95, 4000, 3);
     CHECK(m["ci95"][0].get<double>() == log.low);
     CHECK(m["ci95"][1].get<double>() == log.high);
+    const elbowsim::report::Interval linear = elbowsim::report::bootstrap_mean(x, 0.95, 4000, 3);
+    CHECK(log.low != linear.low);  // not the linear interval
+    CHECK(log.high != linear.high);
     CHECK(log.low > 0);
     const double mean = m["mean"].get<double>();
     CHECK(log.high - mean > mean - log.low);
@@ -452,7 +455,7 @@ TEST_CASE(
       << kLowering
       << "study: {axes: {drive: {planned: {}, unpowered: {controller.type: open_loop}}}}\n";
   const auto r = elbowsim::testing::run_elbowsim(
-      "montecarlo " + file.string() + " --samples 10 --jobs 2 --out " + (dir / "mc").string());
+      "montecarlo " + file.string() + " --samples 15 --jobs 2 --out " + (dir / "mc").string());
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const auto study = nlohmann::json::parse(elbowsim::testing::slurp(dir / "mc" / "study.json"));
@@ -461,8 +464,8 @@ TEST_CASE(
   CHECK(unpowered["case"] == "unpowered");
   const auto& drawn = unpowered["pairs"][0]["energy_drawn"];
   CHECK(drawn["outcome"] == "no verdict");
-  CHECK(drawn["reason"] == "a ratio needs values > 0; 10 pairs have a value <= 0 or not finite");
-  CHECK(drawn["draws"].size() == 10);
+  CHECK(drawn["reason"] == "a ratio needs values > 0; 15 pairs have a value <= 0 or not finite");
+  CHECK(drawn["draws"].size() == 15);
   CHECK_FALSE(drawn.contains("ratio"));
   // The rest of that case is computed: the net energy (0 J in both) and the hand error.
   CHECK(unpowered["pairs"][0]["energy_in"]["outcome"] == "no significant difference");
@@ -474,8 +477,8 @@ TEST_CASE(
   const std::string csv = elbowsim::testing::slurp(dir / "mc" / "study.csv");
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 3);
   CHECK(csv.find("\nunpowered,unpowered,lowered,held,0,,,,,no verdict,\"a ratio needs values > 0; "
-                 "10 pairs have a "
-                 "value <= 0 or not finite: draws 0, 1, 2, 3, 4, 5, 6, 7, 8, 9\",") !=
+                 "15 pairs have a "
+                 "value <= 0 or not finite: draws 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14\",") !=
         std::string::npos);
   CHECK(study["verdict"][0] ==
         "Electrical energy drawn from the supply, lowered against held: higher in 1 of 2 "

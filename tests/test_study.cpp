@@ -161,7 +161,7 @@ TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same by
   const fs::path file = dir / "study.yaml";
   std::ofstream(file) << kStudy;
   auto run = [&](const std::string& out, const std::string& options) {
-    return elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples 10 --out " +
+    return elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples 15 --out " +
                                            (dir / out).string() + " " + options);
   };
   const auto one = run("one", "--jobs 1");

@@ -38,10 +38,10 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// The metrics a study summarises, with their units and the scale of their
-// intervals: the net energy in can be negative (the motors feed back more
-// than they draw), the others are never negative (log scale: an interval that
-// stays above 0; a value of 0 gives none, with its reason).
+// The metrics a study summarises, with their units and scales: the net
+// energy in can be negative (the motors feed back more than they draw), the
+// others never are (their BCa interval, within the bootstrap means' range,
+// never is either; its acceleration is taken on a log scale).
 struct StudiedMetric {
   const char* name;
   const char* unit;

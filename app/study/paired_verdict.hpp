@@ -1,7 +1,7 @@
 // The verdict of a paired Monte Carlo comparison of two variants A and B over
 // the same draws, per compared quantity (kCompared): for strictly positive
 // ones (electrical energy drawn from the supply, RMS hand error) the paired
-// ratio A/B with its 95 % bootstrap interval on a log scale; for the net
+// ratio A/B with its 95 % BCa bootstrap interval (of the mean log ratio); for the net
 // electrical energy (drawn - regenerated, negative when the motors feed back
 // more than they draw) the paired mean difference A - B in J with its
 // interval. A sentence states a difference only when (1) the interval
