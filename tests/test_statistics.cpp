@@ -23,9 +23,9 @@ TEST_CASE("mean and median") {
 TEST_CASE(
     "bootstrap: the 95 % interval of the mean covers the true mean in 90-99 % of repetitions") {
   // 1000 repetitions of 30 draws from a normal (mean 5, sigma 2) and a skewed
-  // exponential (mean 1); 1000 repetitions have a standard error of 0.8 %. (A
-  // plain percentile interval covered the exponential's mean in 88 % only;
-  // BCa's corrections bring it to 92 %.)
+  // exponential (mean 1); 1000 repetitions have a standard error of 0.8 %.
+  // (BCa: 93.7 % and 92.0 %; a plain percentile interval, its corrections
+  // left out: 91.0 % for the exponential, and 86.8 % at 15 values below.)
   for (int distribution : {0, 1}) {
     CAPTURE(distribution);
     std::mt19937_64 gen(12345);
