@@ -71,7 +71,6 @@ nlohmann::ordered_json paired_verdict(const PairedSamples& s, std::uint64_t seed
   Json p;
   p["a"] = s.a;
   p["b"] = s.b;
-  p["draws"] = s.draws;
   p["pairs_with_an_invalid_run"] = s.dropped;
   std::vector<std::string> verdict;
   const bool too_many_invalid =

@@ -50,7 +50,7 @@ struct PairedSamples {
   double floor_a = 0, floor_b = 0;  // [m] accuracy floors of the hand error
 };
 
-// {a, b, draws, pairs_with_an_invalid_run, per kCompared metric: {statistic
+// {a, b, pairs_with_an_invalid_run, per kCompared metric: {statistic
 // ("ratio" or "difference"), unit (a difference's), pairs, ratio or
 // difference, ci95, win_rate, outcome, reason, draws}, verdict: [sentences]}.
 // outcome: "lower" or "higher" (a than b, the interval excludes 1 or 0), "no
