@@ -1,13 +1,13 @@
 #include "report/comparison.hpp"
 
 #include <algorithm>
-
 #include <cmath>
 #include <cstdio>
 #include <map>
 
 #include "report/headline.hpp"
 #include "report/metrics.hpp"
+#include "report/quantity.hpp"
 
 namespace elbowsim::report {
 
@@ -48,12 +48,6 @@ void add_rows(const std::vector<RunData>& runs, const std::vector<std::vector<Me
   }
 }
 
-std::string quantity(double v, const std::string& unit) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.3g", v);
-  return unit.empty() ? text : std::string(text) + " " + unit;
-}
-
 std::string percent(double p) {
   char text[32];
   std::snprintf(text, sizeof text, p >= 9.95 ? "%.0f %%" : "%.1f %%", p);
@@ -61,7 +55,10 @@ std::string percent(double p) {
 }
 
 // "<best>: 38 % less <what> than <other> (4.1 J vs 6.6 J)" for each other
-// run, where smaller is better; or why the metric is not compared.
+// run, where smaller is better; or why the metric is not compared. A
+// percentage only of values >= 0 (a share of the larger one, at most 100 %);
+// where a value is negative (a net energy the motors fed back) the
+// difference in its unit: "<best>: 1.2 J less <what> than <other>".
 std::vector<std::string> smaller_is_better(const Comparison& table, const std::string& path,
                                            const std::string& less, const std::string& what) {
   const ComparedMetric* row = nullptr;
@@ -92,8 +89,9 @@ std::vector<std::string> smaller_is_better(const Comparison& table, const std::s
       sentences.push_back(lb + " and " + lo + ": the same " + what + " within its noise floor (" +
                           quantity(row->floor.value, row->unit) + ", " + row->floor.basis + ")" +
                           both + ".");
-    else if (o == 0 || o < 0)
-      sentences.push_back(lb + ": " + less + " " + what + " than " + lo + both + ".");
+    else if (!(b >= 0 && o > 0))
+      sentences.push_back(lb + ": " + quantity(o - b, row->unit) + " " + less + " " + what +
+                          " than " + lo + both + ".");
     else
       sentences.push_back(lb + ": " + percent(p) + " " + less + " " + what + " than " + lo + both +
                           ".");
@@ -159,6 +157,16 @@ bool all_zero(const Comparison& table, const std::string& path) {
   return false;
 }
 
+bool all_positive(const Comparison& table, const std::string& path) {
+  for (const ComparedMetric& m : table.metrics)
+    if (m.path == path) {
+      for (const auto& v : m.values)
+        if (!v.is_number() || !(v.get<double>() > 0)) return false;
+      return true;
+    }
+  return false;
+}
+
 }  // namespace
 
 std::vector<std::string> unique_labels(const std::vector<std::string>& folder_names) {
@@ -189,13 +197,21 @@ std::vector<std::string> verdict(const std::vector<RunData>& runs, const Compari
     for (const std::string& rest : unplanned_rests(run))
       sentences.push_back(run.label + ": the table also carried " + rest +
                           "; this run's numbers are those of an arm leaning on that part too.");
-  if (all_zero(table, "energy_final.electrical_in"))
-    sentences.push_back("No run drew electrical energy (energy_final.electrical_in is 0 in all).");
-  else if (const auto low = runs_below_floor(runs, "energy_in"); !low.empty())
+  // Energy: what the supply delivered where every run's motors drew some (a
+  // positive quantity, so a percentage); else the net energy in, which the
+  // motors' feeding back can make negative. Below the integration floor: none.
+  const bool drawn = all_positive(table, "energy_final.drawn");
+  if (const auto low = runs_below_floor(runs, drawn ? "energy_drawn" : "energy_in"); !low.empty())
     sentences.push_back(no_verdict_below_floor("Electrical energy", low));
+  else if (drawn)
+    for (auto& s : smaller_is_better(table, "energy_final.drawn", "less",
+                                     "electrical energy drawn from the supply"))
+      sentences.push_back(std::move(s));
+  else if (all_zero(table, "energy_final.electrical_in"))
+    sentences.push_back("No run drew electrical energy (energy_final.electrical_in is 0 in all).");
   else
     for (auto& s :
-         smaller_is_better(table, "energy_final.electrical_in", "less", "electrical energy"))
+         smaller_is_better(table, "energy_final.electrical_in", "less", "net electrical energy"))
       sentences.push_back(std::move(s));
   // Accuracy: the RMS hand error of the runs' metrics.
   const char* accuracy = nullptr;

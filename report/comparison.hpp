@@ -1,7 +1,8 @@
 // Comparing recorded runs: every number of their summaries side by side with
 // its relative difference to the first run and whether it differs beyond its
 // noise floor (noise_floor.hpp), and verdict sentences computed from the
-// numbers ("elbow_on: 38 % less electrical energy than elbow_off").
+// numbers ("elbow_on: 38 % less electrical energy drawn from the supply than
+// elbow_off").
 // The one writer of comparison.json and comparison.csv (`compare`, variants)
 // and of sweep.csv (`sweep`).
 #pragma once

@@ -61,11 +61,11 @@ plot::LinePlot against(const MergedStudy& s, const std::vector<MergedPoint>& poi
     const std::vector<double>& y = pt.values[h];
     line.x.push_back(x);
     line.y.push_back(y.empty() ? NAN : mean(y));
-    if (y.size() >= 2 && s.draws > 0) {
-      const Interval ci = bootstrap_mean(y, 0.95, 2000, 1);
-      bars.x.insert(bars.x.end(), {x, x, NAN});
-      bars.y.insert(bars.y.end(), {ci.low, ci.high, NAN});
-    }
+    if (s.draws > 0 && !y.empty())
+      if (const Estimate e = headline_estimate(y, h); e.ci) {
+        bars.x.insert(bars.x.end(), {x, x, NAN});
+        bars.y.insert(bars.y.end(), {e.ci->low, e.ci->high, NAN});
+      }
   }
   for (std::size_t k = 0; k < order.size(); ++k) {
     auto& [line, bars] = lines[order[k]];
@@ -147,7 +147,9 @@ std::filesystem::path write_merged_report(const MergedStudy& s, const std::files
       figures += html::figure(
           {file, p.title,
            s.draws > 0 ? "The mean over each point's valid draws, a bar over its 95 % "
-                         "bootstrap interval; one line per variant and level of the other keys."
+                         "bootstrap interval (given from " +
+                             std::to_string(kMinIntervalValues) +
+                             " valid draws); one line per variant and level of the other keys."
                        : "One marked line per variant and level of the other keys.",
            p.width, p.height});
     }

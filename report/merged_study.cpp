@@ -50,6 +50,11 @@ const std::vector<std::string>& headline_paths() {
   return paths;
 }
 
+Estimate headline_estimate(const std::vector<double>& values, std::size_t h) {
+  const Scale scale = headline_paths()[h] == "metrics.energy_in" ? Scale::linear : Scale::log;
+  return estimate_mean(values, scale, kLevel, kResamples, kSeed);
+}
+
 std::vector<MergedPoint> merged_points(const MergedStudy& s) {
   const long per_point = std::max(1L, s.draws);
   std::vector<MergedPoint> out;
@@ -108,14 +113,14 @@ void write_points_table(std::ostream& out, const MergedStudy& s) {
     out << row.index / per_point;
     for (const std::string& v : row.values) out << ',' << csv_field(v);
     out << ',' << csv_field(p.variant) << ',' << p.runs << ',' << p.valid;
-    for (const std::vector<double>& x : p.values) {
-      if (x.empty()) {
+    for (std::size_t h = 0; h < p.values.size(); ++h) {
+      if (p.values[h].empty()) {
         out << ",,,,";
         continue;
       }
-      const Interval ci = x.size() >= 2 ? bootstrap_mean(x, kLevel, kResamples, kSeed) : Interval{NAN, NAN};
-      out << ',' << number(mean(x)) << ',' << number(ci.low) << ',' << number(ci.high) << ','
-          << number(median(x));
+      const Estimate e = headline_estimate(p.values[h], h);
+      out << ',' << number(e.mean) << ',' << (e.ci ? number(e.ci->low) : "") << ','
+          << (e.ci ? number(e.ci->high) : "") << ',' << number(e.median);
     }
     out << '\n';
   }

@@ -3,7 +3,7 @@
 // of its summary.json except timings (so the table is the same bytes however
 // and wherever the cases ran), written as table.csv; with repeats (the draws
 // of a Monte Carlo design) the mean of each headline metric per point and
-// variant with its 95 % bootstrap interval, points.csv; and report.html with
+// variant with its 95 % bootstrap interval (from 15 draws), points.csv; and report.html with
 // plots over every numeric swept key.
 #pragma once
 
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "report/metrics.hpp"
+#include "report/statistics.hpp"
 
 namespace elbowsim::report {
 
@@ -51,13 +52,19 @@ struct MergedPoint {
 };
 std::vector<MergedPoint> merged_points(const MergedStudy& study);
 
+// The mean of headline metric h over a point's valid draws with its 95 %
+// BCa bootstrap interval: on a log scale (never below 0) except for the net
+// energy in, which can be negative; none below kMinIntervalValues draws.
+Estimate headline_estimate(const std::vector<double>& values, std::size_t h);
+
 // table.csv: case, the columns, draw (with draws), variant, status,
 // failure, then every metric (valid among them) ("path [unit]", the union in order of first
 // appearance); numbers in their shortest round-trip form.
 void write_merged_table(std::ostream& out, const MergedStudy& study);
 
 // points.csv (draws only): per point and variant the runs, the valid ones,
-// and each headline metric's mean, 95 % interval low and high, median.
+// and each headline metric's mean, 95 % interval low and high (empty without
+// an interval: headline_estimate), median.
 void write_points_table(std::ostream& out, const MergedStudy& study);
 
 // report.html and plots/ into `out`: the state of the cases and their

@@ -8,6 +8,7 @@
 #include "report/html.hpp"
 #include "report/plot/plot.hpp"
 #include "report/plots_aside.hpp"
+#include "report/quantity.hpp"
 
 namespace elbowsim::report {
 
@@ -51,15 +52,28 @@ plot::LinePlot ecdf(const Json& doc, const std::string& metric, const std::strin
   return p;
 }
 
+// The energy the plots show: drawn from the supply (what the ratio compares)
+// when the runs have motors, else the net energy in.
+struct EnergyShown {
+  std::string metric, label;
+};
+EnergyShown energy_shown(const Json& doc) {
+  for (const auto& [variant, per_metric] : doc["draws"].items())
+    if (per_metric.contains("energy_drawn"))
+      return {"energy_drawn", "electrical energy drawn from the supply"};
+  return {"energy_in", "net electrical energy in"};
+}
+
 // Energy against hand error, one marker per draw and variant.
 plot::LinePlot scatter(const Json& doc) {
+  const EnergyShown energy = energy_shown(doc);
   plot::LinePlot p;
   p.title = "Energy against hand error, per draw";
-  p.x = plot::linear_axis("electrical energy in", "J");
+  p.x = plot::linear_axis(energy.label, "J");
   p.y = plot::log_axis("RMS hand error", "m");
   int k = 0;
   for (const auto& [variant, per_metric] : doc["draws"].items()) {
-    const std::vector<double> e = numbers(per_metric.value("energy_in", Json::array()));
+    const std::vector<double> e = numbers(per_metric.value(energy.metric, Json::array()));
     const std::vector<double> h = numbers(per_metric.value("hand_error_rms", Json::array()));
     plot::Series s;
     s.label = variant;
@@ -76,6 +90,8 @@ plot::LinePlot scatter(const Json& doc) {
 
 std::string fmt(double x) { return html::display_value(Json(x)); }
 
+std::string fmt(double x, const std::string& unit) { return quantity(x, unit); }
+
 // object[key] as a number; NaN when missing or null (a NaN written to JSON
 // reads back as null: a floor whose nominal run was invalid).
 double number(const Json& object, const char* key) {
@@ -83,38 +99,69 @@ double number(const Json& object, const char* key) {
   return it != object.end() && it->is_number() ? it->get<double>() : std::nan("");
 }
 
-std::string interval(const Json& ci) {
-  if (!ci.is_array() || ci.size() != 2 || !ci[0].is_number() || !ci[1].is_number()) return "—";
-  return fmt(ci[0].get<double>()) + " – " + fmt(ci[1].get<double>());
+// "1.80 J to 2.03 J" (a ratio's "0.113–0.130"), or why there is none.
+std::string interval(const Json& ci, const std::string& unit, const std::string& why) {
+  if (!ci.is_array() || ci.size() != 2 || !ci[0].is_number() || !ci[1].is_number())
+    return why.empty() ? "—" : "none: " + why;
+  return fmt(ci[0].get<double>(), unit) + (unit.empty() ? "–" : " to ") +
+         fmt(ci[1].get<double>(), unit);
+}
+
+std::string draw_list(const Json& draws) {
+  std::string out;
+  for (const Json& d : draws) out += (out.empty() ? "" : ", ") + d.dump();
+  return out.empty() ? "" : " (draws " + out + ")";
 }
 
 std::string metrics_section(const Json& doc) {
   std::string out =
-      "<h2>Metrics per variant (valid draws)</h2>\n<table id=\"mc-metrics\"><thead><tr>"
-      "<th>variant</th><th>metric</th><th>unit</th><th>valid draws</th><th>mean</th>"
+      "<h2>Metrics per variant (valid draws)</h2>\n<p>Means with their 95 % BCa bootstrap "
+      "intervals (percentiles of resampled means, corrected for bias and skew): the interval of "
+      "a metric that is never negative never is either; the net energy in is negative when the "
+      "motors feed back more than they draw. No interval below " +
+      std::to_string(doc.value("min_interval_draws", 0)) +
+      " valid draws.</p>\n<table id=\"mc-metrics\"><thead><tr>"
+      "<th>variant</th><th>metric</th><th>valid draws</th><th>mean</th>"
       "<th>95 % CI of the mean</th><th>median</th></tr></thead><tbody>\n";
-  for (const auto& [variant, metrics] : doc["metrics"].items())
-    for (const auto& [name, m] : metrics.items())
+  // A study whose every run was invalid has no metrics.
+  const Json all = doc.value("metrics", Json::object());  // kept: items() does not own it
+  for (const auto& [variant, metrics] : all.items())
+    for (const auto& [name, m] : metrics.items()) {
+      const std::string unit = m.value("unit", "");
       out += "<tr><td>" + html::escape(variant) + "</td><td>" + html::escape(name) + "</td><td>" +
-             html::escape(m.value("unit", "")) + "</td><td>" + std::to_string(m.value("valid", 0)) +
-             "</td><td>" + fmt(number(m, "mean")) + "</td><td>" + interval(m["ci95"]) +
-             "</td><td>" + fmt(number(m, "median")) + "</td></tr>\n";
+             std::to_string(m.value("valid", 0)) + "</td><td>" + fmt(number(m, "mean"), unit) +
+             "</td><td>" +
+             html::escape(interval(m.value("ci95", Json()), unit, m.value("no_interval", "")) +
+                          draw_list(m.value("draws", Json::array()))) +
+             "</td><td>" + fmt(number(m, "median"), unit) + "</td></tr>\n";
+    }
   return out + "</tbody></table>\n";
 }
 
 std::string pairs_section(const Json& doc) {
   std::string out =
-      "<h2>Paired comparison (same draws)</h2>\n<table id=\"mc-pairs\"><thead><tr>"
-      "<th>A / B</th><th>metric</th><th>pairs</th><th>ratio A/B (geometric mean)</th>"
-      "<th>95 % CI</th><th>A below B in</th></tr></thead><tbody>\n";
+      "<h2>Paired comparison (same draws)</h2>\n<p>Ratios only of quantities that are "
+      "always positive: the electrical energy drawn from the supply and the RMS hand error "
+      "(the geometric mean of A/B over the draws). The net electrical energy (drawn − "
+      "regenerated) can be negative: its mean difference A − B. Each with its 95 % paired "
+      "bootstrap interval.</p>\n<table id=\"mc-pairs\"><thead><tr>"
+      "<th>A / B</th><th>metric</th><th>statistic</th><th>pairs</th><th>value</th>"
+      "<th>95 % CI</th><th>A below B in</th><th>outcome</th></tr></thead><tbody>\n";
   for (const Json& p : doc["pairs"])
-    for (const char* metric : {"energy_in", "hand_error_rms"}) {
-      if (!p.contains(metric)) continue;
-      const Json& r = p[metric];
+    for (const auto& [metric, r] : p.items()) {
+      if (!r.is_object() || !r.contains("statistic")) continue;
+      const bool ratio = r.value("statistic", "") == "ratio";
+      const std::string unit = ratio ? "" : r.value("unit", "");
+      const double value = number(r, ratio ? "ratio" : "difference");
+      const std::string reason = r.value("reason", "");
       out += "<tr><td>" + html::escape(p.value("a", "") + " / " + p.value("b", "")) + "</td><td>" +
-             metric + "</td><td>" + std::to_string(r.value("pairs", 0)) + "</td><td>" +
-             fmt(number(r, "ratio")) + "</td><td>" + interval(r["ci95"]) + "</td><td>" +
-             fmt(100 * number(r, "win_rate")) + " % of draws</td></tr>\n";
+             html::escape(metric) + "</td><td>" + (ratio ? "ratio A/B" : "difference A − B") +
+             "</td><td>" + std::to_string(r.value("pairs", 0)) + "</td><td>" + fmt(value, unit) +
+             "</td><td>" + html::escape(interval(r.value("ci95", Json()), unit, "")) + "</td><td>" +
+             html::escape(percent(number(r, "win_rate"))) + " of draws</td><td>" +
+             html::escape(r.value("outcome", "") + (reason.empty() ? "" : ": " + reason) +
+                          draw_list(r.value("draws", Json::array()))) +
+             "</td></tr>\n";
     }
   return out + "</tbody></table>\n";
 }
@@ -160,12 +207,13 @@ void write_montecarlo_report(const std::filesystem::path& folder) {
            plot::log_axis("RMS hand error", "m")),
       "ecdf_hand_error.png",
       "Empirical distribution of each variant's RMS hand error (valid draws).");
-  add(ecdf(doc, "energy_in", "Electrical energy over the draws",
-           plot::linear_axis("electrical energy in", "J")),
+  const EnergyShown energy = energy_shown(doc);
+  add(ecdf(doc, energy.metric, "Electrical energy over the draws",
+           plot::linear_axis(energy.label, "J")),
       "ecdf_energy.png",
-      "Empirical distribution of each variant's electrical energy in (valid draws).");
+      "Empirical distribution of each variant's " + energy.label + " (valid draws).");
   add(scatter(doc), "energy_vs_hand_error.png",
-      "Each draw of each variant: electrical energy in against RMS hand error.");
+      "Each draw of each variant: " + energy.label + " against RMS hand error.");
 
   std::vector<std::string> verdict;
   for (const Json& line : doc.value("verdict", Json::array()))
@@ -189,10 +237,10 @@ void write_montecarlo_report(const std::filesystem::path& folder) {
       {"uncertain parameters", std::to_string(doc["parameters"].size())}};
   for (const auto& [variant, f] : doc["accuracy_floor"].items())
     rows.push_back({"accuracy floor, " + variant,
-                    "RMS hand error " + fmt(number(f, "hand_error_rms_step")) + " m at step " +
-                        fmt(number(f, "step")) + " s, " +
-                        fmt(number(f, "hand_error_rms_half_step")) + " m at half of it: floor " +
-                        fmt(number(f, "floor")) + " m"});
+                    "RMS hand error " + fmt(number(f, "hand_error_rms_step"), "m") + " at step " +
+                        fmt(number(f, "step"), "s") + ", " +
+                        fmt(number(f, "hand_error_rms_half_step"), "m") + " at half of it: floor " +
+                        fmt(number(f, "floor"), "m")});
   page += html::info_table(rows);
   page += metrics_section(doc) + pairs_section(doc) + parameters_section(doc);
   page += "<h2>Distributions</h2>\n";

@@ -17,6 +17,79 @@ double quantile(const std::vector<double>& sorted, double q) {
   return sorted[k] + (pos - static_cast<double>(k)) * (sorted[k1] - sorted[k]);
 }
 
+double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+
+// Its inverse by bisection: 100 halvings of [-40, 40] leave nothing to
+// refine, and it runs three times per interval.
+double normal_quantile(double p) {
+  double low = -40, high = 40;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (low + high);
+    (normal_cdf(mid) < p ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
+}
+
+// The BCa (bias-corrected and accelerated percentile, Efron 1987) interval of
+// the mean: percentiles of `resamples` bootstrap means, shifted by the bias
+// z0 (the share of bootstrap means below the mean) and the acceleration a
+// (the skewness of the jackknife means, of their logs on a log scale).
+// Bootstrap means lie within the values' range, so the interval does too: a
+// mean of values that are never negative gets an interval that never is.
+Interval bca(const std::vector<double>& x, double level, int resamples, std::uint64_t seed,
+             Scale scale) {
+  if (x.size() < 2) throw std::invalid_argument("bootstrap: needs at least 2 values");
+  const std::size_t n = x.size();
+  const double m = mean(x);
+  if (std::all_of(x.begin(), x.end(), [&](double v) { return v == x.front(); })) return {m, m};
+  std::mt19937_64 gen(seed);
+  std::vector<double> means(static_cast<std::size_t>(resamples));
+  double below = 0;
+  for (double& b : means) {
+    double s = 0;
+    // Modulo bias is 2^-64 relative: nothing next to the bootstrap's own error.
+    for (std::size_t i = 0; i < n; ++i) s += x[gen() % n] - m;
+    b = m + s / static_cast<double>(n);  // deviations: no rounding of m itself
+    below += b < m ? 1.0 : b == m ? 0.5 : 0.0;
+  }
+  std::sort(means.begin(), means.end());
+  const double r = static_cast<double>(resamples);
+  const double z0 = normal_quantile(std::clamp(below / r, 0.5 / r, 1 - 0.5 / r));
+  // The jackknife: the mean without value i, on the scale of the interval.
+  double sum = 0;
+  for (double v : x) sum += v - m;
+  std::vector<double> jack(n);
+  bool positive = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    jack[i] = m + (sum - (x[i] - m)) / static_cast<double>(n - 1);
+    positive = positive && jack[i] > 0;
+  }
+  if (scale == Scale::log && positive)
+    for (double& j : jack) j = std::log(j);
+  const double centre = mean(jack);
+  double num = 0, den = 0;
+  for (double j : jack) num += std::pow(centre - j, 3), den += std::pow(centre - j, 2);
+  const double a = den > 0 ? num / (6 * std::pow(den, 1.5)) : 0;
+  auto adjusted = [&](double alpha) {
+    const double w = z0 + normal_quantile(alpha);
+    const double d = 1 - a * w;
+    return d > 0 ? normal_cdf(z0 + w / d) : (w > 0 ? 1.0 : 0.0);
+  };
+  return {quantile(means, adjusted((1 - level) / 2)), quantile(means, adjusted((1 + level) / 2))};
+}
+
+std::string count(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// Why no interval is given for n values; "" when n is enough.
+std::string too_few(std::size_t n, const char* one, const char* many) {
+  if (n >= kMinIntervalValues) return "";
+  return count(n, one, many) + "; an interval needs at least " + std::to_string(kMinIntervalValues);
+}
+
+bool finite(const Interval& i) { return std::isfinite(i.low) && std::isfinite(i.high); }
+
 }  // namespace
 
 double mean(const std::vector<double>& x) {
@@ -33,62 +106,123 @@ double median(std::vector<double> x) {
 
 Interval bootstrap_mean(const std::vector<double>& x, double level, int resamples,
                         std::uint64_t seed) {
-  if (x.size() < 2) throw std::invalid_argument("bootstrap_mean: needs at least 2 values");
-  const std::size_t n = x.size();
-  const double m = mean(x);
-  // Sums of deviations from m: no cancellation when the spread is small
-  // against the values (hand errors of 1e-5 m that differ by 1e-8).
-  auto standard_error = [n](double sum, double sum2) {
-    const double mu = sum / static_cast<double>(n);
-    const double var = std::max(0.0, sum2 / static_cast<double>(n) - mu * mu);
-    return std::sqrt(var / static_cast<double>(n - 1));  // sample sd / sqrt(n)
-  };
-  double sum = 0, sum2 = 0;
-  for (double v : x) sum += v - m, sum2 += (v - m) * (v - m);
-  const double se = standard_error(sum, sum2);
-  if (!(se > 0)) return {m, m};  // all values equal
-  std::mt19937_64 gen(seed);
-  std::vector<double> t;
-  t.reserve(static_cast<std::size_t>(resamples));
-  for (int r = 0; r < resamples; ++r) {
-    double s = 0, s2 = 0;
-    // Modulo bias is 2^-64 relative: nothing next to the bootstrap's own error.
-    for (std::size_t i = 0; i < n; ++i) {
-      const double d = x[gen() % n] - m;
-      s += d, s2 += d * d;
-    }
-    // A resample of one value repeated has no spread (its rounding residue
-    // would make t huge): it is left out, as are all with a spread below
-    // 1e-9 of the sample's.
-    const double se_r = standard_error(s, s2);
-    if (se_r > 1e-9 * se) t.push_back((s / static_cast<double>(n)) / se_r);
-  }
-  std::sort(t.begin(), t.end());
-  return {m - quantile(t, (1 + level) / 2) * se, m - quantile(t, (1 - level) / 2) * se};
+  return bca(x, level, resamples, seed, Scale::linear);
 }
 
-PairedRatio paired_ratio(const std::vector<double>& a, const std::vector<double>& b, double level,
-                         int resamples, std::uint64_t seed) {
-  if (a.size() != b.size()) throw std::invalid_argument("paired_ratio: unpaired values");
-  PairedRatio out;
-  out.pairs = static_cast<long>(a.size());
-  std::vector<double> logs;
-  long wins = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (!(a[i] > 0 && b[i] > 0)) throw std::invalid_argument("paired_ratio: values must be > 0");
-    logs.push_back(std::log(a[i] / b[i]));
-    wins += a[i] < b[i];
+Interval bootstrap_mean_log(const std::vector<double>& x, double level, int resamples,
+                            std::uint64_t seed) {
+  for (double v : x)
+    if (!(v >= 0)) throw std::invalid_argument("bootstrap_mean_log: values must be >= 0");
+  return bca(x, level, resamples, seed, Scale::log);
+}
+
+Estimate estimate_mean(const std::vector<double>& x, Scale scale, double level, int resamples,
+                       std::uint64_t seed) {
+  Estimate e;
+  e.n = x.size();
+  e.mean = mean(x);
+  e.median = median(x);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (!std::isfinite(x[i])) e.involved.push_back(i);
+  if (!e.involved.empty()) {
+    e.no_interval = count(e.involved.size(), "value is", "values are") + " not finite";
+    return e;
   }
-  if (logs.empty()) return out;
-  out.ratio = std::exp(mean(logs));
-  out.win_rate = static_cast<double>(wins) / static_cast<double>(logs.size());
-  if (logs.size() < 2) {
-    out.ci = {out.ratio, out.ratio};
+  e.no_interval = too_few(x.size(), "value", "values");
+  if (!e.no_interval.empty()) return e;
+  if (scale == Scale::log) {
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (!(x[i] >= 0)) e.involved.push_back(i);
+    if (!e.involved.empty()) {
+      e.no_interval = count(e.involved.size(), "value is", "values are") +
+                      " negative, for a quantity that never is";
+      return e;
+    }
+  }
+  const Interval ci = bca(x, level, resamples, seed, scale);
+  if (finite(ci))
+    e.ci = ci;
+  else
+    e.no_interval = "the bootstrap interval is not finite";
+  return e;
+}
+
+namespace {
+
+// A paired statistic of per-pair values y_i (log ratios, or differences),
+// `back` mapping the mean of y and its interval to the reported scale.
+template <class Back>
+PairedStatistic paired(const std::vector<double>& y, const std::vector<double>& a,
+                       const std::vector<double>& b, double level, int resamples,
+                       std::uint64_t seed, const Back& back) {
+  PairedStatistic out;
+  out.pairs = y.size();
+  if (y.empty()) {
+    out.problem = "no pairs of valid runs";
     return out;
   }
-  const Interval l = bootstrap_mean(logs, level, resamples, seed);
-  out.ci = {std::exp(l.low), std::exp(l.high)};
+  std::size_t wins = 0;
+  for (std::size_t i = 0; i < y.size(); ++i) wins += a[i] < b[i];
+  out.value = back(mean(y));
+  out.win_rate = static_cast<double>(wins) / static_cast<double>(y.size());
+  out.problem = too_few(y.size(), "pair", "pairs");
+  if (!out.problem.empty()) return out;
+  const Interval l = bca(y, level, resamples, seed, Scale::linear);
+  const Interval ci{back(l.low), back(l.high)};
+  if (finite(ci))
+    out.ci = ci;
+  else
+    out.problem = "the bootstrap interval is not finite";
   return out;
+}
+
+void check_paired(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) throw std::invalid_argument("paired statistic: unpaired values");
+}
+
+}  // namespace
+
+PairedStatistic paired_ratio(const std::vector<double>& a, const std::vector<double>& b,
+                             double level, int resamples, std::uint64_t seed) {
+  check_paired(a, b);
+  std::vector<double> logs;
+  std::vector<std::size_t> bad;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!(a[i] > 0 && b[i] > 0 && std::isfinite(a[i]) && std::isfinite(b[i])))
+      bad.push_back(i);
+    else
+      logs.push_back(std::log(a[i] / b[i]));
+  }
+  if (!bad.empty()) {
+    PairedStatistic out;
+    out.pairs = a.size();
+    out.involved = bad;
+    out.problem = "a ratio needs values > 0; " + count(bad.size(), "pair has", "pairs have") +
+                  " a value <= 0 or not finite";
+    return out;
+  }
+  return paired(logs, a, b, level, resamples, seed, [](double y) { return std::exp(y); });
+}
+
+PairedStatistic paired_difference(const std::vector<double>& a, const std::vector<double>& b,
+                                  double level, int resamples, std::uint64_t seed) {
+  check_paired(a, b);
+  std::vector<double> d;
+  std::vector<std::size_t> bad;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!(std::isfinite(a[i]) && std::isfinite(b[i])))
+      bad.push_back(i);
+    else
+      d.push_back(a[i] - b[i]);
+  }
+  if (!bad.empty()) {
+    PairedStatistic out;
+    out.pairs = a.size();
+    out.involved = bad;
+    out.problem = count(bad.size(), "pair has", "pairs have") + " a value that is not finite";
+    return out;
+  }
+  return paired(d, a, b, level, resamples, seed, [](double y) { return y; });
 }
 
 }  // namespace elbowsim::report

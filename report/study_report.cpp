@@ -8,6 +8,7 @@
 #include "report/html.hpp"
 #include "report/plot/plot.hpp"
 #include "report/plots_aside.hpp"
+#include "report/quantity.hpp"
 #include "report/run_plots.hpp"
 
 namespace elbowsim::report {
@@ -16,17 +17,30 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr const char* kCompared[] = {"energy_in", "hand_error_rms"};
+// The quantities the study compares (app/study/paired_verdict.hpp kCompared),
+// as the table heads them; a ratio is plotted, a difference is not.
+struct Compared {
+  const char* metric;
+  const char* label;
+  const char* unit;
+  bool ratio;
+};
+constexpr Compared kCompared[] = {{"energy_drawn", "energy drawn", "J", true},
+                                  {"energy_in", "net energy", "J", false},
+                                  {"hand_error_rms", "RMS hand error", "m", true}};
 
-std::string fmt(const Json& x) { return x.is_number() ? html::display_value(x) : "—"; }
+std::string fmt(const Json& x, const std::string& unit) {
+  return x.is_number() ? quantity(x.get<double>(), unit) : "—";
+}
 
-std::string with_interval(const Json& value, const Json& ci) {
-  std::string out = fmt(value);
-  if (ci.is_array() && ci.size() == 2) out += " (" + fmt(ci[0]) + "–" + fmt(ci[1]) + ")";
+std::string with_interval(const Json& value, const Json& ci, const std::string& unit) {
+  std::string out = fmt(value, unit);
+  if (ci.is_array() && ci.size() == 2)
+    out += " (" + fmt(ci[0], unit) + (unit.empty() ? "–" : " to ") + fmt(ci[1], unit) + ")";
   return out;
 }
 
-// The paired ratio of each compared metric per case (first pair of variants),
+// The paired ratio of each ratio quantity per case (first pair of variants),
 // with its interval as a vertical bar; 1 is "no difference".
 plot::LinePlot ratio_plot(const Json& doc) {
   plot::LinePlot p;
@@ -36,15 +50,16 @@ plot::LinePlot ratio_plot(const Json& doc) {
   p.width = 1100;
   const Json& cases = doc["cases"];
   int colour = 0;
-  for (const char* m : kCompared) {
+  for (const Compared& m : kCompared) {
+    if (!m.ratio) continue;
     plot::Series point, bars;
-    point.label = std::string(m) == "energy_in" ? "electrical energy" : "RMS hand error";
+    point.label = m.label;
     point.color = bars.color = plot::palette(colour++);
     point.markers = true;
     for (std::size_t k = 0; k < cases.size(); ++k) {
       const Json& pairs = cases[k]["pairs"];
-      if (pairs.empty() || !pairs[0].contains(m)) continue;
-      const Json& r = pairs[0][m];
+      if (pairs.empty() || !pairs[0].contains(m.metric)) continue;
+      const Json& r = pairs[0][m.metric];
       const double x = static_cast<double>(k + 1) + (colour == 1 ? -0.12 : 0.12);
       if (!r.value("ratio", Json()).is_number()) continue;
       point.x.insert(point.x.end(), {x, std::nan("")});
@@ -71,18 +86,25 @@ plot::LinePlot ratio_plot(const Json& doc) {
 std::string case_table(const Json& doc) {
   const Json& variants = doc.value("variants", Json::array());
   std::string out =
-      "<h2>Cases</h2>\n<p>Means over the valid draws with their 95 % bootstrap "
-      "intervals; ratios are paired (same draw), a / b of the first pair of "
-      "variants; the outcome says whether the interval excludes 1 (and, for the "
-      "hand error, whether the errors are above 10 × the accuracy floor).</p>\n"
+      "<h2>Cases</h2>\n<p>Means over the valid draws with their 95 % BCa bootstrap intervals "
+      "(never below 0 for quantities that never are); energy drawn is what the supply "
+      "delivered, net energy what it delivered less what the motors fed back (negative when "
+      "they fed back more). Ratios (of energy drawn and of RMS hand error) and the difference of "
+      "net energy are paired (same draw), a / b and a − b of the first pair of variants; the "
+      "outcome says whether the interval excludes 1 or 0 (and, for the hand error, whether the "
+      "errors are above 10 × the accuracy floor); a case without a verdict gives the reason. "
+      "No interval and no verdict below " +
+      std::to_string(doc.value("min_interval_draws", 0)) +
+      " draws where both runs are valid.</p>\n"
       "<table id=\"study-cases\"><thead><tr><th>#</th><th>case</th>";
   for (const Json& a : doc["axes"]) out += "<th>" + html::escape(a.value("name", "")) + "</th>";
-  for (const Json& v : variants)
-    out += "<th>energy, " + html::escape(v.get<std::string>()) + " [J]</th>";
-  out += "<th>energy ratio</th><th>energy</th>";
-  for (const Json& v : variants)
-    out += "<th>RMS hand error, " + html::escape(v.get<std::string>()) + " [m]</th>";
-  out += "<th>hand error ratio</th><th>hand error</th><th>invalid runs</th></tr></thead><tbody>\n";
+  for (const Compared& m : kCompared) {
+    for (const Json& v : variants)
+      out += "<th>" + std::string(m.label) + ", " + html::escape(v.get<std::string>()) + "</th>";
+    out += std::string("<th>") + m.label + (m.ratio ? " ratio" : " difference") + "</th><th>" +
+           m.label + "</th>";
+  }
+  out += "<th>invalid runs</th></tr></thead><tbody>\n";
   int row = 0;
   for (const Json& c : doc["cases"]) {
     const std::string name = c.value("case", "");
@@ -91,20 +113,24 @@ std::string case_table(const Json& doc) {
     for (const Json& a : doc["axes"])
       out += "<td>" + html::escape(c["levels"].value(a.value("name", ""), "")) + "</td>";
     const Json pair = c["pairs"].empty() ? Json::object() : c["pairs"][0];
-    for (const char* m : kCompared) {
+    for (const Compared& m : kCompared) {
       for (const Json& v : variants) {
         const Json x = c.value("metrics", Json::object())
                            .value(v.get<std::string>(), Json::object())
-                           .value(m, Json::object());
-        out += "<td class=\"num\">" +
-               with_interval(x.value("mean", Json()), x.value("ci95", Json())) + "</td>";
+                           .value(m.metric, Json::object());
+        out +=
+            "<td class=\"num\">" +
+            html::escape(with_interval(x.value("mean", Json()), x.value("ci95", Json()), m.unit)) +
+            "</td>";
       }
-      const Json r = pair.value(m, Json::object());
+      const Json r = pair.value(m.metric, Json::object());
       const std::string outcome = r.value("outcome", "no verdict");
+      const std::string reason = r.value("reason", "");
+      const Json value = r.value(m.ratio ? "ratio" : "difference", Json());
       out += "<td class=\"num\">" +
-             with_interval(r.value("ratio", Json()), r.value("ci95", Json())) +
+             html::escape(with_interval(value, r.value("ci95", Json()), m.ratio ? "" : m.unit)) +
              "</td><td class=\"outcome\" data-outcome=\"" + html::escape(outcome) + "\">" +
-             html::escape(outcome) + "</td>";
+             html::escape(outcome + (reason.empty() ? "" : ": " + reason)) + "</td>";
     }
     out += "<td class=\"num\">" + std::to_string(c.value("invalid_runs", 0)) + "</td></tr>\n";
   }

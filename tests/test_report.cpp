@@ -107,12 +107,12 @@ TEST_CASE("verdict: computed from the numbers") {
   SUBCASE("less energy, with the percentage of the other run's") {
     const auto c = r::compare_runs({run_with("on", 4.0), run_with("off", 5.0)});
     REQUIRE(c.verdict.size() == 2);
-    CHECK(c.verdict[0] == "on: 20 % less electrical energy than off (4 J vs 5 J).");
+    CHECK(c.verdict[0] == "on: 20 % less net electrical energy than off (4 J vs 5 J).");
     CHECK(c.verdict[1].find("not compared") != std::string::npos);
   }
   SUBCASE("the lower run is named whichever comes first") {
     const auto c = r::compare_runs({run_with("a", 9.0), run_with("b", 3.0)});
-    CHECK(c.verdict[0] == "b: 67 % less electrical energy than a (3 J vs 9 J).");
+    CHECK(c.verdict[0] == "b: 67 % less net electrical energy than a (3 J vs 9 J).");
   }
   SUBCASE("accuracy from summary.json's task metrics") {
     auto a = run_with("on", 2.0), b = run_with("off", 8.0);
@@ -121,25 +121,45 @@ TEST_CASE("verdict: computed from the numbers") {
     // The controller knows the plant and sees the true state: integration error, no verdict.
     const auto exact = r::compare_runs({a, b});
     REQUIRE(exact.verdict.size() == 2);
-    CHECK(exact.verdict[0] == "on: 75 % less electrical energy than off (2 J vs 8 J).");
+    CHECK(exact.verdict[0] == "on: 75 % less net electrical energy than off (2 J vs 8 J).");
     CHECK(exact.verdict[1].starts_with("Hand accuracy: no verdict."));
     CHECK(exact.verdict[1].find("integration error") != std::string::npos);
-    CHECK(exact.verdict[1].find("on: 75 % smaller RMS hand error than off (1e-08 m vs 4e-08 m).") !=
+    CHECK(exact.verdict[1].find("on: 75 % smaller RMS hand error than off (10 nm vs 40 nm).") !=
           std::string::npos);
     // A controller that believes another plant: the difference, with its caveat.
     a.summary["controller_model"] = {"robot.planar.links[0].mass=1.1"};
     b.summary["control_loop"] = {{"sample_rate", 1000.0}};
     const auto c = r::compare_runs({a, b});
     REQUIRE(c.verdict.size() == 3);
-    CHECK(c.verdict[1] == "on: 75 % smaller RMS hand error than off (1e-08 m vs 4e-08 m).");
+    CHECK(c.verdict[1] == "on: 75 % smaller RMS hand error than off (10 nm vs 40 nm).");
     CHECK(c.verdict[2].find("no confidence interval") != std::string::npos);
   }
   SUBCASE("within the noise floor (0.1 % of the energy that flowed) is the same") {
     const auto c = r::compare_runs({run_with("a", 10.0), run_with("b", 10.009)});
-    CHECK(c.verdict[0].find("the same electrical energy within its noise floor") !=
+    CHECK(c.verdict[0].find("the same net electrical energy within its noise floor") !=
           std::string::npos);
     const auto d = r::compare_runs({run_with("a", 10.0), run_with("b", 10.2)});
-    CHECK(d.verdict[0] == "a: 2.0 % less electrical energy than b (10 J vs 10.2 J).");
+    CHECK(d.verdict[0] == "a: 2.0 % less net electrical energy than b (10 J vs 10.2 J).");
+  }
+  SUBCASE(
+      "motors that feed back more than they draw: drawn energy as a percentage, net as a "
+      "difference") {
+    // The supply's energy is positive: the percentage is of it.
+    auto on = run_with("on", -0.1), off = run_with("off", 15.5);
+    on.summary["energy_final"]["drawn"] = 2.08;
+    off.summary["energy_final"]["drawn"] = 15.9;
+    CHECK(r::compare_runs({on, off}).verdict[0] ==
+          "on: 87 % less electrical energy drawn from the supply than off (2.08 J vs 15.9 J).");
+    // Without the drawn energy, a net energy of either sign is compared in J:
+    // never "112 % less" (4.5 J of 4 J).
+    CHECK(r::compare_runs({run_with("on", -0.5), run_with("off", 4.0)}).verdict[0] ==
+          "on: 4.5 J less net electrical energy than off (-500 mJ vs 4 J).");
+    CHECK(r::compare_runs({run_with("on", -0.5), run_with("off", -2.0)}).verdict[0] ==
+          "off: 1.5 J less net electrical energy than on (-2 J vs -500 mJ).");
+    // A run that drew nothing: no percentage of the drawn energy, the net in J.
+    off.summary["energy_final"]["drawn"] = 0.0;
+    CHECK(r::compare_runs({on, off}).verdict[0] ==
+          "on: 15.6 J less net electrical energy than off (-100 mJ vs 15.5 J).");
   }
   SUBCASE("no energy at all") {
     const auto c = r::compare_runs({run_with("a", 0.0), run_with("b", 0.0)});
@@ -312,16 +332,18 @@ TEST_CASE("compare: names every run, a computed verdict, hand paths, energy term
     CHECK(html.find(std::string("<th>") + label + "</th>") != std::string::npos);
     CHECK(html.find(std::string("data-run=\"") + label + "\"") != std::string::npos);
   }
-  // The verdict's percentage follows from the two summaries.
-  const auto e_in = [&](const char* run) {
-    return Json::parse(t::slurp(dir / run / "summary.json"))["energy_final"]["electrical_in"]
-        .get<double>();
+  // The verdict's percentage follows from the two summaries: of the energy
+  // drawn from the supply.
+  const auto drawn = [&](const char* run) {
+    return Json::parse(t::slurp(dir / run / "summary.json"))["energy_final"]["drawn"].get<double>();
   };
-  const double on = e_in("elbow-on"), off = e_in("elbow-off");
+  const double on = drawn("elbow-on"), off = drawn("elbow-off");
+  REQUIRE(on > 0);
   REQUIRE(on < off);
   char sentence[128];
   std::snprintf(sentence, sizeof sentence,
-                "elbow-on: %.0f %% less electrical energy than elbow-off", 100 * (off - on) / off);
+                "elbow-on: %.0f %% less electrical energy drawn from the supply than elbow-off",
+                100 * (off - on) / off);
   CHECK(out.output.find(sentence) != std::string::npos);
   CHECK(html.find(sentence) != std::string::npos);
   const Json json = Json::parse(t::slurp(folder / "comparison.json"));

@@ -161,7 +161,7 @@ TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same by
   const fs::path file = dir / "study.yaml";
   std::ofstream(file) << kStudy;
   auto run = [&](const std::string& out, const std::string& options) {
-    return elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples 6 --out " +
+    return elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples 15 --out " +
                                            (dir / out).string() + " " + options);
   };
   const auto one = run("one", "--jobs 1");
@@ -182,14 +182,17 @@ TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same by
   CHECK(doc["cases"][2]["levels"]["pose"] == "high");
   CHECK(doc["axes"][1]["levels"][0] == "short");
   // Every case counted once per metric in the tally.
-  for (const char* metric : {"energy_in", "hand_error_rms"}) {
+  for (const char* metric : {"energy_drawn", "energy_in", "hand_error_rms"}) {
     std::size_t counted = 0;
     for (const auto& [outcome, cases] : doc["tally"][0][metric].items()) counted += cases.size();
     CHECK(counted == 4);
   }
   // The heavier hand costs energy in every case: the verdict says so.
+  CHECK(doc["tally"][0]["energy_drawn"]["lower"].size() == 4);
+  CHECK(contains(
+      doc["verdict"][0].get<std::string>(),
+      "Electrical energy drawn from the supply, light against heavy: lower in 4 of 4 cases"));
   CHECK(doc["tally"][0]["energy_in"]["lower"].size() == 4);
-  CHECK(contains(doc["verdict"][0].get<std::string>(), "lower in 4 of 4 cases"));
   // The short cases ran 0.3 s: less energy than the long ones.
   const auto energy = [&](int k) { return doc["cases"][k]["metrics"]["light"]["energy_in"]["mean"].get<double>(); };
   CHECK(energy(0) < energy(1));
@@ -204,6 +207,14 @@ TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same by
   CHECK(contains(samples, "draw,variant,valid,sensor_seed,"));
   CHECK(contains(samples, "\n0,light,true,5,"));
   CHECK(contains(samples, "\n5,heavy,true,10,"));
+  // study.csv: per compared quantity its statistic, outcome and reason.
+  const std::string csv = elbowsim::testing::slurp(dir / "one" / "study.csv");
+  CHECK(contains(csv,
+                 "energy_drawn ratio a/b,energy_drawn ratio low,energy_drawn ratio high,"
+                 "energy_drawn a lower share,energy_drawn outcome,energy_drawn reason,"));
+  CHECK(contains(
+      csv,
+      "energy_in difference a-b [J],energy_in difference low [J],energy_in difference high [J],"));
 
   const auto some = run("some", "--case pose=high --no-report");
   REQUIRE(some.exit_code == 0);

@@ -39,10 +39,20 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// The metrics a study compares, with their units.
-const std::vector<std::pair<std::string, std::string>> kMetrics = {
-    {"energy_in", "J"}, {"energy_drawn", "J"}, {"energy_regenerated", "J"}, {"joule", "J"},
-    {"hand_error_rms", "m"}, {"hand_error_max", "m"}, {"hand_error_final", "m"}};
+// The metrics a study summarises, with their units and scales: the net
+// energy in can be negative (the motors feed back more than they draw), the
+// others never are (their BCa interval, within the bootstrap means' range,
+// never is either; its acceleration is taken on a log scale).
+struct StudiedMetric {
+  const char* name;
+  const char* unit;
+  report::Scale scale;
+};
+const StudiedMetric kMetrics[] = {
+    {"energy_in", "J", report::Scale::linear},       {"energy_drawn", "J", report::Scale::log},
+    {"energy_regenerated", "J", report::Scale::log}, {"joule", "J", report::Scale::log},
+    {"hand_error_rms", "m", report::Scale::log},     {"hand_error_max", "m", report::Scale::log},
+    {"hand_error_final", "m", report::Scale::log}};
 
 struct Sample {
   bool valid = false;
@@ -81,8 +91,8 @@ Sample run_one(const Scenario& scenario, const std::shared_ptr<const Model>& bel
     const RunResult r = simulate(scenario.model, x, RunOptions{scenario.output.every, {}, &interrupt_flag()});
     s.valid = r.valid;
     s.failure = r.failure;
-    for (const auto& [name, unit] : kMetrics)
-      if (const Metric* m = r.metrics.find(name)) s.metrics[name] = m->values.front();
+    for (const StudiedMetric& k : kMetrics)
+      if (const Metric* m = r.metrics.find(k.name)) s.metrics[k.name] = m->values.front();
   } catch (const PlanError& e) {
     s.failure = std::string("the plan failed: ") + e.what();
   }
@@ -183,6 +193,7 @@ Json accuracy_floors(const std::vector<Variant>& variants, const CaseRuns& runs)
 
 // The samples of variants ia and ib as a pair: the draws where both are valid.
 Json pair_json(const std::vector<Variant>& variants, std::size_t ia, std::size_t ib,
+               const std::vector<study::Draw>& draws,
                const std::vector<std::vector<Sample>>& samples, const Json& floors,
                std::uint64_t seed) {
   study::PairedSamples pair;
@@ -191,16 +202,17 @@ Json pair_json(const std::vector<Variant>& variants, std::size_t ia, std::size_t
   pair.draws = static_cast<long>(samples.size());
   pair.floor_a = floors[pair.a.empty() ? "run" : pair.a].value("floor", NAN);
   pair.floor_b = floors[pair.b.empty() ? "run" : pair.b].value("floor", NAN);
-  for (const auto& draw : samples) {
-    const Sample &sa = draw[ia], &sb = draw[ib];
+  for (std::size_t d = 0; d < samples.size(); ++d) {
+    const Sample &sa = samples[d][ia], &sb = samples[d][ib];
     if (!sa.valid || !sb.valid) {
       ++pair.dropped;
       continue;
     }
-    for (const char* m : {"energy_in", "hand_error_rms"})
-      if (sa.metrics.count(m) && sb.metrics.count(m)) {
-        pair.a_values[m].push_back(sa.metrics.at(m));
-        pair.b_values[m].push_back(sb.metrics.at(m));
+    for (const study::ComparedQuantity& q : study::kCompared)
+      if (sa.metrics.count(q.metric) && sb.metrics.count(q.metric)) {
+        pair.a_values[q.metric].push_back(sa.metrics.at(q.metric));
+        pair.b_values[q.metric].push_back(sb.metrics.at(q.metric));
+        pair.draw_index[q.metric].push_back(draws[d].index);
       }
   }
   return study::paired_verdict(pair, seed);
@@ -213,7 +225,7 @@ void write_samples_csv(const std::filesystem::path& path, const std::vector<Vari
     out << "draw,variant,valid,sensor_seed";
     for (const UncertainParameter& p : variants.front().nominal.uncertainty.parameters)
       out << "," << p.key;
-    for (const auto& [name, unit] : kMetrics) out << "," << name << " [" << unit << "]";
+    for (const StudiedMetric& k : kMetrics) out << "," << k.name << " [" << k.unit << "]";
     out << ",failure\n";
     for (std::size_t d = 0; d < draws.size(); ++d)
       for (std::size_t v = 0; v < variants.size(); ++v) {
@@ -225,8 +237,8 @@ void write_samples_csv(const std::filesystem::path& path, const std::vector<Vari
         const auto& params = variants[v].nominal.uncertainty.parameters;
         for (std::size_t j = 0; j < params.size(); ++j)
           out << "," << study::exact(study::drawn_value(params[j], draws[d].u[j]));
-        for (const auto& [name, unit] : kMetrics) {
-          const auto it = s.metrics.find(name);
+        for (const StudiedMetric& k : kMetrics) {
+          const auto it = s.metrics.find(k.name);
           out << "," << (it == s.metrics.end() ? std::string() : study::exact(it->second));
         }
         std::string failure = s.failure;
@@ -234,6 +246,29 @@ void write_samples_csv(const std::filesystem::path& path, const std::vector<Vari
         out << ",\"" << failure << "\"\n";
       }
   });
+}
+
+// One variant's metric over its valid draws (`from`: the draw of each value):
+// mean, median and the interval of the mean, or why there is none.
+Json metric_json(const StudiedMetric& k, const std::vector<double>& x,
+                 const std::vector<long>& from, std::uint64_t seed) {
+  const report::Estimate e =
+      report::estimate_mean(x, k.scale, study::kConfidenceLevel, study::kBootstrapResamples, seed);
+  Json m{{"unit", k.unit},
+         {"scale", k.scale == report::Scale::log ? "log" : "linear"},
+         {"valid", e.n},
+         {"mean", e.mean},
+         {"median", e.median}};
+  if (e.ci)
+    m["ci95"] = {e.ci->low, e.ci->high};
+  else
+    m["no_interval"] = e.no_interval;
+  if (!e.involved.empty()) {
+    Json involved = Json::array();
+    for (std::size_t i : e.involved) involved.push_back(from[i]);
+    m["draws"] = involved;
+  }
+  return m;
 }
 
 int usage_error(const std::string& message) {
@@ -280,6 +315,9 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
   if (interrupt_exit_code()) return Json();
   const Json floors = accuracy_floors(variants, runs);
   const auto& samples = runs.draws;
+  // The samples first: whatever the statistics make of them, they are kept.
+  std::filesystem::create_directories(plan.folder);
+  write_samples_csv(plan.folder / "samples.csv", variants, draws, samples);
 
   Json doc;
   doc["scenario"] = base.model.name;
@@ -293,6 +331,7 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
   doc["samples"] = args.samples;
   doc["confidence_level"] = study::kConfidenceLevel;
   doc["bootstrap_resamples"] = study::kBootstrapResamples;
+  doc["min_interval_draws"] = report::kMinIntervalValues;
   Json names = Json::array();
   for (const Variant& v : variants) names.push_back(v.name.empty() ? "run" : v.name);
   doc["variants"] = names;
@@ -312,26 +351,23 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
   doc["parameters"] = params;
   doc["accuracy_floor"] = floors;
   Json invalid = Json::array();
+  doc["metrics"] = Json::object();  // stays empty when every run is invalid
   for (std::size_t v = 0; v < variants.size(); ++v) {
     const std::string vname = names[v].get<std::string>();
-    for (const auto& [name, unit] : kMetrics) {
+    for (const StudiedMetric& k : kMetrics) {
       std::vector<double> x;
+      std::vector<long> from;  // the draw of each value
       Json all = Json::array();
-      for (const auto& draw : samples) {
-        const Sample& s = draw[v];
-        const auto it = s.metrics.find(name);
+      for (std::size_t d = 0; d < samples.size(); ++d) {
+        const Sample& s = samples[d][v];
+        const auto it = s.metrics.find(k.name);
         const bool ok = s.valid && it != s.metrics.end();
-        if (ok) x.push_back(it->second);
+        if (ok) x.push_back(it->second), from.push_back(draws[d].index);
         all.push_back(ok ? Json(it->second) : Json(nullptr));
       }
-      doc["draws"][vname][name] = all;
+      doc["draws"][vname][k.name] = all;
       if (x.empty()) continue;
-      Json m{{"unit", unit}, {"valid", x.size()}, {"mean", report::mean(x)}, {"median", report::median(x)}};
-      if (x.size() >= 2) {
-        const report::Interval ci = report::bootstrap_mean(x, study::kConfidenceLevel, study::kBootstrapResamples, seed);
-        m["ci95"] = {ci.low, ci.high};
-      }
-      doc["metrics"][vname][name] = m;
+      doc["metrics"][vname][k.name] = metric_json(k, x, from, seed);
     }
     for (std::size_t d = 0; d < samples.size(); ++d)
       if (!samples[d][v].valid)
@@ -340,7 +376,7 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
   Json pairs = Json::array(), verdict = Json::array();
   for (std::size_t a = 0; a < variants.size(); ++a)
     for (std::size_t b = a + 1; b < variants.size(); ++b) {
-      pairs.push_back(pair_json(variants, a, b, samples, floors, seed));
+      pairs.push_back(pair_json(variants, a, b, draws, samples, floors, seed));
       for (const Json& line : pairs.back()["verdict"]) verdict.push_back(line);
     }
   if (variants.size() < 2) verdict.push_back("one variant: nothing to compare (distributions only)");
@@ -348,10 +384,6 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
   doc["invalid"] = invalid;
   doc["verdict"] = verdict;
 
-  // The case's files go together, once begun (a signal is seen after them).
-  if (interrupt_exit_code()) return Json();
-  std::filesystem::create_directories(plan.folder);
-  write_samples_csv(plan.folder / "samples.csv", variants, draws, samples);
   write_atomically(plan.folder / "montecarlo.json", [&](std::ostream& out) { out << doc.dump(2) << '\n'; });
   if (args.report) report::write_montecarlo_report(plan.folder);
   return doc;

@@ -1,78 +1,133 @@
 #include "app/study/paired_verdict.hpp"
 
-#include <cstdio>
+#include <cmath>
 
+#include "report/quantity.hpp"
 #include "report/statistics.hpp"
 
 namespace elbowsim::study {
 
 namespace {
 
-std::string percent(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f", 100 * x);
-  return b;
+using Json = nlohmann::ordered_json;
+
+std::string number(double x, const std::string& unit) { return report::quantity(x, unit); }
+
+std::string draw_list(const std::vector<long>& draws) {
+  std::string out = draws.size() == 1 ? "draw " : "draws ";
+  for (std::size_t k = 0; k < draws.size(); ++k) {
+    if (k == 8) return out + " and " + std::to_string(draws.size() - 8) + " more";
+    out += (k ? ", " : "") + std::to_string(draws[k]);
+  }
+  return out;
 }
 
-std::string num(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", x);
-  return b;
+// The interval as a sentence writes it: a ratio's "0.113–0.130", a
+// difference's "−14.1 J to −13.0 J" (a dash between negatives misreads).
+std::string interval(const ComparedQuantity& q, const report::Interval& ci) {
+  return q.ratio ? number(ci.low, "") + "–" + number(ci.high, "")
+                 : number(ci.low, q.unit) + " to " + number(ci.high, q.unit);
 }
 
 // A difference, or its absence, with the interval behind it.
-std::string difference(const std::string& a, const std::string& b, const std::string& what,
-                       const report::PairedRatio& r) {
-  const std::string ci = "paired 95 % CI of " + a + "/" + b + ": " + num(r.ci.low) + "–" +
-                         num(r.ci.high) + ", " + std::to_string(r.pairs) + " draws";
-  if (r.ci.contains(1.0))
-    return what + ": no significant difference between " + a + " and " + b + " (" + ci +
-           ", contains 1)";
-  const std::string change =
-      r.ratio < 1 ? percent(1 - r.ratio) + " % lower" : percent(r.ratio - 1) + " % higher";
-  return what + ": " + a + " " + change + " than " + b + " (" + ci + "; " + a + " lower in " +
-         percent(r.win_rate) + " % of draws)";
+std::string difference(const std::string& a, const std::string& b, const ComparedQuantity& q,
+                       const report::PairedStatistic& r) {
+  const std::string of = q.ratio ? a + "/" + b : a + " − " + b;
+  const std::string ci = "paired 95 % CI of " + of + ": " + interval(q, *r.ci) + ", " +
+                         std::to_string(r.pairs) + " draws";
+  const double none = q.ratio ? 1.0 : 0.0;
+  if (r.ci->contains(none))
+    return std::string(q.what) + ": no significant difference between " + a + " and " + b + " (" +
+           ci + ", contains " + (q.ratio ? "1" : "0") + ")";
+  const bool lower = r.value < none;
+  const std::string size =
+      q.ratio ? report::percent(std::abs(r.value - 1)) : number(std::abs(r.value), q.unit);
+  return std::string(q.what) + ": " + a + " " + size + (lower ? " lower" : " higher") + " than " +
+         b + " (" + ci + "; " + a + " lower in " + report::percent(r.win_rate) + " of draws)";
+}
+
+std::vector<long> draws_of(const std::vector<std::size_t>& positions,
+                           const std::vector<long>& index) {
+  std::vector<long> out;
+  for (std::size_t p : positions) out.push_back(p < index.size() ? index[p] : -1);
+  return out;
+}
+
+// The statistic of one quantity as montecarlo.json holds it.
+Json statistic_json(const ComparedQuantity& q, const report::PairedStatistic& r) {
+  Json j{{"statistic", q.ratio ? "ratio" : "difference"}};
+  if (!q.ratio) j["unit"] = q.unit;
+  j["pairs"] = r.pairs;
+  if (r.computed()) j[q.ratio ? "ratio" : "difference"] = r.value;
+  if (r.ci) j["ci95"] = {r.ci->low, r.ci->high};
+  if (std::isfinite(r.win_rate)) j["win_rate"] = r.win_rate;
+  j["outcome"] = "no verdict";
+  return j;
 }
 
 }  // namespace
 
 nlohmann::ordered_json paired_verdict(const PairedSamples& s, std::uint64_t seed) {
-  nlohmann::ordered_json p;
+  Json p;
   p["a"] = s.a;
   p["b"] = s.b;
   p["pairs_with_an_invalid_run"] = s.dropped;
   std::vector<std::string> verdict;
   const bool too_many_invalid =
       static_cast<double>(s.dropped) > kMaxInvalidShare * static_cast<double>(s.draws);
-  for (const std::string m : {"energy_in", "hand_error_rms"}) {
-    const std::string what = m == "energy_in" ? "electrical energy" : "RMS hand error";
+  for (const ComparedQuantity& q : kCompared) {
+    const std::string m = q.metric;
+    auto no_verdict = [&](const std::string& reason, const std::vector<long>& draws) {
+      p[m]["outcome"] = "no verdict";
+      p[m]["reason"] = reason;
+      if (!draws.empty()) p[m]["draws"] = draws;
+      verdict.push_back(std::string(q.what) + ": no verdict (" + reason +
+                        (draws.empty() ? "" : ": " + draw_list(draws)) + ")");
+    };
     const auto ia = s.a_values.find(m), ib = s.b_values.find(m);
-    if (ia == s.a_values.end() || ib == s.b_values.end() || ia->second.size() < 2) {
-      verdict.push_back(what + ": no verdict (fewer than 2 draws where both runs are valid)");
-      p[m] = {{"outcome", "no verdict"}};
+    if (ia == s.a_values.end() || ib == s.b_values.end() || ia->second.empty()) {
+      p[m] = {{"statistic", q.ratio ? "ratio" : "difference"}, {"pairs", 0}};
+      no_verdict(s.draws > s.dropped ? m + " is not recorded in these runs"
+                                     : "no draw where both runs are valid",
+                 {});
       continue;
     }
-    const report::PairedRatio r =
-        report::paired_ratio(ia->second, ib->second, kConfidenceLevel, kBootstrapResamples, seed);
-    p[m] = {{"pairs", r.pairs}, {"ratio", r.ratio}, {"ci95", {r.ci.low, r.ci.high}},
-            {"win_rate", r.win_rate}, {"outcome", "no verdict"}};
+    const auto index = s.draw_index.find(m);
+    const std::vector<long> draws =
+        index == s.draw_index.end() ? std::vector<long>() : index->second;
+    const report::PairedStatistic r =
+        q.ratio ? report::paired_ratio(ia->second, ib->second, kConfidenceLevel,
+                                       kBootstrapResamples, seed)
+                : report::paired_difference(ia->second, ib->second, kConfidenceLevel,
+                                            kBootstrapResamples, seed);
+    p[m] = statistic_json(q, r);
+    if (!r.computed() || !r.ci) {
+      no_verdict(r.problem, draws_of(r.involved, draws));
+      continue;
+    }
     if (too_many_invalid) {
-      verdict.push_back(what + ": no verdict (" + std::to_string(s.dropped) + " of " +
-                        std::to_string(s.draws) + " draws have an invalid run)");
+      no_verdict(std::to_string(s.dropped) + " of " + std::to_string(s.draws) +
+                     " draws have an invalid run; a verdict allows 10 %",
+                 {});
       continue;
     }
     if (m == "hand_error_rms") {
       const double ma = report::median(ia->second), mb = report::median(ib->second);
       if (!(ma > kFloorFactor * s.floor_a && mb > kFloorFactor * s.floor_b)) {
-        verdict.push_back(what + ": no verdict: the medians (" + num(ma) + " m, " + num(mb) +
-                          " m) are not above 10 x the accuracy floor (" + num(s.floor_a) + " m, " +
-                          num(s.floor_b) + " m; step halving of the nominal runs): they measure "
-                          "the integrator, not the arm");
+        no_verdict("the medians (" + number(ma, "m") + ", " + number(mb, "m") +
+                       ") are not above 10 x the accuracy floor (" + number(s.floor_a, "m") + ", " +
+                       number(s.floor_b, "m") +
+                       "; step halving of the nominal runs): they measure the integrator, not "
+                       "the arm",
+                   {});
         continue;
       }
     }
-    p[m]["outcome"] = r.ci.contains(1.0) ? "no significant difference" : r.ratio < 1 ? "lower" : "higher";
-    verdict.push_back(difference(s.a, s.b, what, r));
+    const double none = q.ratio ? 1.0 : 0.0;
+    p[m]["outcome"] = r.ci->contains(none) ? "no significant difference"
+                      : r.value < none     ? "lower"
+                                           : "higher";
+    verdict.push_back(difference(s.a, s.b, q, r));
   }
   if (s.dropped > 0 && !too_many_invalid)
     verdict.push_back(std::to_string(s.dropped) + " of " + std::to_string(s.draws) +

@@ -1,7 +1,9 @@
 // The results of a study over its cases: study.json (per case its levels,
-// each variant's mean energy and hand error with their intervals, the paired
-// ratios and their outcomes; a tally of outcomes per pair of variants and the
-// verdict over the cases) and study.csv (one row per case and pair).
+// each variant's mean drawn and net electrical energy and RMS hand error with
+// their intervals, the paired statistics of study::kCompared with their
+// outcomes, and the reason of each "no verdict"; a tally of outcomes per pair
+// of variants and the verdict over the cases) and study.csv (one row per case
+// and pair). A case whose statistic could not be computed keeps its row.
 #pragma once
 
 #include <filesystem>
