@@ -156,29 +156,45 @@ TEST_CASE("cli: montecarlo refuses a scenario without uncertainty, and bad numbe
   CHECK(bad.output.find("--samples needs a whole number") != std::string::npos);
 }
 
-TEST_CASE("cli: run --check-step: the run again at half the step, every metric's change in summary.json") {
+TEST_CASE("cli: run: the step check runs by default: the run at half the step, every metric's change and floor") {
   const fs::path dir = elbowsim::testing::scratch("cli", "check_step");
   const fs::path file = dir / "holding.yaml";
   std::ofstream(file) << kHolding;
-  const auto out = elbowsim::testing::run_elbowsim("run " + file.string() + " --no-report --check-step --out " +
+  const auto out = elbowsim::testing::run_elbowsim("run " + file.string() + " --no-report --out " +
                                                    (dir / "run").string());
   INFO(out.output);
   REQUIRE(out.exit_code == 0);
-  CHECK(out.output.find("step check (0.0005 s against 0.001 s)") != std::string::npos);
+  CHECK(out.output.find("accuracy at half the step (0.0005 s)") != std::string::npos);
   const auto summary = nlohmann::json::parse(elbowsim::testing::slurp(dir / "run" / "summary.json"));
   const auto& check = summary["step_check"];
   CHECK(check["step"] == 1e-3);
   CHECK(check["half_step"] == 5e-4);
+  CHECK(check["refinement"] == "half the step (0.0005 s)");
   CHECK(check["valid_at_half_step"] == true);
   const auto& energy = check["metrics"]["energy_in"];
   CHECK(energy["value"] == summary["metrics"]["energy_in"]);  // this run's own value
   CHECK(energy["at_half_step"].get<double>() != energy["value"].get<double>());
   CHECK(energy["relative_change"].get<double>() < 1e-3);  // converged energy
+  CHECK(energy["floor"].get<double>() ==
+        std::abs(energy["value"].get<double>() - energy["at_half_step"].get<double>()));
+  CHECK(energy["below_floor"] == false);
   CHECK(check["metrics"].contains("hand_error_rms"));
-  // Without the flag: no second run, no step_check.
-  const auto plain = elbowsim::testing::run_elbowsim("run " + file.string() + " --no-report --out " +
-                                                     (dir / "plain").string());
+  // Each metric below 10 x its floor is listed, and only those.
+  for (const auto& [name, m] : check["metrics"].items()) {
+    const bool below = std::abs(m["value"].get<double>()) < 10 * m["floor"].get<double>();
+    CAPTURE(name);
+    CHECK(m["below_floor"].get<bool>() == below);
+    const auto& list = check["below_floor"];
+    CHECK((std::find(list.begin(), list.end(), name) != list.end()) == below);
+  }
+  // --check-step (older scripts) is accepted; --no-check-step: no second run, no step_check.
+  const auto old = elbowsim::testing::run_elbowsim("run " + file.string() +
+                                                   " --no-report --check-step --out " + (dir / "old").string());
+  CHECK(old.exit_code == 0);
+  const auto plain = elbowsim::testing::run_elbowsim("run " + file.string() +
+                                                     " --no-report --no-check-step --out " + (dir / "plain").string());
   REQUIRE(plain.exit_code == 0);
+  CHECK(plain.output.find("accuracy at") == std::string::npos);
   CHECK_FALSE(nlohmann::json::parse(elbowsim::testing::slurp(dir / "plain" / "summary.json"))
                   .contains("step_check"));
 }

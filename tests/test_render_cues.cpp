@@ -3,6 +3,7 @@
 // and force arrows scaled to the recording with their scale stated.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -153,4 +154,40 @@ TEST_CASE("render playback: a link without a solid (d_link = +inf by design) kee
   CHECK(Playback(model, rec).end_time() == doctest::Approx(end));
   testing::set(rec, 3, L.q(0), std::numeric_limits<double>::quiet_NaN());
   CHECK(Playback(model, rec).end_time() == doctest::Approx(rec.at(2, std::size_t(L.time()))));
+}
+
+TEST_CASE("render cues: a resting link's own solid gets a force arrow and an overlay line") {
+  // Link 1 (a capsule along +x from (0.4, 0, 0) to (0.75, 0, 0) while q1 = 0, radius
+  // 0.015) rests from t = 0.5 to 0.8 s pushed by 5 N: both ends are equally low, so the
+  // arrow starts above their middle, on the capsule's top, and points up 5 N long.
+  const Model model = render_fixture::arm();
+  Recording rec = hovering_recording();
+  const TrajectoryLayout& L = rec.layout;
+  for (std::size_t r = 0; r < rec.rows(); ++r) {
+    testing::set(rec, r, L.link_resting(1), r >= 5 && r <= 8 ? 1.0 : 0.0);
+    testing::set(rec, r, L.link_force(1), r >= 5 && r <= 8 ? 5.0 : 0.0);
+  }
+  const Playback playback(model, rec);
+  SceneOptions options;
+  options.force_scale = 0.01;
+  const Scene resting = build_scene(model, playback.at(0.6), {}, options);
+  const Arrow* arrow = nullptr;
+  for (const Arrow& a : resting.forces)
+    if (a.link == 1) arrow = &a;
+  REQUIRE(arrow != nullptr);
+  CHECK(arrow->elbow == -1);
+  CHECK(arrow->force == 5.0);
+  CHECK(approx(arrow->tail, Vector3d(0.575, 0, 0.015), 1e-12));
+  CHECK(approx(arrow->tip, Vector3d(0.575, 0, 0.065), 1e-12));
+  const std::vector<std::string> lines = overlay_lines("t", model, playback.at(0.6), 0.1);
+  CHECK(std::find(lines.begin(), lines.end(), "link1 (not an elbow): 5.00 N resting") != lines.end());
+  // Free again at 0.9 s: no arrow for it, no line.
+  const Scene free = build_scene(model, playback.at(0.95), {}, options);
+  for (const Arrow& a : free.forces) CHECK(a.link != 1);
+  for (const std::string& line : overlay_lines("t", model, playback.at(0.95), 0.1))
+    CHECK(line.find("link1") == std::string::npos);
+  // The arrows' scale counts the link's force too.
+  CHECK(playback.max_force() == 12.0);
+  testing::set(rec, 6, L.link_force(1), 20.0);
+  CHECK(Playback(model, rec).max_force() == 20.0);
 }

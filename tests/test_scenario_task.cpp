@@ -30,6 +30,26 @@ table: {boxes: [{center: [0.4, 0, -0.2], size: [1.0, 0.6, 0.1]}]}
 
 std::string scene_with(const char* lines) { return kScene + yaml(lines); }
 
+// A task that keeps the elbow on the table (or at a clearance above it) takes
+// one joint of a planar arm for it, and the hand needs two more: three links
+// (start_checks.hpp refuses the two-link arm with "the plan could only miss").
+const std::string kThreeLinkScene = yaml(R"(
+name: three_link
+robot:
+  planar:
+    links:
+      - {length: 0.3, mass: 1.0}
+      - {length: 0.2, mass: 0.5, com: 0.08, inertia: 0.002, radius: 0.03}
+      - {length: 0.1, mass: 0.2}
+simulation:
+  duration: 1.0
+effects: {contact: true}
+elbows: [{name: elbow, link: 0, at: 0.3}]
+table: {boxes: [{center: [0.4, 0, -0.2], size: [1.0, 0.6, 0.1]}]}
+)");
+
+std::string three_link_with(const char* lines) { return kThreeLinkScene + yaml(lines); }
+
 }  // namespace
 
 // ---------------------------------------------------------------------------
@@ -47,8 +67,8 @@ TEST_CASE("task: defaults without the sections") {
 }
 
 TEST_CASE("task: a line from the start pose, kept elbow, posture, limits, pd_feedforward") {
-  const Scenario m = load(scene_with(R"(
-initial: {q: [0.1, 0.2]}
+  const Scenario m = load(three_link_with(R"(
+initial: {q: [0.1, 0.2, 0.1]}
 task:
   path: line
   timing: minimum_jerk
@@ -58,8 +78,8 @@ task:
   elbows: [elbow]
   elbow_clearance: 0.02
   posture_weight: 0.1
-  joint_limits: {min: [-1, -2], max: [1, 2]}
-controller: {type: pd_feedforward, kp: [40, 30], kd: 1.5}
+  joint_limits: {min: [-1, -2, -2], max: [1, 2, 2]}
+controller: {type: pd_feedforward, kp: [40, 30, 20], kd: 1.5}
 hand_load: {mass: 0.2, force: [0, 0, -1]}
 )"));
   const HandTask& t = m.experiment.task;
@@ -73,21 +93,21 @@ hand_load: {mass: 0.2, force: [0, 0, -1]}
   REQUIRE(t.elbows.size() == 1);
   CHECK(t.elbows[0] == "elbow");
   CHECK(t.elbow_clearance == 0.02);
-  CHECK(approx(t.posture, Eigen::Vector2d(0.1, 0.2)));  // default: initial q
+  CHECK(approx(t.posture, Eigen::Vector3d(0.1, 0.2, 0.1)));  // default: initial q
   CHECK(t.posture_weight == 0.1);
-  CHECK(approx(t.q_min, Eigen::Vector2d(-1, -2)));
-  CHECK(approx(t.q_max, Eigen::Vector2d(1, 2)));
+  CHECK(approx(t.q_min, Eigen::Vector3d(-1, -2, -2)));
+  CHECK(approx(t.q_max, Eigen::Vector3d(1, 2, 2)));
   CHECK(m.experiment.controller.kind == ControllerSpec::Kind::pd_feedforward);
-  CHECK(approx(m.experiment.controller.kp, Eigen::Vector2d(40, 30)));
-  CHECK(approx(m.experiment.controller.kd, Eigen::Vector2d(1.5, 1.5)));
+  CHECK(approx(m.experiment.controller.kp, Eigen::Vector3d(40, 30, 20)));
+  CHECK(approx(m.experiment.controller.kd, Eigen::Vector3d(1.5, 1.5, 1.5)));
   CHECK(m.model.hand_load.mass == 0.2);
   CHECK(approx(m.model.hand_load.force, Eigen::Vector3d(0, 0, -1)));
 }
 
 TEST_CASE("task: circle, waypoints, hold; force control") {
-  const Scenario c = load(scene_with(R"(
+  const Scenario c = load(three_link_with(R"(
 task: {path: circle, center: [0.4, 0, 0.1], radius: 0.03, normal: [0, 2, 0], start_angle: 1.0,
-       elbows: [elbow], posture: [0.3, -0.3]}
+       elbows: [elbow], posture: [0.3, -0.3, 0.2]}
 controller: {type: force, desired_force: 8}
 )"));
   CHECK(c.experiment.task.path == HandTask::Path::circle);
@@ -96,7 +116,7 @@ controller: {type: force, desired_force: 8}
   CHECK(c.experiment.task.radius == 0.03);
   CHECK(approx(c.experiment.task.normal, Eigen::Vector3d(0, 1, 0)));  // normalized
   CHECK(c.experiment.task.start_angle == 1.0);
-  CHECK(approx(c.experiment.task.posture, Eigen::Vector2d(0.3, -0.3)));
+  CHECK(approx(c.experiment.task.posture, Eigen::Vector3d(0.3, -0.3, 0.2)));
   CHECK(c.experiment.controller.kind == ControllerSpec::Kind::force);
   CHECK(c.experiment.controller.desired_force == 8.0);
 
@@ -113,7 +133,7 @@ controller: {type: force, desired_force: 8}
 
 TEST_CASE("task: elbow kept above the table with contact on; keys set from the command line") {
   const Scenario m =
-      load(scene_with("task: {path: hold, elbows: [elbow], elbow_clearance: 0.05}\n"));
+      load(three_link_with("task: {path: hold, elbows: [elbow], elbow_clearance: 0.05}\n"));
   CHECK(m.model.effects.contact);
   CHECK(m.experiment.task.elbow_clearance == 0.05);
   const Scenario o = load(scene_with("task: {path: hold}\n"),

@@ -22,19 +22,24 @@ std::string elbow_names(const Model& model, const std::vector<int>& elbows) {
 void check_rows(const Value& root, const Scenario& s, const Eigen::VectorXd& q) {
   const TaskFreedom f = task_freedom(s.model, s.experiment, q);
   if (f.elbows.empty() || f.fits()) return;
+  const double clearance = s.experiment.task.elbow_clearance;
   std::ostringstream msg;
   msg << "the hand's target needs " << f.hand_rank << " joint directions, but "
-      << elbow_names(s.model, f.elbows) << " kept on the table "
-      << (f.sticks ? "and sticking (Coulomb friction: each centre held where it lands, "
-                   : "(each held on the table's plane, ")
-      << f.elbow_rank << (f.elbow_rank == 1 ? " row" : " independent rows") << ") leave"
-      << (f.elbows.size() == 1 ? "s" : "") << " this " << f.joints << "-joint arm only "
+      << elbow_names(s.model, f.elbows);
+  if (clearance > 0)
+    msg << " held " << clearance << " m above the table (each one row: its height)";
+  else if (f.sticks)
+    msg << " kept on the table and sticking (Coulomb friction holds each centre where it lands)";
+  else
+    msg << " kept on the table (each one row: its height)";
+  msg << " take " << f.elbow_rank << " of this " << f.joints << "-joint arm's directions and leave "
       << f.hand_free << " for the hand: the plan could only miss its target. ";
   if (f.sticks)
-    msg << "Let the elbow slide (effects.friction: false, or a friction law other than "
-           "coulomb), keep fewer elbows on the table (task.elbows), or give the arm more joints";
+    msg << "Let the elbow slide (effects.friction: false, or a friction law other than coulomb), "
+           "keep fewer elbows on the table (task.elbows), or give the arm more joints";
   else
-    msg << "Keep fewer elbows on the table (task.elbows), or give the arm more joints";
+    msg << "Keep fewer elbows " << (clearance > 0 ? "held" : "on the table")
+        << " (task.elbows), or give the arm more joints";
   root.get("task").get("elbows").fail(msg.str());
 }
 

@@ -1,6 +1,8 @@
 #include "engine/control/task_freedom.hpp"
 
 #include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
 
 #include "engine/control/inverse_kinematics.hpp"
 #include "engine/dynamics/kinematics.hpp"
@@ -14,27 +16,22 @@ int rank_of(const Eigen::MatrixXd& rows) {
   return numerical_rank(Eigen::JacobiSVD<Eigen::MatrixXd>(rows).singularValues());
 }
 
-}  // namespace
+// The ranks at one pose: of the elbows' rows, of the hand's, of both.
+struct Ranks {
+  int elbows = 0, hand = 0, all = 0;
+};
 
-TaskFreedom task_freedom(const Model& model, const Experiment& experiment, const Eigen::VectorXd& q) {
-  const HandTask& task = experiment.task;
-  TaskFreedom out;
-  out.joints = model.dof;
+Ranks ranks_at(const Model& model, const std::vector<int>& elbows, bool sticks,
+               const Eigen::VectorXd& q) {
   Data data(model);
   forward_kinematics(model, data, q);
-  // As make_plan: held above the table, elbows keep a clearance (a plane row);
-  // resting with Coulomb friction, they stick where they landed.
-  for (const std::string& name : task.elbows)
-    for (int k = 0; k < int(model.elbows.size()); ++k)
-      if (model.elbows[std::size_t(k)].name == name) out.elbows.push_back(k);
-  out.sticks = model.has_coulomb_friction() && task.elbow_clearance == 0 && !out.elbows.empty();
-  const int per_elbow = out.sticks ? 3 : 1;
-  Eigen::MatrixXd rows(per_elbow * int(out.elbows.size()), model.dof);
+  const int per_elbow = sticks ? 3 : 1;
+  Eigen::MatrixXd rows(per_elbow * int(elbows.size()), model.dof);
   Matrix3Xd J(3, model.dof);
-  for (std::size_t r = 0; r < out.elbows.size(); ++r) {
-    const Elbow& e = model.elbows[std::size_t(out.elbows[r])];
+  for (std::size_t r = 0; r < elbows.size(); ++r) {
+    const Elbow& e = model.elbows[std::size_t(elbows[r])];
     point_jacobian(model, data, e.link, e.point, J);
-    if (out.sticks) {
+    if (sticks) {
       rows.middleRows(3 * int(r), 3) = J;
     } else {
       const Eigen::Vector3d n = table_plane_under(model, point_position(data, e.link, e.point)).normal;
@@ -44,9 +41,34 @@ TaskFreedom task_freedom(const Model& model, const Experiment& experiment, const
   point_jacobian(model, data, model.hand_link, model.hand_point, J);
   Eigen::MatrixXd all(rows.rows() + 3, model.dof);
   all << rows, Eigen::MatrixXd(J);
-  out.elbow_rank = rank_of(rows);
-  out.hand_rank = rank_of(Eigen::MatrixXd(J));
-  out.hand_free = rank_of(all) - out.elbow_rank;
+  return {rank_of(rows), rank_of(Eigen::MatrixXd(J)), rank_of(all)};
+}
+
+}  // namespace
+
+TaskFreedom task_freedom(const Model& model, const Experiment& experiment, const Eigen::VectorXd& q) {
+  const HandTask& task = experiment.task;
+  TaskFreedom out;
+  out.joints = model.dof;
+  for (const std::string& name : task.elbows)
+    for (int k = 0; k < int(model.elbows.size()); ++k)
+      if (model.elbows[std::size_t(k)].name == name) out.elbows.push_back(k);
+  // As make_plan: held above the table, elbows keep a clearance (a plane row);
+  // resting with Coulomb friction, they stick where they landed.
+  out.sticks = model.has_coulomb_friction() && task.elbow_clearance == 0 && !out.elbows.empty();
+  // Generic ranks: each only falls at special poses, so the largest of a few.
+  Ranks best;
+  for (int k = 0; k < 3; ++k) {
+    Eigen::VectorXd moved = q;
+    for (int j = 0; j < model.dof; ++j) moved[j] += k == 0 ? 0.0 : 0.3 * std::sin(1.7 * k + 2.3 * j);
+    const Ranks r = ranks_at(model, out.elbows, out.sticks, moved);
+    best.elbows = std::max(best.elbows, r.elbows);
+    best.hand = std::max(best.hand, r.hand);
+    best.all = std::max(best.all, r.all);
+  }
+  out.elbow_rank = best.elbows;
+  out.hand_rank = best.hand;
+  out.hand_free = best.all - best.elbows;
   return out;
 }
 

@@ -10,7 +10,9 @@
 //
 // and the task fits when hand_free >= rank(J_hand): the elbows take none of
 // the hand's directions. Ranks are numerical (numerical_rank: singular values
-// above 1e-9 of the largest), at a regular pose (the task's first).
+// above 1e-9 of the largest) and generic: the largest over the pose given and
+// two poses near it (each joint moved by up to 0.3 rad), so that a singular
+// start (an arm laid straight) is not mistaken for a missing joint.
 #pragma once
 
 #include <vector>
@@ -30,8 +32,8 @@ struct TaskFreedom {
   bool fits() const { return hand_free >= hand_rank; }
 };
 
-// At joint angles q [rad]: the task's kept elbows (experiment.task.elbows,
-// none when it holds them above the table) and the hand.
+// Near joint angles q [rad]: the task's kept elbows (experiment.task.elbows:
+// on the table, or held at its clearance above it) and the hand.
 TaskFreedom task_freedom(const Model& model, const Experiment& experiment, const Eigen::VectorXd& q);
 
 }  // namespace elbowsim

@@ -81,3 +81,14 @@ TEST_CASE("task freedom: an elbow held above the table holds its clearance row o
   CHECK(f.elbow_rank == 1);
   CHECK(f.fits());
 }
+
+TEST_CASE("task freedom: a start laid straight (singular) is not a missing joint") {
+  // At q = 0 the 4-link arm lies along x: its hand and elbow move only along z, so the
+  // ranks at that pose alone would leave the hand 1 direction (elbow row and hand z
+  // dependent). The generic ranks near it give 2.
+  const ExperimentScene s = arm(false);
+  const TaskFreedom f = task_freedom(s.model, s.experiment, Eigen::VectorXd::Zero(4));
+  CHECK(f.hand_rank == 2);
+  CHECK(f.hand_free == 2);
+  CHECK(f.fits());
+}
