@@ -133,7 +133,7 @@ initial: {q: [0.6, -1.3, 0.9]}
 effects: {contact: true, friction: true}
 contact: {friction: 0.6}
 elbows: [{name: elbow, link: 1, at: 0.25, radius: 0.03}]
-table: {boxes: [{center: [0.5, 0, -0.2266], size: [0.8, 0.6, 0.1]}]}
+table: {boxes: [{center: [0.5, 0, -0.0999], size: [0.8, 0.6, 0.1]}]}
 task: {path: line, points: [start, [0.05, 0, 0.02]], origin: start, elbows: [elbow]}
 controller: {type: pd_feedforward}
 )";
@@ -144,8 +144,12 @@ controller: {type: pd_feedforward}
   CHECK(has(v.output, "elbow 'elbow' kept on the table and sticking"));
   CHECK(has(v.output, "leave 1 for the hand"));
   CHECK(has(v.output, "effects.friction: false"));
-  // Sliding (no friction), its height alone: the task fits.
+  // Sliding (no friction), its height alone: the task fits, and runs.
   const auto sliding = run_elbowsim("validate " + file.string() + " --set effects.friction=false");
   INFO(sliding.output);
   CHECK(sliding.exit_code == 0);
+  const auto ran = run_elbowsim("run " + file.string() + " --set effects.friction=false --no-render " +
+                                "--no-report --no-check-step --out " + (dir / "sliding").string());
+  INFO(ran.output);
+  CHECK(ran.exit_code == 0);
 }
