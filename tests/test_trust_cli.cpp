@@ -153,3 +153,15 @@ controller: {type: pd_feedforward}
   INFO(ran.output);
   CHECK(ran.exit_code == 0);
 }
+
+TEST_CASE("cli: validate plans and resets as the run does: Painleve's paradox at t = 0 is refused") {
+  // scenarios/hard/painleve.yaml stops at t = 0 (exit 3); validate said it was fine.
+  const auto v = run_elbowsim("validate " + std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/hard/painleve.yaml");
+  INFO(v.output);
+  CHECK(v.exit_code == 2);
+  CHECK(has(v.output, "the run would stop before its first step: Painleve paradox at t = 0 s"));
+  const auto ok = run_elbowsim("validate " + kExperiment);
+  CHECK(ok.exit_code == 0);
+  CHECK(has(ok.output, "start      elbow_on: planned and reset at t = 0 as the run does: passes"));
+  CHECK(has(ok.output, "start      elbow_off: planned and reset at t = 0 as the run does: passes"));
+}

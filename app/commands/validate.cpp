@@ -9,6 +9,8 @@
 #include "engine/contact/geometry.hpp"
 #include "engine/control/plan.hpp"
 #include "engine/dynamics/kinematics.hpp"
+#include "engine/run/step.hpp"
+#include "engine/run/step_log.hpp"
 #include "engine/run/warnings.hpp"
 
 namespace elbowsim {
@@ -124,6 +126,44 @@ void print_elbows(const Scenario& s, const std::string& label) {
   }
 }
 
+// What the run does before its first step, done here: the plan (inverse
+// kinematics over the whole task, and its feed-forward) and reset() at t = 0
+// (the start state, the active set of resting elbows and its forces: a
+// Painleve configuration or no contact solution stops a run there). Empty
+// when all pass, else why the run would stop before it starts.
+std::string start_of_run(const Scenario& s) {
+  try {
+    Data data(s.model);
+    data.controller = make_controller(s.model, s.experiment);
+    reset(s.model, data);
+    if (data.failure) return describe(s.model, data.failure);
+  } catch (const PlanError& e) {
+    return std::string("the hand task cannot be followed: ") + e.what();
+  }
+  return "";
+}
+
+// One line per run the scenario makes (each variant): its start passed, or the
+// reason it would stop; false if any would.
+bool check_starts(const std::string& file, const Scenario& s, const std::vector<std::string>& sets) {
+  std::vector<std::pair<std::string, Scenario>> runs;
+  if (s.variants.empty()) runs.emplace_back("", s);
+  for (const auto& [variant, overrides] : s.variants)
+    runs.emplace_back(variant + ": ", load_scenario_variant(file, variant, sets));
+  bool ok = true;
+  for (const auto& [label, run] : runs) {
+    const std::string why = start_of_run(run);
+    if (why.empty()) {
+      std::cout << "start      " << label << "planned and reset at t = 0 as the run does: passes\n";
+      continue;
+    }
+    std::cerr << "error: " << file << ": " << label << "the run would stop before its first step: "
+              << why << '\n';
+    ok = false;
+  }
+  return ok;
+}
+
 }  // namespace
 
 int validate_command(const std::string& scenario, const std::vector<std::string>& sets) {
@@ -134,6 +174,7 @@ int validate_command(const std::string& scenario, const std::vector<std::string>
     if (s.variants.empty()) print_elbows(s, "");
     for (const auto& [variant, overrides] : s.variants)  // (the file alone is not run)
       print_elbows(load_scenario_variant(scenario, variant, sets), variant + ": ");
+    if (!check_starts(scenario, s, sets)) return exit_bad_input;
     // Every case of the study, with every variant, as montecarlo loads them.
     const auto cases = study::study_cases(s);
     if (!s.study.empty()) {
