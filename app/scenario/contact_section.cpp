@@ -193,8 +193,12 @@ void check_contact_scene(const Value& root, const Model& model) {
 void check_initial_penetration(const Value& root, const Model& model, const Eigen::VectorXd& q,
                                const std::string& pose) {
   if (!model.effects.contact) return;
-  Data data(model);
-  forward_kinematics(model, data, q);
+  // Kinematics and the solids only: the model without its contact rows, whose
+  // scratch would be sized for every row count (a long chain's take seconds).
+  Model solids = model;
+  solids.effects.contact = false;
+  Data data(solids);
+  forward_kinematics(solids, data, q);
   for (const Primitive& p : data.contact.geometry.primitives) {
     for (int b = 0; b < static_cast<int>(model.table.size()); ++b) {
       const double d = primitive_distance(model, data, p, model.table[b]);

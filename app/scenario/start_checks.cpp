@@ -19,8 +19,8 @@ std::string elbow_names(const Model& model, const std::vector<int>& elbows) {
   return out;
 }
 
-void check_rows(const Value& root, const Scenario& s, const Eigen::VectorXd& q) {
-  const TaskFreedom f = task_freedom(s.model, s.experiment, q);
+void check_rows(const Value& root, const Scenario& s, const Model& m, const Eigen::VectorXd& q) {
+  const TaskFreedom f = task_freedom(m, s.experiment, q);
   if (f.elbows.empty() || f.fits()) return;
   const double clearance = s.experiment.task.elbow_clearance;
   std::ostringstream msg;
@@ -46,7 +46,10 @@ void check_rows(const Value& root, const Scenario& s, const Eigen::VectorXd& q) 
 }  // namespace
 
 void check_start(const Value& root, const Scenario& s) {
-  const Model& m = s.model;
+  // The inverse kinematics and the ranks need the arm and the table, not the
+  // contact rows' scratch (sized for every row count: seconds for a long chain).
+  Model m = s.model;
+  m.effects.contact = false;
   Eigen::VectorXd q = m.initial.q.size() == m.dof ? m.initial.q : Eigen::VectorXd::Zero(m.dof);
   std::string pose = "the initial pose (initial.q)";
   bool solved = false;
@@ -59,8 +62,8 @@ void check_start(const Value& root, const Scenario& s) {
     } catch (const PlanError&) {  // the run's plan fails and says why; the rows may be the cause
     }
   }
-  if (s.experiment.needs_plan()) check_rows(root, s, q);
-  if (!s.experiment.needs_plan() || solved) check_initial_penetration(root, m, q, pose);
+  if (s.experiment.needs_plan()) check_rows(root, s, m, q);
+  if (!s.experiment.needs_plan() || solved) check_initial_penetration(root, s.model, q, pose);
 }
 
 }  // namespace elbowsim::loader

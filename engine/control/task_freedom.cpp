@@ -21,9 +21,8 @@ struct Ranks {
   int elbows = 0, hand = 0, all = 0;
 };
 
-Ranks ranks_at(const Model& model, const std::vector<int>& elbows, bool sticks,
+Ranks ranks_at(const Model& model, Data& data, const std::vector<int>& elbows, bool sticks,
                const Eigen::VectorXd& q) {
-  Data data(model);
   forward_kinematics(model, data, q);
   const int per_elbow = sticks ? 3 : 1;
   Eigen::MatrixXd rows(per_elbow * int(elbows.size()), model.dof);
@@ -58,10 +57,11 @@ TaskFreedom task_freedom(const Model& model, const Experiment& experiment, const
   out.sticks = model.has_coulomb_friction() && task.elbow_clearance == 0 && !out.elbows.empty();
   // Generic ranks: each only falls at special poses, so the largest of a few.
   Ranks best;
+  Data data(model);
   for (int k = 0; k < 3; ++k) {
     Eigen::VectorXd moved = q;
     for (int j = 0; j < model.dof; ++j) moved[j] += k == 0 ? 0.0 : 0.3 * std::sin(1.7 * k + 2.3 * j);
-    const Ranks r = ranks_at(model, out.elbows, out.sticks, moved);
+    const Ranks r = ranks_at(model, data, out.elbows, out.sticks, moved);
     best.elbows = std::max(best.elbows, r.elbows);
     best.hand = std::max(best.hand, r.hand);
     best.all = std::max(best.all, r.all);
