@@ -13,6 +13,10 @@ Scenario at_half_step(const Scenario& scenario) {
   // The plan stays sampled as the scenario's: only the integration changes.
   if (scenario.experiment.needs_plan() && scenario.experiment.task.plan_step <= 0)
     overrides.push_back("task.plan_step=" + study::exact(scenario.model.options.step));
+  // The integrator auto chose at the scenario's step, not the one it would choose at half of it.
+  if (!scenario.model.options.integrator_reason.empty())
+    overrides.push_back(std::string("simulation.integrator=") +
+                        to_string(scenario.model.options.integrator));
   return load_scenario_text(scenario.resolved_yaml, scenario.file, overrides);
 }
 
