@@ -191,13 +191,15 @@ struct Link {
 };
 
 // DC servo of one joint (docs/model.md, Motors; paper eq. 16-27). Reflected to the joint
-// through the gear ratio k: Km = K k, Jm = Im k^2, Dm = dm k^2.
+// through the gear ratio k: Km = K k, Jm = Im k^2, Dm = dm k^2. The defaults are the
+// built-in servo of scenario files (scenarios/README.md, motors): a 24 V brushed DC
+// motor of the 20 W class behind 100:1, lossless gear; kBuiltinRatedCurrent its rating.
 struct Motor {
-  double resistance = 1.0;         // R [ohm] > 0
-  double inductance = 1e-3;        // L [H] >= 0 (> 0 for the full model)
-  double torque_constant = 0.05;   // K = K_T = K_E [N m / A]
-  double gear_ratio = 1.0;         // k [-] > 0
-  double rotor_inertia = 0.0;      // Im [kg m^2] >= 0, motor side
+  double resistance = 2.0;         // R [ohm] > 0
+  double inductance = 0.5e-3;      // L [H] >= 0 (> 0 for the full model)
+  double torque_constant = 0.03;   // K = K_T = K_E [N m / A]
+  double gear_ratio = 100.0;       // k [-] > 0
+  double rotor_inertia = 5e-7;     // Im [kg m^2] >= 0, motor side
   double gear_friction = 0.0;      // dm [N m s / rad] >= 0, motor side
   double voltage_limit = 24.0;     // [V] > 0, |v| is clamped to it
   // [A] > 0: the amplifier keeps |i| within it by narrowing the voltage to
@@ -211,11 +213,19 @@ struct Motor {
   // torque = Km i / backdrive_efficiency). 1, 1: a lossless gear.
   double efficiency = 1.0;
   double backdrive_efficiency = 1.0;
+  // The scenario gave none of this joint's motor constants (resistance,
+  // inductance, torque_constant, gear_ratio, rotor_inertia): it runs the
+  // built-in servo, rated kBuiltinRatedCurrent unless rated_current says
+  // otherwise. Messages say so; the physics does not read it.
+  bool builtin = false;
 
   double km() const { return torque_constant * gear_ratio; }
   double jm() const { return rotor_inertia * gear_ratio * gear_ratio; }
   double dm() const { return gear_friction * gear_ratio * gear_ratio; }
 };
+
+// [A] the built-in servo's continuous rating (Motor::builtin): the 20 W class.
+inline constexpr double kBuiltinRatedCurrent = 1.0;
 
 // Dry friction at a joint, on its output side (docs/model.md, Joint friction):
 // sliding at speed w it resists with tau(w) = coulomb + (breakaway - coulomb)
@@ -243,6 +253,9 @@ struct Options {
   double rtol = 1e-6;
   double atol = 1e-9;
   double max_step = 0;  // [s] longest adaptive step; 0: step with contact (landings are checked at step ends), else duration / 10
+  // Why `integrator` was chosen when the scenario left it to auto
+  // (run/integrator_choice.hpp); empty when the scenario named it.
+  std::string integrator_reason = "";
 };
 
 struct Model {

@@ -67,13 +67,20 @@ TEST_CASE("defaults of every optional section") {
   CHECK(m.effects.motor == MotorModel::full);
   CHECK(m.options.duration == doctest::Approx(1.0));
   CHECK(m.options.step == doctest::Approx(1e-3));
-  CHECK(m.options.integrator == elbowsim::IntegratorKind::rk4);
+  CHECK(m.options.integrator == elbowsim::IntegratorKind::rk4);  // auto's choice here
+  CHECK(m.options.integrator_reason.starts_with("rk4 is stable at 1.5 times the step"));
   CHECK(m.options.dynamics == elbowsim::DynamicsMethod::crba);
+  // The built-in motor: a 24 V, 20 W class servo behind 100:1, rated 1 A.
   REQUIRE(m.motors.size() == 2);
-  CHECK(m.motors[1].resistance == doctest::Approx(1.0));
-  CHECK(m.motors[1].inductance == doctest::Approx(1e-3));
-  CHECK(m.motors[1].torque_constant == doctest::Approx(0.05));
+  CHECK(m.motors[1].builtin);
+  CHECK(m.motors[1].resistance == doctest::Approx(2.0));
+  CHECK(m.motors[1].inductance == doctest::Approx(0.5e-3));
+  CHECK(m.motors[1].torque_constant == doctest::Approx(0.03));
+  CHECK(m.motors[1].gear_ratio == doctest::Approx(100));
+  CHECK(m.motors[1].rotor_inertia == doctest::Approx(5e-7));
+  CHECK(m.motors[1].gear_friction == 0);
   CHECK(m.motors[1].voltage_limit == doctest::Approx(24.0));
+  CHECK(m.motors[1].rated_current == doctest::Approx(1.0));
   CHECK(m.inputs.quantity == elbowsim::OpenLoopInputs::Quantity::voltage);
   CHECK(m.inputs.joints.empty());
   CHECK(approx(s.model.initial.q, Eigen::Vector2d::Zero()));
@@ -155,7 +162,10 @@ effects: {motor: quasi_static}
   CHECK(m.motors[1].resistance == doctest::Approx(3.0));
   CHECK(m.motors[1].torque_constant == doctest::Approx(0.03));
   CHECK(m.motors[1].gear_friction == doctest::Approx(1e-6));
-  CHECK(m.motors[0].inductance == doctest::Approx(1e-3));
+  CHECK(m.motors[0].inductance == doctest::Approx(0.5e-3));  // the built-in motor's
+  // Given constants make it the scene's own motor: not the built-in one, unrated.
+  CHECK_FALSE(m.motors[0].builtin);
+  CHECK(std::isinf(m.motors[0].rated_current));
   CHECK(m.km[0] == doctest::Approx(3.0));         // K k
   CHECK(m.armature[1] == doctest::Approx(5e-3));  // Im k^2
 }
@@ -332,4 +342,28 @@ TEST_CASE("motors: gear efficiencies in (0, 1]; below 1 the model keeps a gear l
               "motors.default.efficiency", "must be in (0, 1]");
   CHECK_ERROR(two_link_with("motors: {default: {backdrive_efficiency: 0}}\n"), "x.yaml:9:",
               "motors.default.backdrive_efficiency", "must be in (0, 1]");
+}
+
+TEST_CASE("motors: a joint given none of the motor's constants runs the rated built-in motor") {
+  auto motors = [](const char* section) { return load(two_link_with(section)).model.motors; };
+  // No section, or only what does not change the motor (voltage, amplifier,
+  // gear losses): the built-in motor with its 1 A rating, or the one given.
+  for (const char* section : {"", "motors: {default: {voltage_limit: 12, current_limit: 5}}\n"}) {
+    CAPTURE(section);
+    for (const elbowsim::Motor& m : motors(section)) {
+      CHECK(m.builtin);
+      CHECK(m.rated_current == doctest::Approx(elbowsim::kBuiltinRatedCurrent));
+    }
+  }
+  CHECK(motors("motors: {default: {rated_current: 2}}\n")[1].rated_current == doctest::Approx(2));
+  // Any of resistance, inductance, torque_constant, gear_ratio, rotor_inertia
+  // names the joint's own motor: unrated unless it says so.
+  const auto own = motors("motors: {joints: [{gear_ratio: 50}, {}]}\n");
+  CHECK_FALSE(own[0].builtin);
+  CHECK(std::isinf(own[0].rated_current));
+  CHECK(own[1].builtin);
+  CHECK(own[1].rated_current == doctest::Approx(1.0));
+  const auto rated = motors("motors: {default: {resistance: 3, rated_current: 0.5}}\n");
+  CHECK_FALSE(rated[1].builtin);
+  CHECK(rated[1].rated_current == doctest::Approx(0.5));
 }

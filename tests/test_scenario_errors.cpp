@@ -127,8 +127,14 @@ simulation:
   duration: 1
 )") + extra).c_str());
   };
-  CHECK_ERROR(with("  rtol: 1e-6\n"), "x.yaml:7:", "simulation.rtol",
+  CHECK_ERROR(with("  integrator: rk4\n  rtol: 1e-6\n"), "x.yaml:8:", "simulation.rtol",
               "applies to the adaptive integrators only (dopri5, ros34pw2); rk4 takes a fixed");
+  // Without an integrator, auto decides first: rk4 here (the built-in motor's
+  // L/R = 0.25 ms is resolved at 1 ms), so rtol is refused; on a winding
+  // 1000 times faster it chooses ros34pw2, and rtol steers it.
+  CHECK_ERROR(with("  rtol: 1e-6\n"), "x.yaml:7:", "simulation.rtol",
+              "simulation.integrator auto chose rk4, which takes a fixed simulation.step");
+  CHECK(error_of(with("  rtol: 1e-6\nmotors: {default: {inductance: 5.0e-7}}\n")).empty());
   CHECK_ERROR(with("  integrator: euler\n  max_step: 0.01\n"), "x.yaml:8:", "simulation.max_step",
               "adaptive integrators only");
   CHECK_ERROR(with("  integrator: dopri5\n  rtol: 1e-16\n"), "x.yaml:8:", "simulation.rtol",

@@ -151,6 +151,9 @@ RunOutcome simulate_one(const Scenario& scenario, const std::filesystem::path& f
     outcome.code = exit_io;
     return outcome;
   }
+  if (const Options& o = scenario.model.options; !o.integrator_reason.empty())
+    std::cout << "integrator auto chose " << to_string(o.integrator) << ": " << o.integrator_reason
+              << '\n';
   for (const std::string& warning : result.warnings) std::cerr << "warning: " << warning << '\n';
   if (result.interrupted) end_progress_line();
   if (!result.completed) {

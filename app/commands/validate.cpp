@@ -39,7 +39,44 @@ void print_model(const Scenario& s) {
   std::cout << "simulation " << m.options.duration << " s, step " << m.options.step << " s, "
             << to_string(m.options.integrator) << ", " << to_string(m.options.dynamics) << '\n'
             << "output     " << s.output.folder << '\n';
-  for (const std::string& w : model_warnings(m)) std::cout << "note       " << w << '\n';
+  for (const std::string& w : model_warnings(m, &s.experiment.controller))
+    std::cout << "note       " << w << '\n';
+}
+
+// "0, 1 and 3".
+std::string joint_list(const std::vector<int>& joints) {
+  std::string out;
+  for (std::size_t k = 0; k < joints.size(); ++k)
+    out += (k == 0 ? "" : k + 1 == joints.size() ? " and " : ", ") + std::to_string(joints[k]);
+  return out;
+}
+
+// What the scenario left to defaults that a newcomer should know: the
+// integrator auto chose, the built-in motors and the motors without a rating.
+void print_defaults(const Scenario& s) {
+  const Model& m = s.model;
+  if (!m.options.integrator_reason.empty())
+    std::cout << "integrator auto chose " << to_string(m.options.integrator) << ": "
+              << m.options.integrator_reason << '\n';
+  if (!m.has_motor()) return;
+  std::vector<int> builtin, unrated;
+  for (int j = 0; j < m.dof; ++j) {
+    const Motor& motor = m.motors[static_cast<std::size_t>(j)];
+    if (motor.builtin) builtin.push_back(j);
+    if (!std::isfinite(motor.rated_current)) unrated.push_back(j);
+  }
+  if (!builtin.empty())
+    std::cout << "note       joint" << (builtin.size() > 1 ? "s " : " ") << joint_list(builtin)
+              << " run the built-in motor (motors: none of resistance, inductance, "
+                 "torque_constant, gear_ratio, rotor_inertia given): a 24 V brushed DC motor of "
+                 "the 20 W class behind 100:1, rated "
+              << kBuiltinRatedCurrent
+              << " A (scenarios/README.md, motors); give motors: for the arm's own\n";
+  if (!unrated.empty())
+    std::cout << "note       motor" << (unrated.size() > 1 ? "s " : " ") << joint_list(unrated)
+              << (unrated.size() > 1 ? " have" : " has")
+              << " no rated_current: a run cannot warn when "
+              << (unrated.size() > 1 ? "they" : "it") << " would overheat\n";
 }
 
 // The chain, joint by joint: name (a URDF's), axis (its link's frame), the
@@ -170,6 +207,7 @@ int validate_command(const std::string& scenario, const std::vector<std::string>
   try {
     const Scenario s = load_scenario(scenario, sets);
     print_model(s);
+    print_defaults(s);
     print_chain(s);
     if (s.variants.empty()) print_elbows(s, "");
     for (const auto& [variant, overrides] : s.variants)  // (the file alone is not run)

@@ -136,6 +136,9 @@ nlohmann::ordered_json settings_json(const Options& o) {
     j["atol"] = o.atol;
     j["max_step"] = o.max_step;  // 0: the default (step with contact, else duration / 10)
   }
+  // simulation.integrator named by the scenario, or chosen by auto (and why).
+  j["integrator_choice"] = o.integrator_reason.empty() ? "scenario" : "auto";
+  if (!o.integrator_reason.empty()) j["integrator_reason"] = o.integrator_reason;
   return j;
 }
 

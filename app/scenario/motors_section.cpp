@@ -42,11 +42,32 @@ void check_inductance(const Motor& motor, const Value& set_by, const Value& fall
       .fail("must be > 0 with effects.motor: full (got 0; use motor: quasi_static for L = 0)");
 }
 
+// Whether `v` (a motor entry) names the motor: gives one of its constants.
+// A joint whose entries name none runs the built-in servo (Motor::builtin).
+bool names_motor(const Value& v) {
+  if (!v.present()) return false;
+  for (const char* key :
+       {"resistance", "inductance", "torque_constant", "gear_ratio", "rotor_inertia"})
+    if (v.get(key).present()) return true;
+  return false;
+}
+
+// The built-in servo comes with its rating; a scenario's own motor is rated
+// only by its rated_current.
+void mark_builtin(Motor& motor, bool named, bool rated) {
+  motor.builtin = !named;
+  if (motor.builtin && !rated) motor.rated_current = kBuiltinRatedCurrent;
+}
+
 }  // namespace
 
 std::vector<Motor> read_motors(const Value& motors, const Model& model) {
   const auto n = static_cast<std::size_t>(model.dof);
-  if (!motors.present()) return std::vector<Motor>(n);
+  if (!motors.present()) {
+    std::vector<Motor> builtin(n);
+    for (Motor& m : builtin) mark_builtin(m, false, false);
+    return builtin;
+  }
   motors.allow_keys({"default", "joints"});
 
   Motor common;
@@ -70,6 +91,10 @@ std::vector<Motor> read_motors(const Value& motors, const Model& model) {
       if (own.present()) inductance = own;
     }
     check_inductance(out[i], inductance, motors, model.effects.motor);
+    const bool own = !items.empty() && items[i].present();
+    mark_builtin(out[i], names_motor(defaults) || (own && names_motor(items[i])),
+                 (defaults.present() && defaults.get("rated_current").present()) ||
+                     (own && items[i].get("rated_current").present()));
   }
   return out;
 }

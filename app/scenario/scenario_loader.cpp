@@ -11,6 +11,7 @@
 #include "app/scenario/scenario.hpp"
 #include "app/scenario/sections.hpp"
 #include "app/scenario/start_checks.hpp"
+#include "engine/run/integrator_choice.hpp"
 
 namespace elbowsim {
 
@@ -78,6 +79,17 @@ void finalize_model(Model& model, const Source& source) {
   }
 }
 
+// simulation.integrator auto (or absent): chosen for the finalized model and
+// the controller's gains (run/integrator_choice.hpp); then rtol, atol and
+// max_step are checked against the choice.
+void choose_auto_integrator(const Value& simulation, Scenario& s) {
+  if (!auto_integrator(simulation)) return;
+  const IntegratorChoice choice = choose_integrator(s.model, &s.experiment.controller);
+  s.model.options.integrator = choice.kind;
+  s.model.options.integrator_reason = choice.reason;
+  check_error_control(simulation, s.model.options);
+}
+
 // A task without joint_limits keeps a URDF's <limit>s (continuous joints: none).
 void use_urdf_limits(const Value& task, const RobotInfo& robot, HandTask& out) {
   if (!task.present() || task.get("joint_limits").present()) return;
@@ -131,6 +143,7 @@ Scenario read(const Value& root, const Source& source, OverrideSets& sets,
   s.output = read_output(root.get("output"), model.name);
   s.render = read_render(root.get("render"));
   finalize_model(model, source);
+  choose_auto_integrator(root.get("simulation"), s);
   const auto texts = [](const VariantSpec& v) {
     std::vector<std::string> out;
     for (const VariantSpec::Entry& e : v.overrides) out.push_back(e.text);

@@ -53,6 +53,11 @@ std::vector<Motor> read_motors(const Value& motors, const Model& model);
 
 Effects read_effects(const Value& effects);                                // optional
 Options read_simulation(const Value& simulation, const Value& task);  // required
+// simulation.integrator is auto (given so, or absent): the loader chooses it
+// once the model is finalized (run/integrator_choice.hpp).
+bool auto_integrator(const Value& simulation);
+// rtol, atol and max_step refused unless options.integrator is adaptive.
+void check_error_control(const Value& simulation, const Options& options);
 Model::InitialState read_initial(const Value& initial, int dof);           // optional
 OpenLoopInputs read_inputs(const Value& inputs, const Model& model);       // optional
 OutputSettings read_output(const Value& output, const std::string& name);  // optional

@@ -22,15 +22,10 @@ Eigen::VectorXd read_angles(const Value& initial, const std::string& key, int do
 }
 
 // rtol, atol and max_step steer the adaptive integrators only: with a fixed
-// step they would be silently ignored, so they are refused there.
+// step they would be silently ignored, so they are refused there (with auto,
+// once it has chosen: check_error_control).
 void read_error_control(const Value& simulation, Options& out) {
-  for (const char* key : {"rtol", "atol", "max_step"}) {
-    Value v = simulation.get(key);
-    if (v.present() && !is_adaptive(out.integrator))
-      v.fail(std::string("applies to the adaptive integrators only (dopri5, ros34pw2); ") +
-             to_string(out.integrator) +
-             " takes a fixed simulation.step (to drop the key: --set simulation." + key + "=null)");
-  }
+  if (!auto_integrator(simulation)) check_error_control(simulation, out);
   out.rtol = value_or(simulation.get("rtol"), out.rtol, positive);
   out.atol = value_or(simulation.get("atol"), out.atol, positive);
   out.max_step = value_or(simulation.get("max_step"), out.max_step, positive);
@@ -39,6 +34,26 @@ void read_error_control(const Value& simulation, Options& out) {
 }
 
 }  // namespace
+
+bool auto_integrator(const Value& simulation) {
+  if (!simulation.present()) return true;
+  const Value integrator = simulation.get("integrator");
+  return !integrator.present() || integrator.text() == "auto";
+}
+
+void check_error_control(const Value& simulation, const Options& options) {
+  if (!simulation.present()) return;
+  for (const char* key : {"rtol", "atol", "max_step"}) {
+    Value v = simulation.get(key);
+    if (!v.present() || is_adaptive(options.integrator)) continue;
+    const std::string chosen = (options.integrator_reason.empty() ? "" : "simulation.integrator auto chose ") +
+                               std::string(to_string(options.integrator)) +
+                               (options.integrator_reason.empty() ? "" : ", which");
+    v.fail(std::string("applies to the adaptive integrators only (dopri5, ros34pw2); ") + chosen +
+           " takes a fixed simulation.step (to drop the key: --set simulation." + key +
+           "=null; or name an adaptive integrator)");
+  }
+}
 
 Effects read_effects(const Value& effects) {
   Effects out;
@@ -114,7 +129,7 @@ Options read_simulation(const Value& simulation, const Value& task) {
     simulation.fail("is required without a task (give simulation: {duration: ...})");
   Options out;
   out.duration = default_duration(simulation, task);
-  if (!simulation.present()) return out;  // the defaults: 1 ms, rk4, crba
+  if (!simulation.present()) return out;  // the defaults: 1 ms, auto, crba
   simulation.allow_keys({"duration", "step", "integrator", "dynamics", "rtol", "atol", "max_step"});
   Value step = simulation.get("step");
   out.step = value_or(step, 1e-3, positive);
@@ -124,11 +139,19 @@ Options read_simulation(const Value& simulation, const Value& task) {
     if (step.present()) step.fail("must be <= simulation.duration " + numbers);
     simulation.get("duration").fail("must be >= simulation.step " + numbers);
   }
+  // auto (or absent): rk4 until choose_integrator() decides (scenario_loader.cpp).
   Value integrator = simulation.get("integrator");
-  if (integrator.present())
-    out.integrator =
-        choose(integrator, {IntegratorKind::euler, IntegratorKind::semi_implicit_euler,
-                            IntegratorKind::rk4, IntegratorKind::dopri5, IntegratorKind::ros34pw2});
+  if (!auto_integrator(simulation)) {
+    using K = IntegratorKind;
+    const std::vector<std::pair<int, std::string_view>> names = {
+        {-1, "auto"},
+        {int(K::euler), to_string(K::euler)},
+        {int(K::semi_implicit_euler), to_string(K::semi_implicit_euler)},
+        {int(K::rk4), to_string(K::rk4)},
+        {int(K::dopri5), to_string(K::dopri5)},
+        {int(K::ros34pw2), to_string(K::ros34pw2)}};
+    out.integrator = static_cast<IntegratorKind>(choose(integrator, names));
+  }
   read_error_control(simulation, out);
   Value dynamics = simulation.get("dynamics");
   if (dynamics.present())

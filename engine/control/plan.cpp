@@ -187,6 +187,42 @@ TaskStart task_start(const Model& model, const Experiment& experiment, Data& dat
   return start;
 }
 
+// The plan passes a near-singular pose (its most singular sample `at`): a
+// warning, and the cause a failure of the integration after it leads with
+// (step_log.hpp, FailureCause). Over the near-singular stretch around `at`
+// (conditioning under kNearSingular, with the neighbours its differences
+// reach) the planned joint rates and accelerations peak.
+void warn_near_singular(Plan& plan, const std::vector<double>& conditioning_at, long at) {
+  const std::size_t k = static_cast<std::size_t>(at), last = plan.q.size() - 1;
+  std::size_t first = k, end = k;
+  while (first > 0 && conditioning_at[first - 1] < kNearSingular) --first;
+  while (end < last && conditioning_at[end + 1] < kNearSingular) ++end;
+  first = first > 0 ? first - 1 : 0;
+  end = std::min(end + 1, last);
+  double rate = 0, acceleration = 0;
+  for (std::size_t i = first; i <= end; ++i) {
+    rate = std::max(rate, plan.qd[i].cwiseAbs().maxCoeff());
+    acceleration = std::max(acceleration, plan.qdd[i].cwiseAbs().maxCoeff());
+  }
+  const double t = double(at) * plan.dt;
+  std::ostringstream peaks, msg, clause;
+  peaks.precision(3);
+  peaks << "planned joint rates up to " << rate << " rad/s and accelerations up to " << acceleration
+        << " rad/s^2 there";
+  msg << "the task passes a near-singular pose at t = " << t
+      << " s (the arm stretched or folded: the smallest singular value of its task Jacobian is "
+      << conditioning_at[k] << " of the largest, so the hand barely moves along one direction "
+      << "there); " << peaks.str();
+  plan.warnings.push_back(msg.str());
+  clause << "the hand task passes near a singular pose at t = " << t
+         << " s (the arm stretched or folded; " << peaks.str() << ")";
+  using K = Failure::Kind;
+  plan.causes.push_back({clause.str(),
+                         double(first) * plan.dt,
+                         {K::energy_balance, K::diverged, K::current_bound, K::speed_bound,
+                          K::penetration, K::step_underflow}});
+}
+
 // The IK problem at time t: the hand's target then, the elbows pinned.
 IkProblem problem_at(const Experiment& experiment, const TaskStart& start,
                      const std::vector<Eigen::Vector3d>& pins, double t) {
@@ -213,6 +249,7 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
   std::vector<Eigen::Vector3d> pins;
   double least = 1;  // the plan's most singular pose: conditioning and sample
   long least_at = 0;
+  std::vector<double> conditioning_at;  // [samples]
   int rank = 0;  // the start pose's (taken as regular)
   for (long k = 0; k < N; ++k) {
     const double t = double(k) * plan->dt;
@@ -220,7 +257,8 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
     const IkResult r = solve_ik(model, data, problem, q);
     if (k == 0) rank = numerical_rank(r.singular_values);
     check(r, t, problem.hand, rank, at_limit(problem, r.q));
-    if (const double c = conditioning(r.singular_values, rank); c < least) least = c, least_at = k;
+    conditioning_at.push_back(conditioning(r.singular_values, rank));
+    if (conditioning_at.back() < least) least = conditioning_at.back(), least_at = k;
     forward_kinematics(model, data, r.q);
     check_over_table(model, data, problem, t);
     if (k == 0 && sticks) pins = elbow_centres(model, data, problem);
@@ -229,15 +267,7 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
     plan->hand.push_back(problem.hand);
   }
   differentiate(*plan);
-  if (least < kNearSingular) {
-    std::ostringstream msg;
-    msg << "the task passes a near-singular pose at t = " << double(least_at) * plan->dt
-        << " s (the arm stretched or folded: the smallest singular value of its task Jacobian is "
-        << least << " of the largest, so the hand barely moves along one direction there); "
-        << "planned joint rates there reach "
-        << plan->qd[static_cast<std::size_t>(least_at)].cwiseAbs().maxCoeff() << " rad/s";
-    plan->warnings.push_back(msg.str());
-  }
+  if (least < kNearSingular) warn_near_singular(*plan, conditioning_at, least_at);
   feed_forward(model, experiment.controller, data, base, *plan);
   for (std::size_t r = 0; r < base.elbows.size(); ++r)
     if (base.clearance > 0)

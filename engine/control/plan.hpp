@@ -22,6 +22,7 @@ struct Plan {
   std::vector<int> resting;             // elbows the plan keeps on the table (clearance 0, contact on)
   std::vector<int> held;                // elbows the plan holds above the table (clearance > 0)
   std::vector<std::string> warnings;    // about the plan (a near-singular pose), for the run's warnings
+  std::vector<FailureCause> causes;     // what of them may explain a failure (step_log.hpp)
 
   // The desired hand position at time t, linear between samples (clamped to the ends).
   Eigen::Vector3d hand_at(double t) const {

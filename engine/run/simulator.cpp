@@ -94,6 +94,11 @@ void append(std::vector<std::string>& to, std::vector<std::string> more) {
   for (std::string& w : more) to.push_back(std::move(w));
 }
 
+// The controller's gains for the stability of the fixed step (null: open loop).
+const ControllerSpec* controller_spec(const Data& data) {
+  return data.controller ? &data.controller->spec : nullptr;
+}
+
 // What the user needs to know about the run (run/warnings.hpp), after the
 // warnings its steps collected: what it did, then its model, then its plan.
 void add_warnings(const Model& model, const Data& data, RunResult& result) {
@@ -107,8 +112,21 @@ void add_warnings(const Model& model, const Data& data, RunResult& result) {
     append(result.warnings, unplanned_contact_warnings(model, result.metrics,
                                                        plan ? plan->held : std::vector<int>{}));
   append(result.warnings, hand_error_warnings(model, result.trajectory));
-  append(result.warnings, model_warnings(model));
+  append(result.warnings, model_warnings(model, controller_spec(data)));
   if (plan) append(result.warnings, plan->warnings);
+}
+
+// What the warnings report that may explain the run's failure, in the order a
+// failure's message looks for its cause (step_log.hpp, FailureCause): the
+// fixed step, the plan, the motors' limits.
+std::vector<FailureCause> failure_causes(const Model& model, const Data& data,
+                                         const RunResult& result) {
+  std::vector<FailureCause> causes = stiffness_causes(model, controller_spec(data));
+  if (data.controller && data.controller->plan)
+    for (const FailureCause& c : data.controller->plan->causes) causes.push_back(c);
+  for (FailureCause& c : saturation_causes(model, result.saturation))
+    causes.push_back(std::move(c));
+  return causes;
 }
 
 void finish(const Model& model, Data& data, RunResult& result) {
@@ -119,7 +137,6 @@ void finish(const Model& model, Data& data, RunResult& result) {
   if (!data.failure && data.controller && data.controller->plan)
     check_planned_rest(model, data.controller->plan->resting, result.trajectory, data);
   result.valid = !data.failure;
-  result.failure = describe(model, data.failure);
   result.interrupted = data.failure.kind == Failure::Kind::interrupted;
   result.steps = data.step_count;
   result.work = data.work;
@@ -130,6 +147,7 @@ void finish(const Model& model, Data& data, RunResult& result) {
   result.contact = {data.contact.max_abs_C, data.contact.max_abs_Cd, data.contact.dependent_steps};
   result.metrics = compute_metrics(result.trajectory);
   result.saturation = saturation_shares(model, result.trajectory);
+  result.failure = describe(model, data.failure, failure_causes(model, data, result));
   add_warnings(model, data, result);
 }
 

@@ -1,7 +1,6 @@
 #include "engine/run/step_log.hpp"
 
-#include "engine/run/warnings.hpp"
-
+#include <algorithm>
 #include <sstream>
 
 #include "engine/contact/primitives.hpp"
@@ -66,6 +65,16 @@ std::string part_name(const Model& model, const Failure& f) {
   return "";
 }
 
+// A fixed step above ten times some motor's L/R.
+bool unresolved_electrics(const Model& model) {
+  if (is_adaptive(model.options.integrator) || !model.has_current_state() ||
+      model.inductance.size() != model.dof)
+    return false;
+  for (int j = 0; j < model.dof; ++j)
+    if (model.inductance[j] / model.resistance[j] < 0.1 * model.options.step) return true;
+  return false;
+}
+
 // What to change: the step, when the estimate says it is beyond stability.
 std::string step_advice(const Model& model, const Failure& f) {
   std::ostringstream s;
@@ -73,7 +82,7 @@ std::string step_advice(const Model& model, const Failure& f) {
   // Motor electrics far faster than a fixed step (warnings.hpp,
   // stiffness_warnings): a smaller step is the expensive fix, the implicit
   // integrator the cheap one.
-  if (!stiffness_warnings(model).empty()) {
+  if (unresolved_electrics(model)) {
     s << "; a motor's L/R is under a tenth of the step: use simulation.integrator: ros34pw2 "
          "(implicit in the motor electrics; or a smaller simulation.step, now "
       << h << " s)";
@@ -193,6 +202,30 @@ std::string describe(const Model& model, const Failure& f) {
       return msg.str();
   }
   return "?";
+}
+
+namespace {
+
+// When the failure began: an energy balance's residual when it first passed
+// its bound, anything else when it was found.
+double began(const Failure& f) { return std::isnan(f.since) ? f.t : f.since; }
+
+}  // namespace
+
+std::string describe(const Model& model, const Failure& f,
+                     const std::vector<FailureCause>& causes) {
+  std::string own = describe(model, f);
+  if (!f) return own;
+  for (const FailureCause& c : causes) {
+    const bool explains =
+        std::find(c.explains.begin(), c.explains.end(), f.kind) != c.explains.end();
+    if (!explains || c.t > began(f)) continue;
+    // "invalid run: the energy balance is off ..." reads on after the cause without its label.
+    const std::string label = "invalid run: ";
+    if (own.starts_with(label)) own.erase(0, label.size());
+    return c.clause + "; likely as a result, " + own;
+  }
+  return own;
 }
 
 }  // namespace elbowsim

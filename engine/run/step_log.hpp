@@ -71,6 +71,16 @@ struct Failure {
   explicit operator bool() const { return kind != Kind::none; }
 };
 
+// A condition a warning reports that may explain a later failure (the plan's
+// near-singular pose, a fixed step the linearised system makes unstable, a
+// motor at its limit). A failure of one of the kinds in `explains` that began
+// at or after `t` leads its message with `clause`, and keeps its own after it.
+struct FailureCause {
+  std::string clause;  // "the hand task passes near a singular pose at t = 1.2 s (...)"
+  double t = 0;        // [s] from when it can act
+  std::vector<Failure::Kind> explains;
+};
+
 // The events and warnings of one step. Their capacity is reserved when Data is
 // built (a step emits at most a few per elbow and one per link-box pair).
 struct StepLog {
@@ -87,5 +97,9 @@ const char* to_string(ContactEvent::Kind kind);
 // The messages users read in summary.json, on stderr and in reports.
 std::string describe(const Model& model, const Warning& warning);
 std::string describe(const Model& model, const Failure& failure);
+// The same, led by the first of `causes` (in their order) that explains it:
+// "<clause>; likely as a result, <the failure's message>".
+std::string describe(const Model& model, const Failure& failure,
+                     const std::vector<FailureCause>& causes);
 
 }  // namespace elbowsim

@@ -1,8 +1,8 @@
 #include "engine/run/validity.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 
 #include "engine/contact/detection.hpp"
 #include "engine/contact/geometry.hpp"
@@ -10,6 +10,7 @@
 #include "engine/dynamics/crba.hpp"
 #include "engine/dynamics/energy.hpp"
 #include "engine/dynamics/kinematics.hpp"
+#include "engine/run/fixed_step_stability.hpp"
 #include "engine/run/state_layout.hpp"
 
 namespace elbowsim {
@@ -205,27 +206,29 @@ void check_planned_rest(const Model& model, const std::vector<int>& planned_rest
 double stable_step_estimate(const Model& model, Data& data) {
   const StateLayout s(model);
   if (!data.x.allFinite()) return 0;
-  forward_kinematics(model, data, data.x.segment(s.q(), s.n));
+  const Controller* c = data.controller.get();
+  const ControllerSpec* gains = c && c->plan ? &c->spec : nullptr;
+  const Eigen::VectorXd q = data.x.segment(s.q(), s.n);
+  if (!is_adaptive(model.options.integrator))
+    return stable_step_limit(model.options.integrator, linearise_arm(model, gains, q),
+                             model.options.step);
+  // Adaptive integrators choose their steps: the arm's damped and oscillatory
+  // rates against a reach of 2 along the negative real axis.
+  forward_kinematics(model, data, q);
   mass_matrix_crba(model, data);
   data.llt.compute(data.mass_matrix);
   if (data.llt.info() != Eigen::Success) return 0;
-  // Damping: joint viscous, the motors' back-EMF through the winding (Km^2/R),
-  // a tracking controller's Kd through the motor (Km Kd / R); stiffness: its Kp.
   Eigen::VectorXd damping = model.viscous, stiffness = Eigen::VectorXd::Zero(model.dof);
   if (model.has_motor()) {
     damping += model.km.cwiseProduct(model.km).cwiseQuotient(model.resistance);
-    const Controller* c = data.controller.get();
-    if (c && c->plan && c->spec.kind != ControllerSpec::Kind::open_loop) {
+    if (gains && gains->kind != ControllerSpec::Kind::open_loop) {
       const Eigen::VectorXd gain = model.km.cwiseQuotient(model.resistance);
-      damping += gain.cwiseProduct(c->spec.kd);
-      stiffness = gain.cwiseProduct(c->spec.kp);
+      damping += gain.cwiseProduct(gains->kd);
+      stiffness = gain.cwiseProduct(gains->kp);
     }
   }
   const double rate = largest_rate(data, damping) + std::sqrt(largest_rate(data, stiffness));
-  if (rate <= 0) return 0;
-  // Stability limits along the negative real axis: RK4 2.785, Euler and semi-implicit Euler 2.
-  const double reach = model.options.integrator == IntegratorKind::rk4 ? 2.785 : 2.0;
-  return reach / rate;
+  return rate > 0 ? 2.0 / rate : 0;
 }
 
 }  // namespace elbowsim

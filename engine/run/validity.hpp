@@ -46,9 +46,12 @@ double energy_held(const EnergyTerms& now, const EnergyTerms& initial);
 void check_planned_rest(const Model& model, const std::vector<int>& planned_resting,
                         const Recording& recording, Data& data);
 
-// The largest step [s] the integrator can take stably at the state in data
-// (the arm's fastest damped and oscillatory rates, with the motors' back-EMF
-// damping and a tracking controller's gains); 0 when it cannot be estimated.
+// The largest step [s] the integrator can take stably at the state in data:
+// a fixed step's stability boundary on the motor-arm system linearised at its
+// q with a tracking controller's gains (fixed_step_stability.hpp); for the
+// adaptive integrators 2 over the arm's fastest damped and oscillatory rates
+// (back-EMF damping Km^2/R, the controller's Km Kd/R and Km Kp/R). 0 when it
+// cannot be estimated; infinity when nothing limits a fixed step.
 double stable_step_estimate(const Model& model, Data& data);
 
 }  // namespace elbowsim

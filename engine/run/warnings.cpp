@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "engine/run/fixed_step_stability.hpp"
+
 namespace elbowsim {
 
 namespace {
@@ -67,19 +69,28 @@ std::vector<double> saturation_shares(const Model& model, const Recording& recor
   return shares;
 }
 
+namespace {
+
+// "motor 1 is at its voltage limit (24 V) for 30 % of the run".
+std::string saturation_clause(const Model& model, int j, double share) {
+  const bool current = model.current_limit[j] < std::numeric_limits<double>::infinity();
+  char limit[96];
+  std::snprintf(
+      limit, sizeof limit,
+      current ? "voltage limit (%.3g V) or current limit (%.3g A)" : "voltage limit (%.3g V)",
+      model.voltage_limit[j], model.current_limit[j]);
+  return "motor " + std::to_string(j) + " is at its " + limit + " for " + percent(share) +
+         " of the run";
+}
+
+}  // namespace
+
 std::vector<std::string> saturation_warnings(const Model& model,
                                              const std::vector<double>& shares) {
   std::vector<std::string> out;
   for (std::size_t j = 0; j < shares.size(); ++j) {
     if (!(shares[j] > model.warn.saturation_share)) continue;
-    const bool current = model.current_limit[int(j)] < std::numeric_limits<double>::infinity();
-    char limit[96];
-    std::snprintf(
-        limit, sizeof limit,
-        current ? "voltage limit (%.3g V) or current limit (%.3g A)" : "voltage limit (%.3g V)",
-        model.voltage_limit[int(j)], model.current_limit[int(j)]);
-    out.push_back("motor " + std::to_string(j) + " is at its " + limit + " for " +
-                  percent(shares[j]) + " of the run (warnings: saturation_share " +
+    out.push_back(saturation_clause(model, int(j), shares[j]) + " (warnings: saturation_share " +
                   percent(model.warn.saturation_share) +
                   "): it cannot give what it is asked, so the arm follows the limit, not the "
                   "command; a larger gear ratio, torque constant or voltage, or a slower task, "
@@ -169,36 +180,98 @@ std::vector<std::string> motor_rating_warnings(const Model& model, const Metrics
     const double rated = model.motors[static_cast<std::size_t>(j)].rated_current;
     const double i = rms->values[static_cast<std::size_t>(j)];
     if (!(i > rated)) continue;
-    char text[240];
+    const bool builtin = model.motors[static_cast<std::size_t>(j)].builtin;
+    char text[400];
     std::snprintf(text, sizeof text,
                   "motor %d carries %.3g A RMS, %.2g times its rated continuous current %.3g A "
-                  "(motors: rated_current): a real motor of this rating would overheat",
-                  j, i, i / rated, rated);
+                  "(motors: rated_current%s): a real motor of this rating would overheat",
+                  j, i, i / rated, rated,
+                  builtin ? "; the built-in motor, a 20 W class servo behind 100:1: give the arm "
+                            "motors of its size under motors:"
+                          : "");
     out.emplace_back(text);
   }
   return out;
 }
 
-std::vector<std::string> stiffness_warnings(const Model& model) {
-  std::vector<std::string> out;
-  if (!model.has_current_state() || is_adaptive(model.options.integrator) || model.dof == 0 ||
-      model.inductance.size() != model.dof || model.resistance.size() != model.dof)
-    return out;  // (an unfinalized model has no motor constants yet)
-  int fastest = 0;
-  for (int j = 1; j < model.dof; ++j)
-    if (model.inductance[j] / model.resistance[j] <
-        model.inductance[fastest] / model.resistance[fastest])
-      fastest = j;
-  const double tau = model.inductance[fastest] / model.resistance[fastest];
-  if (!(tau < 0.1 * model.options.step)) return out;
-  char text[400];
+namespace {
+
+// The model's fixed step on the system linearised at initial.q, or nothing
+// (adaptive integrators, an unfinalized model).
+bool fixed_step_at_start(const Model& model, const ControllerSpec* controller,
+                         FixedStepStability& out) {
+  if (is_adaptive(model.options.integrator) || model.dof == 0 || model.km.size() != model.dof ||
+      model.viscous.size() != model.dof)
+    return false;
+  const Eigen::VectorXd q =
+      model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
+  out = fixed_step_stability(model, model.options.integrator, controller, q);
+  return true;
+}
+
+// "the rk4 integrator is unstable at the step 0.001 s on ... (...)": the
+// clause both the warning and the failure cause start with.
+std::string instability(const Model& model, const FixedStepStability& s) {
+  char text[360];
+  std::snprintf(text, sizeof text,
+                "the %s integrator is unstable at the step %.3g s on the motor-arm system "
+                "linearised at initial.q: one step amplifies errors %.3g times (stable up to a "
+                "step of about %.3g s; engine/MODEL.md, Stability of the fixed steps)",
+                to_string(model.options.integrator), model.options.step, s.radius, s.stable_step);
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> stiffness_warnings(const Model& model, const ControllerSpec* controller) {
+  FixedStepStability s;
+  if (!fixed_step_at_start(model, controller, s)) return {};
+  const double h = model.options.step;
+  const bool unresolved = s.fastest >= 0 && s.electrical_time < 0.1 * h;
+  char text[800];
+  if (s.radius > kStableRadius) {
+    char electrics[200] = "";
+    if (unresolved)
+      std::snprintf(electrics, sizeof electrics,
+                    "; motor %d's electrical time constant L/R = %.3g s is under a tenth of the "
+                    "step, where a stable fixed step is still only first-order accurate",
+                    s.fastest, s.electrical_time);
+    std::snprintf(text, sizeof text,
+                  "%s%s: use simulation.integrator: ros34pw2 (implicit, stable at any step; "
+                  "without simulation.integrator, auto chooses it here) or simulation.step <= "
+                  "%.3g s",
+                  instability(model, s).c_str(), electrics, s.stable_step);
+    return {text};
+  }
+  if (!unresolved) return {};
   std::snprintf(text, sizeof text,
                 "motor %d's electrical time constant L/R = %.3g s is under a tenth of the step "
-                "%.3g s: the %s integrator stays stable there but its currents and angles are only "
-                "first-order accurate (engine/MODEL.md, Integration); for accurate currents use "
-                "simulation.integrator: ros34pw2 (or motor: quasi_static)",
-                fastest, tau, model.options.step, to_string(model.options.integrator));
-  out.emplace_back(text);
+                "%.3g s: the %s integrator is stable there on the motor-arm system linearised at "
+                "initial.q (one step's spectral radius %.3g), but its currents and angles are "
+                "only first-order accurate (engine/MODEL.md, Integration); for accurate currents "
+                "use simulation.integrator: ros34pw2 (what auto chooses here) or motor: "
+                "quasi_static",
+                s.fastest, s.electrical_time, h, to_string(model.options.integrator), s.radius);
+  return {text};
+}
+
+std::vector<FailureCause> stiffness_causes(const Model& model, const ControllerSpec* controller) {
+  FixedStepStability s;
+  if (!fixed_step_at_start(model, controller, s) || !(s.radius > kStableRadius)) return {};
+  using K = Failure::Kind;
+  return {{instability(model, s),
+           0.0,
+           {K::diverged, K::current_bound, K::speed_bound, K::energy_balance, K::penetration}}};
+}
+
+std::vector<FailureCause> saturation_causes(const Model& model, const std::vector<double>& shares) {
+  std::vector<FailureCause> out;
+  for (std::size_t j = 0; j < shares.size(); ++j)
+    if (shares[j] > model.warn.saturation_share)
+      out.push_back({saturation_clause(model, int(j), shares[j]) +
+                         " (it cannot give what it is asked: the arm follows the limit)",
+                     0.0,
+                     {Failure::Kind::elbow_not_resting}});
   return out;
 }
 
@@ -221,8 +294,8 @@ std::vector<std::string> first_link_elbow_warnings(const Model& model) {
   return out;
 }
 
-std::vector<std::string> model_warnings(const Model& model) {
-  std::vector<std::string> out = stiffness_warnings(model);
+std::vector<std::string> model_warnings(const Model& model, const ControllerSpec* controller) {
+  std::vector<std::string> out = stiffness_warnings(model, controller);
   for (std::string& w : first_link_elbow_warnings(model)) out.push_back(std::move(w));
   return out;
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "engine/contact/primitives.hpp"
+#include "engine/control/controller.hpp"
 #include "engine/model.hpp"
 #include "engine/recording/metrics.hpp"
 #include "engine/recording/recording.hpp"
@@ -52,10 +53,22 @@ std::vector<std::string> unplanned_contact_warnings(const Model& model, const Me
 // desired point at some recorded sample (a task), with when and the RMS.
 std::vector<std::string> hand_error_warnings(const Model& model, const Recording& recording);
 
-// A fixed-step integrator on motor electrics far faster than its step (L/R
-// under a tenth of it): stable, but first order there (engine/MODEL.md,
-// "Integration"): one warning naming the fastest motor and the fix.
-std::vector<std::string> stiffness_warnings(const Model& model);
+// A fixed-step integrator the motor-arm system linearised at initial.q makes
+// unstable (fixed_step_stability.hpp; controller: its continuous feedback
+// gains, or null), or one that is stable there on motor electrics far faster
+// than its step (L/R under a tenth of it: first order there, engine/MODEL.md,
+// "Integration"): one warning with the numbers and the fix.
+std::vector<std::string> stiffness_warnings(const Model& model,
+                                            const ControllerSpec* controller = nullptr);
+
+// The unstable fixed step of stiffness_warnings as the possible cause of a
+// divergence, a bound or an energy balance broken (step_log.hpp, FailureCause).
+std::vector<FailureCause> stiffness_causes(const Model& model,
+                                           const ControllerSpec* controller = nullptr);
+
+// Each saturation warning's motor at its limit as the possible cause of an
+// elbow that did not rest as planned (the arm followed the limit).
+std::vector<FailureCause> saturation_causes(const Model& model, const std::vector<double>& shares);
 
 // An elbow on link 0: its point moves with joint 0 alone (the base is fixed),
 // so while it rests or sticks the table holds joint 0 still, and with friction
@@ -66,6 +79,7 @@ std::vector<std::string> first_link_elbow_warnings(const Model& model);
 
 // What a run says about its model before it starts (stiffness, first-link
 // elbows), in that order; printed by `validate` too.
-std::vector<std::string> model_warnings(const Model& model);
+std::vector<std::string> model_warnings(const Model& model,
+                                        const ControllerSpec* controller = nullptr);
 
 }  // namespace elbowsim

@@ -2,6 +2,7 @@
 // each Warning and Failure kind names its time and its quantity.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <string>
 
 #include "engine/model.hpp"
@@ -153,4 +154,37 @@ TEST_CASE("describe(Warning): the dependent-rows threshold is readable (1e-09, n
   const std::string text = describe(model, w);
   CHECK_FALSE(has(text, "threshold 0.000000"));
   CHECK(has(text, "1e-09"));
+}
+
+TEST_CASE("describe(Failure, causes): a failure leads with the first cause that explains it") {
+  Model model;
+  Failure f;
+  f.kind = Failure::Kind::energy_balance;
+  f.t = 2.7;
+  f.since = 1.2;
+  f.value = 0.06;
+  f.limit = 0.03;
+  f.flow = 26;
+  const std::string own = describe(model, f);
+  REQUIRE(own.starts_with("invalid run: the energy balance is off"));
+  const FailureCause saturation{"motor 1 is at its limit", 0.0, {Failure::Kind::elbow_not_resting}};
+  const FailureCause singular{"the hand task passes near a singular pose at t = 1.2 s",
+                              1.15,
+                              {Failure::Kind::diverged, Failure::Kind::energy_balance}};
+  const FailureCause later{"something after it", 1.3, {Failure::Kind::energy_balance}};
+  // The cause of another kind is passed over; the one that explains it leads,
+  // the failure's own message (without its label) follows.
+  const std::string led = describe(model, f, {saturation, singular});
+  MESSAGE(led);
+  CHECK(led == singular.clause + "; likely as a result, " +
+                   own.substr(std::string("invalid run: ").size()));
+  // A condition that began after the balance went off explains nothing
+  // (energy balance: from `since`; other kinds: from t).
+  CHECK(describe(model, f, {later}) == own);
+  CHECK(describe(model, f, {later, singular}).starts_with(singular.clause));
+  f.since = std::nan("");
+  CHECK(describe(model, f, {later}).starts_with(later.clause));
+  // Nothing to explain: no failure, no cause.
+  CHECK(describe(model, Failure{}, {singular}).empty());
+  CHECK(describe(model, f, {}) == describe(model, f));
 }

@@ -6,9 +6,10 @@
 #include <cmath>
 
 #include "engine/contact/collision.hpp"
+#include "engine/run/fixed_step_stability.hpp"
+#include "engine/run/simulator.hpp"
 #include "engine/run/state_layout.hpp"
 #include "engine/run/step.hpp"
-#include "engine/run/simulator.hpp"
 #include "engine/run/validity.hpp"
 #include "support/experiment_scenes.hpp"
 #include "support/recordings.hpp"
@@ -159,7 +160,7 @@ TEST_CASE("planned rest: an elbow resting less than validity.rest_share of the r
   CHECK_FALSE(data.failure);
 }
 
-TEST_CASE("stable_step_estimate: 2.785 / ((D + Km^2 / R) / J) for one joint with a motor (RK4)") {
+TEST_CASE("stable_step_estimate: a fixed step's limit on the linearised motor-arm system") {
   // One link turning about a vertical axis (no gravity torque): J = I_zz + Jm.
   Model m = planar_arm({{0.5, 1.0, 0.25, 0.02}});
   m.effects.motor = MotorModel::full;
@@ -171,7 +172,22 @@ TEST_CASE("stable_step_estimate: 2.785 / ((D + Km^2 / R) / J) for one joint with
   reset(m, data);
   const double J = m.links[0].inertia(1, 1) + m.links[0].mass * 0.25 * 0.25 + m.motors[0].jm();
   const double D = m.viscous[0] + m.km[0] * m.km[0] / m.resistance[0];
-  CHECK(stable_step_estimate(m, data) == doctest::Approx(2.785 * J / D).epsilon(1e-9));
+  const double rk4 = stable_step_estimate(m, data);
+  CHECK(rk4 == stable_step_limit(IntegratorKind::rk4, linearise_arm(m, nullptr, data.q), 1e-3));
+  // At its ~0.1 s the electrics are stiff (h R / L ~ 430): ETDRK4's limit is
+  // h D / J ~ 1.47 there (engine/MODEL.md, Stability of the fixed steps;
+  // measured 1.53 with the 4.5 % of D that is mechanical damping), not
+  // classical RK4's 2.785 the estimate used to assume (runs on both sides of
+  // such a limit: test_fixed_step_stability.cpp).
+  MESSAGE("rk4 limit x D / J = ", rk4 * D / J);
+  CHECK(rk4 * D / J > 1.45);
+  CHECK(rk4 * D / J < 1.60);
   m.options.integrator = IntegratorKind::euler;
+  const double euler = stable_step_estimate(m, data);
+  MESSAGE("euler limit x D / J = ", euler * D / J);
+  CHECK(euler * D / J > 0.95);
+  CHECK(euler * D / J < 1.05);
+  // The adaptive integrators keep the rate estimate: 2 over the damped rate.
+  m.options.integrator = IntegratorKind::dopri5;
   CHECK(stable_step_estimate(m, data) == doctest::Approx(2.0 * J / D).epsilon(1e-9));
 }

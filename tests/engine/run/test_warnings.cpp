@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "engine/contact/primitives.hpp"
+#include "engine/run/fixed_step_stability.hpp"
 #include "engine/run/simulator.hpp"
 #include "engine/run/warnings.hpp"
 #include "support/experiment_scenes.hpp"
@@ -160,6 +161,9 @@ TEST_CASE(
   };
   const std::string w = stiffness(arm(IntegratorKind::rk4, 1e-6));  // L/R = 1 us against 1 ms
   CHECK(w.find("motor 0's electrical time constant L/R = 1e-06 s") == 0);
+  CHECK(w.find("the rk4 integrator is stable there on the motor-arm system linearised at "
+               "initial.q") != std::string::npos);
+  CHECK(w.find("only first-order accurate") != std::string::npos);
   CHECK(w.find("ros34pw2") != std::string::npos);
   CHECK(stiffness(arm(IntegratorKind::rk4, 5e-4)).empty());       // 0.5 ms: resolved enough
   CHECK(stiffness(arm(IntegratorKind::ros34pw2, 1e-6)).empty());  // adaptive: its own error control
@@ -168,4 +172,32 @@ TEST_CASE(
   bool carried = false;
   for (const std::string& x : r.warnings) carried = carried || x == w;
   CHECK(carried);
+}
+
+TEST_CASE(
+    "stiffness warning: beyond the fixed step's stability limit it says unstable, never stable") {
+  Model m = driven_arm(IntegratorKind::rk4, 1e-3, 5.0, 1e-6);
+  for (Motor& motor : m.motors) motor.resistance = 1.0;
+  finalize(m);
+  const double limit =
+      stable_step_limit(IntegratorKind::rk4, linearise_arm(m, nullptr, m.initial.q), 1e-3);
+  m.options.step = 1.2 * limit;
+  finalize(m);
+  const std::vector<std::string> said = stiffness_warnings(m);
+  REQUIRE(said.size() == 1);
+  MESSAGE(said[0]);
+  CHECK(said[0].starts_with("the rk4 integrator is unstable at the step"));
+  CHECK(contains(said[0], "stable up to a step of about"));
+  CHECK(contains(said[0], "L/R = 1e-06 s is under a tenth of the step"));
+  CHECK(contains(said[0], "use simulation.integrator: ros34pw2"));
+  CHECK_FALSE(contains(said[0], "stable there"));
+  // And it is: the run diverges, its failure led by the same clause.
+  const RunResult r = simulate(m, {});
+  CHECK_FALSE(r.completed);
+  CHECK(r.failure.starts_with("the rk4 integrator is unstable at the step"));
+  CHECK(contains(r.failure, "likely as a result, simulation diverged"));
+  // Within the limit it is quiet about stability (the electrics warning aside).
+  m.options.step = 0.5 * limit;
+  finalize(m);
+  for (const std::string& w : stiffness_warnings(m)) CHECK_FALSE(contains(w, "unstable"));
 }
