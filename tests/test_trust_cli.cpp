@@ -165,3 +165,23 @@ TEST_CASE("cli: validate plans and resets as the run does: Painleve's paradox at
   CHECK(has(ok.output, "start      elbow_on: planned and reset at t = 0 as the run does: passes"));
   CHECK(has(ok.output, "start      elbow_off: planned and reset at t = 0 as the run does: passes"));
 }
+
+TEST_CASE("cli: a Monte Carlo study names the draws in which a link rested on the table") {
+  // The PD experiment again, 3 draws: in each, both arms' last links touch the table (the
+  // held-up arm's for almost the whole run).
+  const fs::path dir = elbowsim::testing::scratch("cli", "mc_bodies");
+  const auto out = run_elbowsim("montecarlo " + kExperiment +
+                                " --case task=loops,speed=nominal,elbow=mid --set controller.type=pd"
+                                " --samples 3 --no-report --out " + dir.string());
+  INFO(out.output);
+  REQUIRE(out.exit_code == 0);
+  CHECK(has(out.output, "elbow_off: in 3 of 3 draws a part the scene does not plan to rest lay on the table"));
+  const auto doc = nlohmann::json::parse(slurp(dir / "loops-nominal-mid" / "montecarlo.json"));
+  const auto& off = doc["unplanned_contact"]["elbow_off"];
+  CHECK(off["draws"].size() == 3);
+  CHECK(off["body"] == "link3");
+  CHECK(off["largest_share"].get<double>() > 0.5);
+  const std::string samples = slurp(dir / "loops-nominal-mid" / "samples.csv");
+  CHECK(has(samples, "unplanned_contact_share,unplanned_contact_body,failure"));
+  CHECK(has(samples, ",link3,"));
+}

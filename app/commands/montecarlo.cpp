@@ -14,6 +14,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <set>
 #include <thread>
 
 #include "app/commands/commands.hpp"
@@ -29,7 +30,9 @@
 #include "app/study/paired_verdict.hpp"
 #include "engine/control/inverse_kinematics.hpp"
 #include "engine/run/simulator.hpp"
+#include "engine/run/warnings.hpp"
 #include "report/montecarlo_report.hpp"
+#include "report/quantity.hpp"
 #include "report/study_report.hpp"
 #include "report/statistics.hpp"
 
@@ -58,7 +61,19 @@ struct Sample {
   bool valid = false;
   std::string failure;
   std::map<std::string, double> metrics;
+  UnplannedContact unplanned;  // the part the scene does not plan to rest that rested longest
 };
+
+// The elbows the task holds above the table (the plan's `held`): resting, they
+// are unplanned contact as a link's own solid is.
+std::vector<int> held_elbows(const Scenario& s) {
+  std::vector<int> held;
+  if (s.experiment.task.elbow_clearance <= 0) return held;
+  for (const std::string& name : s.experiment.task.elbows)
+    for (std::size_t k = 0; k < s.model.elbows.size(); ++k)
+      if (s.model.elbows[k].name == name) held.push_back(int(k));
+  return held;
+}
 
 // One variant as the study runs it: its nominal scenario and what its
 // controller believes (the nominal plant, or its controller.model).
@@ -93,6 +108,7 @@ Sample run_one(const Scenario& scenario, const std::shared_ptr<const Model>& bel
     s.failure = r.failure;
     for (const StudiedMetric& k : kMetrics)
       if (const Metric* m = r.metrics.find(k.name)) s.metrics[k.name] = m->values.front();
+    s.unplanned = longest_unplanned_contact(r.metrics, held_elbows(scenario));
   } catch (const PlanError& e) {
     s.failure = std::string("the plan failed: ") + e.what();
   }
@@ -226,7 +242,7 @@ void write_samples_csv(const std::filesystem::path& path, const std::vector<Vari
     for (const UncertainParameter& p : variants.front().nominal.uncertainty.parameters)
       out << "," << p.key;
     for (const StudiedMetric& k : kMetrics) out << "," << k.name << " [" << k.unit << "]";
-    out << ",failure\n";
+    out << ",unplanned_contact_share,unplanned_contact_body,failure\n";
     for (std::size_t d = 0; d < draws.size(); ++d)
       for (std::size_t v = 0; v < variants.size(); ++v) {
         const Sample& s = samples[d][v];
@@ -241,11 +257,46 @@ void write_samples_csv(const std::filesystem::path& path, const std::vector<Vari
           const auto it = s.metrics.find(k.name);
           out << "," << (it == s.metrics.end() ? std::string() : study::exact(it->second));
         }
+        out << "," << study::exact(s.unplanned.share) << "," << s.unplanned.body;
         std::string failure = s.failure;
         std::replace(failure.begin(), failure.end(), '"', '\'');
         out << ",\"" << failure << "\"\n";
       }
   });
+}
+
+// Per variant, the draws in which a part the scene does not plan to rest
+// (a link's own solid, an elbow held up) rested on the table for more than
+// warnings.unplanned_contact_share of the run, into doc["unplanned_contact"];
+// and a verdict line for each variant that has any: those draws compare an
+// arm leaning on that part.
+void unplanned_contact(const std::vector<Variant>& variants, const std::vector<study::Draw>& draws,
+                       const std::vector<std::vector<Sample>>& samples, Json& doc, Json& verdict) {
+  doc["unplanned_contact"] = Json::object();
+  for (std::size_t v = 0; v < variants.size(); ++v) {
+    const double threshold = variants[v].nominal.model.warn.unplanned_contact_share;
+    Json entry{{"threshold", threshold}, {"draws", Json::array()}, {"largest_share", 0.0}, {"body", ""}};
+    std::set<std::string> bodies;
+    for (std::size_t d = 0; d < samples.size(); ++d) {
+      const UnplannedContact& u = samples[d][v].unplanned;
+      if (!(u.share > threshold)) continue;
+      entry["draws"].push_back(draws[d].index);
+      bodies.insert(u.body);
+      if (u.share > entry["largest_share"].get<double>()) entry["largest_share"] = u.share, entry["body"] = u.body;
+    }
+    const std::string name = variants[v].name.empty() ? "run" : variants[v].name;
+    doc["unplanned_contact"][name] = entry;
+    if (entry["draws"].empty()) continue;
+    std::string names;
+    for (const std::string& b : bodies) names += (names.empty() ? "" : ", ") + b;
+    verdict.push_back(name + ": in " + std::to_string(entry["draws"].size()) + " of " +
+                      std::to_string(samples.size()) + " draws a part the scene does not plan to "
+                      "rest lay on the table for more than " + report::percent(threshold) +
+                      " of the run (" + names + "; up to " +
+                      report::percent(entry["largest_share"].get<double>()) +
+                      "): those draws compare an arm leaning on it (montecarlo.json "
+                      "unplanned_contact lists them)");
+  }
 }
 
 // One variant's metric over its valid draws (`from`: the draw of each value):
@@ -380,6 +431,7 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
       for (const Json& line : pairs.back()["verdict"]) verdict.push_back(line);
     }
   if (variants.size() < 2) verdict.push_back("one variant: nothing to compare (distributions only)");
+  unplanned_contact(variants, draws, samples, doc, verdict);
   doc["pairs"] = pairs;
   doc["invalid"] = invalid;
   doc["verdict"] = verdict;

@@ -127,6 +127,25 @@ std::vector<std::string> lift_off_warnings(const Model& model, const ContactGeom
   return out;
 }
 
+namespace {
+
+// A link's own solid, or an elbow the task holds above the table.
+bool unplanned(const Metrics& metrics, std::size_t b, const std::vector<int>& held) {
+  return metrics.body_links[b] >= 0 || std::find(held.begin(), held.end(), int(b)) != held.end();
+}
+
+}  // namespace
+
+UnplannedContact longest_unplanned_contact(const Metrics& metrics, const std::vector<int>& held) {
+  UnplannedContact out;
+  const Metric* share = metrics.find("body_rest_fraction");
+  if (!share) return out;
+  for (std::size_t b = 0; b < metrics.bodies.size(); ++b)
+    if (unplanned(metrics, b, held) && share->values[b] > out.share)
+      out = {share->values[b], metrics.bodies[b]};
+  return out;
+}
+
 std::vector<std::string> unplanned_contact_warnings(const Model& model, const Metrics& metrics,
                                                     const std::vector<int>& held) {
   const Metric* share = metrics.find("body_rest_fraction");
@@ -136,9 +155,8 @@ std::vector<std::string> unplanned_contact_warnings(const Model& model, const Me
   std::vector<std::string> out;
   for (std::size_t b = 0; b < metrics.bodies.size(); ++b) {
     const int link = metrics.body_links[b];
-    const bool held_elbow =
-        link < 0 && std::find(held.begin(), held.end(), int(b)) != held.end();
-    if ((link < 0 && !held_elbow) || !(share->values[b] > model.warn.unplanned_contact_share))
+    const bool held_elbow = link < 0 && unplanned(metrics, b, held);
+    if (!unplanned(metrics, b, held) || !(share->values[b] > model.warn.unplanned_contact_share))
       continue;
     const std::string what =
         held_elbow ? "elbow '" + metrics.bodies[b] + "', which the task holds above the table,"

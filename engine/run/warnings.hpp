@@ -49,6 +49,14 @@ std::vector<std::string> lift_off_warnings(const Model& model, const ContactGeom
 std::vector<std::string> unplanned_contact_warnings(const Model& model, const Metrics& metrics,
                                                     const std::vector<int>& held);
 
+// Of those bodies, the one that rested longest, and its share of the run (0
+// and "" when none rested): what a Monte Carlo study records per draw.
+struct UnplannedContact {
+  double share = 0;
+  std::string body;
+};
+UnplannedContact longest_unplanned_contact(const Metrics& metrics, const std::vector<int>& held);
+
 // One sentence when the hand was farther than warn.hand_error from its
 // desired point at some recorded sample (a task), with when and the RMS.
 std::vector<std::string> hand_error_warnings(const Model& model, const Recording& recording);
