@@ -1,0 +1,30 @@
+#!/bin/bash
+# Where the claim fails: the experiment's nominal case (loops in 4 s, elbow
+# 40 cm out) under one change each, 30 draws, each run's montecarlo.json copied
+# here as <name>.json. Run from the repository's root after building:
+#   bash docs/results/claim/run.sh [OUT]      (OUT defaults to runs/claim)
+# then /usr/bin/python3 docs/tables.py rewrites docs/experiment.md's tables.
+set -u
+B=${ELBOWSIM:-build/app/elbowsim}
+S=scenarios/elbow_experiment.yaml
+OUT=${1:-runs/claim}
+C="--case task=loops,speed=nominal,elbow=mid --no-report --jobs 2"
+mkdir -p "$OUT"
+run() {
+  name=$1; shift
+  "$B" montecarlo $S $C --out "$OUT/$name" "$@" > "$OUT/$name.log" 2>&1
+  echo "$name $?"
+  cp "$OUT/$name/loops-nominal-mid/montecarlo.json" "docs/results/claim/$name.json"
+}
+run nothing
+run lower --set 'controller.model={"table.boxes[0].center": [0.65, 0, -0.1008938]}'
+run higher --set 'controller.model={"table.boxes[0].center": [0.65, 0, -0.0988938]}'
+run force60 --set controller.type=force --set controller.desired_force=60
+run force5 --set controller.type=force --set controller.desired_force=5
+run pd --set controller.type=pd
+run jointfriction --set effects.joint_friction=true --set 'joint_friction={coulomb: 0.1, breakaway: 0.15}'
+M='{resistance: 2.0, inductance: 0.5e-3, torque_constant: 0.03, gear_ratio: 100, rotor_inertia: 5.0e-7, gear_friction: 1.0e-6, voltage_limit: 24.0, rated_current: 1.0}'
+run motors20 --set "motors.joints[0]=$M" --set "motors.joints[1]=$M"
+run continuous --set controller.sample_rate=null --set controller.delay=null --set controller.sensors=null
+run nogravity --set effects.gravity=false
+echo ALLDONE
