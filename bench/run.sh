@@ -166,5 +166,5 @@ echo "run.sh: done in $(( $(date +%s) - t0 )) s"
 if ((quick)); then
   echo "run.sh: check the tables with: /usr/bin/python3 bench/tables.py --results ${out#$root/} --print"
 else
-  echo "run.sh: README tables: /usr/bin/python3 bench/tables.py --results ${out#$root/}"
+  echo "run.sh: docs/performance.md tables: /usr/bin/python3 bench/tables.py --results ${out#$root/}"
 fi

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Makes the README's benchmark tables from the JSON results of bench/run.sh.
+"""Makes docs/performance.md's benchmark tables from the JSON results of bench/run.sh.
 
-    /usr/bin/python3 bench/tables.py [--results DIR] [--readme FILE] [--print | --check]
+    /usr/bin/python3 bench/tables.py [--results DIR] [--doc FILE] [--print | --check]
 
 Reads DIR/*.json (default: the only folder under bench/results/, or the one
 whose machine.json is newest), builds one markdown table per marker pair
@@ -10,13 +10,13 @@ whose machine.json is newest), builds one markdown table per marker pair
     ... (replaced) ...
     <!-- /bench:NAME -->
 
-in the README's "## Benchmarks" section (dynamics, constrained, collision,
-render, effects, step), and prints the ratios the README prose talks about so
-they can be checked against it. Google Benchmark numbers are the median of the
+in docs/performance.md (dynamics, constrained, derivative, collision, render,
+effects, step, montecarlo), each pair exactly once, and prints the ratios the
+document's prose talks about so they can be checked against it. Google Benchmark numbers are the median of the
 repetitions, CPU time; the renderer's are the median run's wall-clock fps.
 
-  --print   print the blocks and ratios, leave the README alone
-  --check   exit 1 if the README's blocks differ from what the results give
+  --print   print the blocks and ratios, leave the document alone
+  --check   exit 1 if the document's blocks differ from what the results give
 
 Standard library only.
 """
@@ -362,7 +362,7 @@ def derivative(machine, res, ratios):
             + ["", "Ratios in this run: " + "; ".join(f"{k} {v}" for k, v in r.items()) + "."])
 
 
-# --- README --------------------------------------------------------------------------
+# --- the document -------------------------------------------------------------------
 
 
 def pick_results(arg):
@@ -401,32 +401,24 @@ def build_blocks(folder):
     return machine_doc, blocks, ratios, checks
 
 
-def replace_blocks(text, blocks):
-    start = text.find("\n## Benchmarks\n")
-    if start < 0:
-        sys.exit("tables.py: README has no '## Benchmarks' section")
-    end = text.find("\n## ", start + 1)
-    end = len(text) if end < 0 else end
-    section = text[start:end]
+def replace_blocks(text, blocks, doc):
     for name, lines in blocks.items():
         pattern = re.compile(rf"(<!-- bench:{name} -->\n).*?(<!-- /bench:{name} -->)", re.S)
-        if len(pattern.findall(section)) != 1:
-            sys.exit(f"tables.py: need exactly one <!-- bench:{name} --> ... <!-- /bench:{name} --> "
-                     f"pair in the Benchmarks section")
-        section = pattern.sub(lambda m: m[1] + "\n".join(lines) + "\n" + m[2], section)
-    outside = text[:start] + text[end:]
-    if "<!-- bench:" in outside:
-        sys.exit("tables.py: bench markers outside the Benchmarks section")
-    return text[:start] + section + text[end:]
+        if len(pattern.findall(text)) != 1:
+            sys.exit(f"tables.py: {doc} needs exactly one <!-- bench:{name} --> ... "
+                     f"<!-- /bench:{name} --> pair")
+        text = pattern.sub(lambda m: m[1] + "\n".join(lines) + "\n" + m[2], text)
+    return text
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--results", help="folder with machine.json and <program>.json")
-    ap.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
+    ap.add_argument("--doc", default=os.path.join(ROOT, "docs", "performance.md"),
+                    help="the document to update (default: docs/performance.md)")
     mode = ap.add_mutually_exclusive_group()
-    mode.add_argument("--print", action="store_true", help="print, do not write the README")
-    mode.add_argument("--check", action="store_true", help="exit 1 if the README is out of date")
+    mode.add_argument("--print", action="store_true", help="print, do not write the document")
+    mode.add_argument("--check", action="store_true", help="exit 1 if the document is out of date")
     args = ap.parse_args()
 
     folder = pick_results(args.results)
@@ -437,7 +429,7 @@ def main():
           f"{load_text(machine_doc.get('load_avg_start'))} at the start"
           f"{', ' + load_text(machine_doc['load_avg_end']) + ' at the end' if 'load_avg_end' in machine_doc else ''}"
           f"{', QUICK RUN' if machine_doc.get('protocol', {}).get('quick') else ''})")
-    print("\nratios (what the README prose may quote):")
+    print("\nratios (what the document's prose may quote):")
     for table_name, r in ratios.items():
         for k, v in r.items():
             print(f"  {table_name:12s} {k}: {v}")
@@ -448,21 +440,22 @@ def main():
         for name, lines in blocks.items():
             print(f"\n<!-- bench:{name} -->\n" + "\n".join(lines) + f"\n<!-- /bench:{name} -->")
         return 0
-    with open(args.readme) as f:
+    doc = os.path.relpath(args.doc, ROOT)
+    with open(args.doc) as f:
         text = f.read()
-    new = replace_blocks(text, blocks)
+    new = replace_blocks(text, blocks, doc)
     if args.check:
         if new != text:
-            print(f"\n{args.readme}: benchmark tables differ from {os.path.relpath(folder, ROOT)}")
+            print(f"\n{doc}: benchmark tables differ from {os.path.relpath(folder, ROOT)}")
             return 1
-        print(f"\n{args.readme}: up to date")
+        print(f"\n{doc}: up to date")
         return 0
     if new != text:
-        with open(args.readme, "w") as f:
+        with open(args.doc, "w") as f:
             f.write(new)
-        print(f"\n{os.path.relpath(args.readme, ROOT)}: benchmark tables written")
+        print(f"\n{doc}: benchmark tables written")
     else:
-        print(f"\n{os.path.relpath(args.readme, ROOT)}: already up to date")
+        print(f"\n{doc}: already up to date")
     return 0
 
 
