@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -557,4 +558,44 @@ TEST_CASE("cli: render of a variant's folder draws what run drew (the title name
   INFO(again.output);
   REQUIRE(again.exit_code == 0);
   CHECK(slurp(frames / "frame_00001.png") == drawn);
+}
+
+TEST_CASE("cli: every JSON file a command writes starts with the provenance") {
+  const fs::path dir = scratch("cli", "provenance_json");
+  const std::string quick = " --set simulation.duration=0.1";
+  const std::string uncertain =
+      " --set 'uncertainty={parameters: {\"robot.planar.links[*].mass\": {uniform: 0.1}}}'";
+  const std::string commands[] = {
+      // summary.json, manifest.json per variant; comparison.json
+      "run " + kPendulum + " --no-render --no-check-step --out " + (dir / "run").string() + quick +
+          " --set 'variants={a: {}, b: {\"robot.planar.links[1].mass\": 0.5}}'",
+      // cases.json; case.json, summary.json, manifest.json per case
+      "study " + kPendulum + " --grid simulation.duration=0.1,0.2 --jobs 1 --out " +
+          (dir / "study").string(),
+      // montecarlo.json per case; study.json
+      "montecarlo " + kPendulum + " --samples 2 --jobs 1 --no-report --out " +
+          (dir / "mc").string() + quick + uncertain +
+          " --set 'study={axes: {d: {short: {simulation.duration: 0.1}, long: {}}}}'",
+      // accuracy.json
+      "accuracy " + kPendulum + " --points 2 --repeats 1 --no-alternatives --out " +
+          (dir / "accuracy").string() + quick,
+  };
+  for (const std::string& command : commands) {
+    const Outcome r = run(command);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+  }
+  std::set<std::string> names;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.path().extension() != ".json") continue;
+    CAPTURE(entry.path().string());
+    names.insert(entry.path().filename().string());
+    const auto doc = nlohmann::ordered_json::parse(slurp(entry.path()));
+    REQUIRE(doc.is_object());
+    CHECK(doc.begin().key() == "provenance");
+    CHECK(doc["provenance"] == elbowsim::report::provenance_json());
+  }
+  CHECK(names == std::set<std::string>{"summary.json", "manifest.json", "comparison.json",
+                                       "cases.json", "case.json", "montecarlo.json", "study.json",
+                                       "accuracy.json"});
 }
