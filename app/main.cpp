@@ -8,115 +8,38 @@
 #include <iostream>
 #include <thread>
 
+#include "app/command_line.hpp"
 #include "app/commands/commands.hpp"
+#include "report/provenance.hpp"
 
 namespace {
 
-constexpr const char* kVersion = "0.1.0";
+using elbowsim::cli::CommandSpec;
 
-constexpr const char* kUsage = R"(usage:
-  elbowsim run SCENARIO [--out DIR] [--set key=value ...] [--no-render] [--no-report]
-                       [--expect EXPR ...] [--no-check-step] [--jobs N]
-                                                            simulate, write outputs
-  elbowsim validate SCENARIO [--set key=value ...]          load, check, print the model
-  elbowsim sweep SCENARIO --key KEY --values V1,V2,... [--out DIR] [run options]
-                                                            one run per value of KEY
-  elbowsim render RUN_DIR [--camera VIEW] [--follow hand] [--size WxH] [--fps N]
-                                                            re-render a saved run (no simulation)
-  elbowsim report RUN_DIR [--expect EXPR ...]               rebuild report.html (no simulation)
-  elbowsim compare RUN_DIR RUN_DIR ... [--label L ...] [--out DIR] [--expect EXPR ...]
-                                                            compare saved runs in one report
-  elbowsim montecarlo SCENARIO [--samples N] [--seed S] [--jobs J] [--out DIR] [--set ...]
-                       [--case AXIS=LEVEL,...] [--no-report] draw the uncertain plant N times
-  elbowsim study STUDY [--jobs N] [--shard I/N] [--list] [--case K [--video]] [--slurm] [--k8s]
-                       [--tasks N] [--out DIR] [--set ...]   a study file's cases (a grid or list
-                                                            over keys, optionally x Monte Carlo draws)
-  elbowsim study SCENARIO --grid KEY=V1,V2,... [--grid ...] [--draws N] [--seed S] [study options]
-  elbowsim merge DIR... [--out DIR]                         one table and report of a study's cases
-  elbowsim accuracy SCENARIO [--methods M,...] [--points N] [--repeats R] [--variant V]
-                       [--no-alternatives] [--out DIR] [--set ...]
-                                                            work-precision study: error vs CPU time
-  elbowsim --help | --version
-
-Outputs of run (in output.folder, or DIR): scenario.yaml (as run), trajectory.csv,
-summary.json, events.csv (with contacts), video.mp4 (output.video) and frames/
-(output.frames); --no-render skips the last two. render writes RUN_DIR/video.mp4
-(and frames/ if the scenario asks). VIEW: a preset (front, side, top, three_quarter),
-optionally with fov=DEG ("top,fov=25"), or eye=X,Y,Z,target=X,Y,Z[,up=X,Y,Z][,fov=DEG]
-in metres and degrees; --follow hand keeps the hand at the centre of the view.
-run and report write RUN_DIR/report.html and plots/ (--no-report skips them);
-compare writes report.html, comparison.json and plots/ into DIR (default: compare/
-beside the first run). --expect "energy_final.electrical_in < 120" checks a
-summary.json metric (compare: "A.energy_final.joule < B.energy_final.joule", A and B
-run folder names); README "Expectations" has the language.
-A scenario with variants: runs each into DIR/<variant>/, then DIR/comparison.csv and
-comparison.json; their videos are drawn at once, --jobs N at most (default: the cores
-available), and DIR/compare/video.mp4 shows their frames side by side. sweep writes DIR/KEY=V/ per value and DIR/sweep.csv (DIR default:
-output.folder/sweep). montecarlo draws the scenario's uncertainty: parameters N times
-(default 30), runs every variant on each draw under the nominal controller, and writes
-DIR/samples.csv, montecarlo.json and report.html (DIR default: output.folder/montecarlo);
---jobs defaults to the machine's cores. With a study: section, the same for every case
-(one level of each axis) in DIR/<case>/, plus DIR/study.csv, study.json and report.html;
---case task=loops,speed=fast runs only the cases with those levels.
-study writes DIR/NNN-label/ per case (NNN its index; DIR/cases.json maps folders to keys;
-DIR default: output.folder/<study name>), skips finished cases (DIR/<case>/case.json),
-runs --jobs cases at once as processes, and no videos (--case K --video: that one).
---shard I/N runs cases I-1, I-1+N, ...; --slurm writes DIR/submit.sh (a job array,
-SLURM_ARRAY_TASK_ID picks the shard), --k8s DIR/job.yaml (an Indexed Job). merge writes
-DIR/table.csv (every run, no timings: the same bytes however the cases ran), points.csv
-(means and 95 % intervals over draws) and report.html. scenarios/README.md, "Study files".
-accuracy runs each method (euler, semi_implicit_euler, rk4: steps step/m, m = 1,2,3,4,6,8;
-dopri5, ros34pw2: rtol 1e-3.../1e-2...) against a dopri5 rtol 1e-11 reference and writes
-DIR/work_precision.csv, accuracy.json (with the verdict), report.html and plots/
-(DIR default: output.folder/accuracy).
-Exit codes: 0 ok, 1 I/O error, 2 bad input, 3 run stopped early (outputs kept),
-4 an --expect expression does not hold, 128 + signal (130 Ctrl-C, 143 SIGTERM): interrupted
-(run, sweep: what was recorded is written; montecarlo: the finished cases).
-Scenario keys: scenarios/README.md)";
-
-cxxopts::Options make_options() {
-  cxxopts::Options options("elbowsim", "Robot arms resting their elbows on a table");
-  options.add_options()("h,help", "show help")("version", "show version")(
-      "o,out", "output folder (overrides output.folder)", cxxopts::value<std::string>())(
-      "s,set", "override a scenario key: key.path=value (repeatable)",
-      cxxopts::value<std::vector<std::string>>())("positional", "",
-                                                  cxxopts::value<std::vector<std::string>>())(
-      "no-render", "run: skip output.video and output.frames")("no-report",
-                                                               "run: skip report.html and plots")(
-      "check-step", "run, sweep: the step check (the default; kept for older scripts)")(
-      "no-check-step",
-      "run, sweep: skip the step check (each valid run again, refined: summary.json step_check)")(
-      "expect", "run, report, compare: a check over summary.json metrics (repeatable)",
-      cxxopts::value<std::vector<std::string>>())(
-      "camera", "render: camera preset or eye=..,target=..,fov=..", cxxopts::value<std::string>())(
-      "follow", "render: hand (the camera follows the hand) or none",
-      cxxopts::value<std::string>())("size", "render: WIDTHxHEIGHT", cxxopts::value<std::string>())(
-      "fps", "render: frames per second", cxxopts::value<std::string>())(
-      "key", "sweep: the key path to vary", cxxopts::value<std::string>())(
-      "values", "sweep: its values, comma-separated", cxxopts::value<std::string>())(
-      "samples", "montecarlo: number of draws", cxxopts::value<std::string>())(
-      "seed", "montecarlo: seed of the draws", cxxopts::value<std::string>())(
-      "jobs", "montecarlo: threads; study: processes; run, sweep: variants drawn at once",
-      cxxopts::value<std::string>())(
-      "case", "montecarlo: the study cases to run (axis=level,...)", cxxopts::value<std::string>())(
-      "methods", "accuracy: integrators, comma-separated", cxxopts::value<std::string>())(
-      "points", "accuracy: settings per method", cxxopts::value<std::string>())(
-      "repeats", "accuracy: timings per setting", cxxopts::value<std::string>())(
-      "variant", "accuracy: the one variant to study", cxxopts::value<std::string>())(
-      "no-alternatives", "accuracy: skip the dynamics/solver/event-mode timings")(
-      "grid", "study: KEY=V1,V2,... over a scenario (repeatable)",
-      cxxopts::value<std::vector<std::string>>())(
-      "draws", "study: Monte Carlo draws per point", cxxopts::value<std::string>())(
-      "shard", "study: run shard I of N (I/N)", cxxopts::value<std::string>())(
-      "video", "study: with --case, that case's videos and reports")(
-      "list", "study: print the cases and their state")(
-      "slurm", "study: write DIR/submit.sh (a Slurm job array)")(
-      "k8s", "study: write DIR/job.yaml (a Kubernetes Indexed Job)")(
-      "tasks", "study: shards of --slurm / --k8s", cxxopts::value<std::string>())(
-      "label", "compare: a label per run, in order (repeatable)",
-      cxxopts::value<std::vector<std::string>>());
+// This command's parser: its options only (cli::commands()), its operands as "positional".
+// Unknown options are collected (unmatched()) so that the error can name them.
+cxxopts::Options make_options(const CommandSpec& command) {
+  cxxopts::Options options(std::string("elbowsim ") + command.name);
+  auto add = options.add_options();
+  for (const elbowsim::cli::OptionSpec& o : command.options) {
+    if (!o.value)
+      add(o.names, o.meaning);
+    else if (o.repeatable)
+      add(o.names, o.meaning, cxxopts::value<std::vector<std::string>>());
+    else
+      add(o.names, o.meaning, cxxopts::value<std::string>());
+  }
+  add("positional", "", cxxopts::value<std::vector<std::string>>());
   options.parse_positional({"positional"});
+  options.allow_unrecognised_options();
   return options;
+}
+
+// A usage error: its reason on one line, then where the command's help is (exit 2).
+int usage_error(const std::string& reason, const std::string& command) {
+  std::cerr << "error: " << reason << "\nsee 'elbowsim " << (command.empty() ? "" : command + " ")
+            << "--help'\n";
+  return elbowsim::exit_bad_input;
 }
 
 std::vector<std::string> strings(const cxxopts::ParseResult& parsed, const char* key) {
@@ -146,8 +69,9 @@ bool whole_number(const cxxopts::ParseResult& parsed, const char* command, const
   const std::string text = parsed[key].as<std::string>();
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
   if (ec == std::errc{} && end == text.data() + text.size() && out >= low) return true;
-  std::cerr << "error: " << command << ": --" << key << " needs a whole number >= " << low << " (got \""
-            << text << "\")\n";
+  usage_error(std::string(command) + ": --" + key +
+                  " needs a whole number >= " + std::to_string(low) + " (got \"" + text + "\")",
+              command);
   return false;
 }
 
@@ -184,9 +108,8 @@ int study_arguments(const cxxopts::ParseResult& parsed, const std::string& file)
   return elbowsim::study_command(args);
 }
 
-// Why a command line matched no command: the first thing wrong with it.
+// Why a command's operands are wrong (words: the command, then its operands).
 std::string usage_problem(const std::vector<std::string>& words) {
-  if (words.empty()) return "no command given (run, validate, sweep, render, report, compare, montecarlo, study, merge, accuracy)";
   const std::string& command = words[0];
   const std::string given = std::to_string(words.size() - 1);
   std::string listed;
@@ -203,16 +126,26 @@ std::string usage_problem(const std::vector<std::string>& words) {
   if (command == "compare")
     return "compare needs at least two run folders (got " + given + (listed.empty() ? "" : ":" + listed) +
            "); a scenario with variants: compares them itself (elbowsim run)";
-  return "unknown command '" + command + "'";
+  return command + ": unexpected operands";  // (every command is handled above)
 }
 
-int dispatch(const cxxopts::ParseResult& parsed) {
+// "run has no option --samples (montecarlo and study have it)", for an
+// unrecognised argument ("--samples", "--samples=5", "-x").
+std::string unknown_option(const CommandSpec& command, const std::string& argument) {
+  std::string name = argument.substr(argument.find_first_not_of('-'));
+  name = name.substr(0, name.find('='));
+  const std::string others = elbowsim::cli::commands_with_option(name, command.name);
+  const bool one = others.find(' ') == std::string::npos;
+  return std::string(command.name) + " has no option " + argument.substr(0, argument.find('=')) +
+         (others.empty() ? "" : " (" + others + (one ? " has it)" : " have it)"));
+}
+
+int dispatch(const CommandSpec& spec, const cxxopts::ParseResult& parsed) {
   using namespace elbowsim;
-  if (parsed.count("help")) return std::cout << kUsage << '\n', exit_ok;
-  if (parsed.count("version")) return std::cout << "elbowsim " << kVersion << '\n', exit_ok;
-  const auto words = strings(parsed, "positional");
+  const std::string command = spec.name;
+  std::vector<std::string> words{command};
+  for (const std::string& w : strings(parsed, "positional")) words.push_back(w);
   const auto sets = strings(parsed, "set");
-  const std::string command = words.empty() ? "" : words[0];
   // run, sweep: --jobs bounds the variants drawn at once (0: the cores available).
   long render_jobs = 0;
   if ((command == "run" || command == "sweep") && parsed.count("jobs") &&
@@ -244,11 +177,10 @@ int dispatch(const cxxopts::ParseResult& parsed) {
       if (!parsed.count(key)) continue;
       const std::string text = parsed[key].as<std::string>();
       const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
-      if (ec != std::errc{} || end != text.data() + text.size() || number < 0) {
-        std::cerr << "error: montecarlo: --" << key << " needs a whole number >= 0 (got \"" << text
-                  << "\")\n";
-        return exit_bad_input;
-      }
+      if (ec != std::errc{} || end != text.data() + text.size() || number < 0)
+        return usage_error(std::string("montecarlo: --") + key +
+                               " needs a whole number >= 0 (got \"" + text + "\")",
+                           "montecarlo");
       if (std::string(key) == "samples") args.samples = number;
       if (std::string(key) == "seed") args.seed = static_cast<std::uint64_t>(number);
       if (std::string(key) == "jobs") args.jobs = static_cast<int>(std::min(number, 256L));
@@ -272,11 +204,10 @@ int dispatch(const cxxopts::ParseResult& parsed) {
       const std::string text = parsed[key].as<std::string>();
       long number = 0;
       const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
-      if (ec != std::errc{} || end != text.data() + text.size() || number < 1 || number > 1000) {
-        std::cerr << "error: accuracy: --" << key << " needs a whole number >= 1 (got \"" << text
-                  << "\")\n";
-        return exit_bad_input;
-      }
+      if (ec != std::errc{} || end != text.data() + text.size() || number < 1 || number > 1000)
+        return usage_error(
+            std::string("accuracy: --") + key + " needs a whole number >= 1 (got \"" + text + "\")",
+            "accuracy");
       *target = static_cast<int>(number);
     }
     return accuracy_command(args);
@@ -295,8 +226,7 @@ int dispatch(const cxxopts::ParseResult& parsed) {
     if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
     return compare_command(args);
   }
-  std::cerr << "error: " << usage_problem(words) << "\n\n" << kUsage << '\n';
-  return exit_bad_input;
+  return usage_error(usage_problem(words), command);
 }
 
 }  // namespace
@@ -306,10 +236,28 @@ int main(int argc, char** argv) {
   // lines and stderr's appear in the order they happened (std::cout writes
   // through stdout: synced with stdio).
   std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
+  // --version first and alone: no parser built, nothing loaded (it stays about 3 ms).
+  const std::string first = argc > 1 ? argv[1] : "";
+  if (first == "--version") return std::cout << elbowsim::report::provenance_line() << '\n', 0;
+  if (first == "-h" || first == "--help") return std::cout << elbowsim::cli::overview(), 0;
+  if (argc < 2)
+    return usage_error(
+        "no command given (run, validate, sweep, render, report, compare, montecarlo, study, "
+        "merge, accuracy)",
+        "");
+  if (first.starts_with('-'))
+    return usage_error("the command comes first: elbowsim COMMAND ... (got '" + first + "' first)",
+                       "");
+  const CommandSpec* command = elbowsim::cli::find_command(first);
+  if (!command) return usage_error("unknown command '" + first + "'", "");
   try {
-    return dispatch(make_options().parse(argc, argv));
+    // The command's own arguments: cxxopts skips argv[0], here the command's name.
+    const cxxopts::ParseResult parsed = make_options(*command).parse(argc - 1, argv + 1);
+    if (parsed.count("help")) return std::cout << elbowsim::cli::help(*command), 0;
+    if (!parsed.unmatched().empty())
+      return usage_error(unknown_option(*command, parsed.unmatched().front()), command->name);
+    return dispatch(*command, parsed);
   } catch (const cxxopts::exceptions::exception& e) {
-    std::cerr << "error: " << e.what() << "\n" << kUsage << '\n';
-    return elbowsim::exit_bad_input;
+    return usage_error(std::string(command->name) + ": " + e.what(), command->name);
   }
 }

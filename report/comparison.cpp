@@ -7,6 +7,7 @@
 
 #include "report/headline.hpp"
 #include "report/metrics.hpp"
+#include "report/provenance.hpp"
 #include "report/quantity.hpp"
 
 namespace elbowsim::report {
@@ -267,6 +268,7 @@ Comparison compare_runs(const std::vector<RunData>& runs) {
 nlohmann::ordered_json comparison_json(const Comparison& c) {
   using Json = nlohmann::ordered_json;
   Json j;
+  j["provenance"] = provenance_json();
   j["runs"] = c.labels;
   j["reference"] = c.labels.empty() ? "" : c.labels[0];
   for (const char* key : {"folder", "completed", "valid", "failure"}) j[key] = Json::object();

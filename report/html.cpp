@@ -7,6 +7,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "report/provenance.hpp"
+
 namespace elbowsim::report::html {
 
 namespace {
@@ -44,6 +46,8 @@ td.same { color: #777; }
 .status-valid { color: #2d7a3e; font-weight: bold; }
 .status-invalid { color: #b03a2e; font-weight: bold; }
 ul.notes li { margin: 0.25em 0; }
+footer.provenance { color: #777; font-size: 0.85em; margin-top: 2.5em; border-top: 1px solid #ddd;
+                    padding-top: 0.4em; }
 )";
 
 }  // namespace
@@ -99,7 +103,11 @@ std::string page_begin(const std::string& title) {
          escape(title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
 }
 
-std::string page_end() { return "</body>\n</html>\n"; }
+// The footer names the program that wrote the page (a run's own is in its summary.json).
+std::string page_end() {
+  return "<footer class=\"provenance\">This page was written by " + escape(provenance_line()) +
+         ".</footer>\n</body>\n</html>\n";
+}
 
 std::string notice(const std::string& css_class, const std::string& heading,
                    const std::vector<std::string>& items, const std::string& id,

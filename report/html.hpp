@@ -22,7 +22,8 @@ std::string display_value(const nlohmann::ordered_json& value);
 // A metric exactly (for data-value attributes): round-trip digits.
 std::string exact_value(const nlohmann::ordered_json& value);
 
-// <!DOCTYPE html> ... <body>, with the shared style sheet.
+// <!DOCTYPE html> ... <body>, with the shared style sheet; page_end: the footer
+// naming the program that wrote the page (report/provenance.hpp), </body></html>.
 std::string page_begin(const std::string& title);
 std::string page_end();
 

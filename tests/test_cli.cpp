@@ -2,16 +2,20 @@
 #include <doctest/doctest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "app/output/folder_lock.hpp"
+#include "report/provenance.hpp"
 #include "support/process.hpp"
 #include "support/scratch.hpp"
 
@@ -29,31 +33,171 @@ const std::string kPendulum = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/two
 
 }  // namespace
 
-TEST_CASE("cli: --help and --version exit 0; unknown command exits 2") {
-  CHECK(run("--version").output.find("elbowsim ") != std::string::npos);
-  CHECK(run("--help").exit_code == 0);
-  const Outcome bad = run("frobnicate x");
-  CHECK(bad.exit_code == 2);
-  CHECK(bad.output.find("usage:") != std::string::npos);
+namespace {
+
+// The lines of `text` (without their '\n').
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
 }
 
-TEST_CASE("cli: every usage error says why before the usage text (exit 2)") {
+// What the elbowsim binary says it is: its --version line, e.g. "elbowsim 0.1.0 (commit
+// 0ae1fb498ed1, Release build, GNU 12.2.0)", and that as the "provenance" object of the
+// JSON files it writes (null when the line is not of that form). Taken from the binary,
+// not from this test program: after a commit, a build of elbowsim alone has the new
+// commit and this program the old one.
+struct BinaryProvenance {
+  std::string line;
+  nlohmann::ordered_json json;
+};
+
+BinaryProvenance binary_provenance() {
+  BinaryProvenance b{run("--version").output, nullptr};
+  if (b.line.empty() || b.line.back() != '\n') return b;
+  b.line.pop_back();
+  const std::string text = b.line;
+  const std::size_t commit = text.find(" (commit "), build = text.find(" build, ", commit),
+                    comma = text.rfind(", ", build);
+  if (text.rfind("elbowsim ", 0) != 0 || commit == std::string::npos ||
+      build == std::string::npos || comma == std::string::npos || comma < commit ||
+      text.back() != ')')
+    return b;
+  b.json = {{"program", "elbowsim"},
+            {"version", text.substr(9, commit - 9)},
+            {"commit", text.substr(commit + 9, comma - commit - 9)},
+            {"build_type", text.substr(comma + 2, build - comma - 2)},
+            {"compiler", text.substr(build + 8, text.size() - build - 9)}};
+  return b;
+}
+
+const char* const kCommands[] = {"run",     "validate",   "sweep", "render", "report",
+                                 "compare", "montecarlo", "study", "merge",  "accuracy"};
+
+}  // namespace
+
+TEST_CASE(
+    "cli: --help lists the commands; --version prints version and commit; bad command exits 2") {
+  const Outcome help = run("--help");
+  CHECK(help.exit_code == 0);
+  for (const char* command : kCommands) {  // one line each
+    CAPTURE(command);
+    CHECK(help.output.find(std::string("\n  ") + command + " ") != std::string::npos);
+  }
+  CHECK(help.output.find("elbowsim COMMAND --help") != std::string::npos);
+  CHECK(help.output.find("--no-render") == std::string::npos);  // no command's options
+  // --version: version, commit, build type and compiler, one line.
+  CHECK(run("--version").exit_code == 0);
+  const BinaryProvenance binary = binary_provenance();
+  INFO(binary.line);
+  REQUIRE(binary.json.is_object());
+  const elbowsim::report::Provenance& p = elbowsim::report::provenance();  // this build's
+  CHECK(binary.json["version"] == p.version);
+  CHECK(binary.json["build_type"] == p.build_type);
+  CHECK(binary.json["compiler"] == p.compiler);
+  // The commit: 12 hex digits (and -dirty), or unknown; one of the source's history when
+  // the source is a git checkout.
+  const std::string commit = binary.json["commit"].get<std::string>();
+  const std::string hex = commit.substr(0, commit.find('-'));
+  CHECK((commit == "unknown" ||
+         (hex.size() == 12 && hex.find_first_not_of("0123456789abcdef") == std::string::npos &&
+          (commit == hex || commit == hex + "-dirty"))));
+  const std::string git = "git -C " + std::string(ELBOWSIM_SOURCE_DIR);
+  if (elbowsim::testing::shell(git + " rev-parse --show-toplevel").output ==
+      fs::canonical(ELBOWSIM_SOURCE_DIR).string() + "\n") {
+    CHECK(commit != "unknown");
+    CHECK(elbowsim::testing::shell(git + " cat-file -e " + hex + "^{commit}").exit_code == 0);
+  }
+  const Outcome bad = run("frobnicate x");
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.output == "error: unknown command 'frobnicate'\nsee 'elbowsim --help'\n");
+}
+
+TEST_CASE("cli: each command's --help shows its own options only; run's and montecarlo's differ") {
+  std::map<std::string, std::string> helps;
+  for (const char* command : kCommands) {
+    CAPTURE(command);
+    const Outcome r = run(std::string(command) + " --help");
+    CHECK(r.exit_code == 0);
+    CHECK(r.output.find(std::string("usage: elbowsim ") + command + " ") != std::string::npos);
+    CHECK(r.output.find("Exit") != std::string::npos);  // its exit codes, or the notes end early
+    for (const std::string& line : lines_of(r.output)) CHECK(line.size() <= 100);
+    helps[command] = r.output;
+  }
+  const std::string &run_help = helps["run"], &montecarlo_help = helps["montecarlo"];
+  CHECK(run_help != montecarlo_help);
+  for (const char* own : {"--no-render", "--no-check-step", "--expect EXPR", "--jobs N"})
+    CHECK(run_help.find(own) != std::string::npos);
+  for (const char* other : {"--samples", "--seed", "--case", "--grid", "--camera", "--label"})
+    CHECK(run_help.find(other) == std::string::npos);
+  for (const char* own : {"--samples N", "--seed S", "--case", "--no-report"})
+    CHECK(montecarlo_help.find(own) != std::string::npos);
+  for (const char* other : {"--no-render", "--expect", "--check-step", "--grid", "--methods"})
+    CHECK(montecarlo_help.find(other) == std::string::npos);
+  // What help says the command takes, its parser takes, and no other option.
+  CHECK(run("montecarlo x.yaml --no-render")
+            .output.find("error: montecarlo has no option --no-render (run and sweep have it)\n") ==
+        0);
+  CHECK(run("validate " + kPendulum + " --set simulation.duration=0.1").exit_code == 0);
+}
+
+TEST_CASE("cli: a usage error says why in one line, then where the help is (exit 2)") {
   const std::pair<const char*, const char*> cases[] = {
       {"", "error: no command given"},
       {"frobnicate x", "error: unknown command 'frobnicate'"},
+      {"--out x run y.yaml", "error: the command comes first"},
       {"run", "error: run takes exactly one SCENARIO (got 0)"},
       {"run a.yaml b.yaml", "error: run takes exactly one SCENARIO (got 2: 'a.yaml' 'b.yaml')"},
+      {"run a.yaml --samples 3", "error: run has no option --samples (montecarlo has it)"},
+      {"run a.yaml --out", "error: run: "},
       {"report", "error: report takes exactly one RUN_DIR (got 0)"},
+      {"report d --key k", "error: report has no option --key (sweep has it)"},
       {"sweep s.yaml --key task.duration", "error: sweep needs both --key KEY and --values"},
       {"compare runs/a", "error: compare needs at least two run folders (got 1: 'runs/a')"},
+      {"montecarlo s.yaml --samples x", "error: montecarlo: --samples needs a whole number"},
+      {"study s.yaml --jobs 0", "error: study: --jobs needs a whole number >= 1"},
   };
   for (const auto& [arguments, reason] : cases) {
     CAPTURE(arguments);
     const Outcome r = run(arguments);
     CHECK(r.exit_code == 2);
     CHECK(r.output.find(reason) == 0);
-    CHECK(r.output.find("usage:") != std::string::npos);
+    const std::vector<std::string> lines = lines_of(r.output);
+    CHECK(lines.size() <= 3);
+    REQUIRE(lines.size() >= 2);
+    const std::string command = std::string(arguments).substr(0, std::string(arguments).find(' '));
+    const bool known =
+        std::find(std::begin(kCommands), std::end(kCommands), command) != std::end(kCommands);
+    CHECK(lines.back() == "see 'elbowsim " + (known ? command + " " : std::string()) + "--help'");
   }
+}
+
+TEST_CASE("cli: summary.json, montecarlo.json and the reports name the program that wrote them") {
+  const fs::path dir = scratch("cli", "provenance");
+  const BinaryProvenance binary = binary_provenance();  // --version: tested above
+  const nlohmann::ordered_json& expected = binary.json;
+  REQUIRE(expected.is_object());
+
+  const Outcome r = run("run " + kPendulum + " --out " + (dir / "run").string() +
+                        " --no-render --no-check-step --set simulation.duration=0.1");
+  REQUIRE(r.exit_code == 0);
+  const auto summary = nlohmann::ordered_json::parse(slurp(dir / "run" / "summary.json"));
+  CHECK(summary.begin().key() == "provenance");  // first: tests/golden/golden.sh drops it
+  CHECK(summary["provenance"] == expected);
+  const std::string footer =
+      "<footer class=\"provenance\">This page was written by " + binary.line + ".</footer>";
+  CHECK(slurp(dir / "run" / "report.html").find(footer) != std::string::npos);
+
+  const Outcome mc =
+      run("montecarlo " + kPendulum + " --samples 2 --jobs 1 --out " + (dir / "mc").string() +
+          " --set simulation.duration=0.2 --set 'uncertainty={parameters: "
+          "{\"robot.planar.links[*].mass\": {uniform: 0.1}}}'");
+  INFO(mc.output);
+  REQUIRE(mc.exit_code == 0);
+  const auto doc = nlohmann::ordered_json::parse(slurp(dir / "mc" / "montecarlo.json"));
+  CHECK(doc["provenance"] == expected);
+  CHECK(slurp(dir / "mc" / "report.html").find(footer) != std::string::npos);
 }
 
 TEST_CASE("cli: --expect naming a metric that is not there fails before simulating, with the nearest path") {
@@ -441,4 +585,46 @@ TEST_CASE("cli: render of a variant's folder draws what run drew (the title name
   INFO(again.output);
   REQUIRE(again.exit_code == 0);
   CHECK(slurp(frames / "frame_00001.png") == drawn);
+}
+
+TEST_CASE("cli: every JSON file a command writes starts with the provenance") {
+  const fs::path dir = scratch("cli", "provenance_json");
+  const nlohmann::ordered_json expected = binary_provenance().json;
+  REQUIRE(expected.is_object());
+  const std::string quick = " --set simulation.duration=0.1";
+  const std::string uncertain =
+      " --set 'uncertainty={parameters: {\"robot.planar.links[*].mass\": {uniform: 0.1}}}'";
+  const std::string commands[] = {
+      // summary.json, manifest.json per variant; comparison.json
+      "run " + kPendulum + " --no-render --no-check-step --out " + (dir / "run").string() + quick +
+          " --set 'variants={a: {}, b: {\"robot.planar.links[1].mass\": 0.5}}'",
+      // cases.json; case.json, summary.json, manifest.json per case
+      "study " + kPendulum + " --grid simulation.duration=0.1,0.2 --jobs 1 --out " +
+          (dir / "study").string(),
+      // montecarlo.json per case; study.json
+      "montecarlo " + kPendulum + " --samples 2 --jobs 1 --no-report --out " +
+          (dir / "mc").string() + quick + uncertain +
+          " --set 'study={axes: {d: {short: {simulation.duration: 0.1}, long: {}}}}'",
+      // accuracy.json
+      "accuracy " + kPendulum + " --points 2 --repeats 1 --no-alternatives --out " +
+          (dir / "accuracy").string() + quick,
+  };
+  for (const std::string& command : commands) {
+    const Outcome r = run(command);
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+  }
+  std::set<std::string> names;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.path().extension() != ".json") continue;
+    CAPTURE(entry.path().string());
+    names.insert(entry.path().filename().string());
+    const auto doc = nlohmann::ordered_json::parse(slurp(entry.path()));
+    REQUIRE(doc.is_object());
+    CHECK(doc.begin().key() == "provenance");
+    CHECK(doc["provenance"] == expected);
+  }
+  CHECK(names == std::set<std::string>{"summary.json", "manifest.json", "comparison.json",
+                                       "cases.json", "case.json", "montecarlo.json", "study.json",
+                                       "accuracy.json"});
 }

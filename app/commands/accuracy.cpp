@@ -14,6 +14,7 @@
 #include "app/scenario/scenario.hpp"
 #include "app/study/work_precision.hpp"
 #include "report/accuracy_report.hpp"
+#include "report/provenance.hpp"
 
 namespace elbowsim {
 
@@ -96,6 +97,7 @@ int accuracy_command(const AccuracyArguments& args) {
     options.stop = &interrupt_flag();
     options.progress = [](const std::string& line) { std::cerr << "accuracy: " << line << '\n'; };
     Json doc;
+    doc["provenance"] = report::provenance_json();
     doc["scenario"] = scenarios.front().file;
     doc["studies"] = Json::array();
     for (const Scenario& s : scenarios) {

@@ -32,6 +32,7 @@
 #include "engine/run/simulator.hpp"
 #include "engine/run/warnings.hpp"
 #include "report/montecarlo_report.hpp"
+#include "report/provenance.hpp"
 #include "report/quantity.hpp"
 #include "report/study_report.hpp"
 #include "report/statistics.hpp"
@@ -371,6 +372,7 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
   write_samples_csv(plan.folder / "samples.csv", variants, draws, samples);
 
   Json doc;
+  doc["provenance"] = report::provenance_json();
   doc["scenario"] = base.model.name;
   doc["file"] = args.scenario;
   if (!plan.study_case.name.empty()) {

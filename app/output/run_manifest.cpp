@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "app/output/atomic_file.hpp"
+#include "report/provenance.hpp"
 
 namespace elbowsim {
 
@@ -16,6 +17,7 @@ const std::vector<std::string>& derived_artefacts() {
 
 std::string manifest_text(const std::vector<std::string>& files) {
   nlohmann::ordered_json j;
+  j["provenance"] = report::provenance_json();  // of the last program to write this list
   j["written_by"] = "elbowsim run";
   j["files"] = files;
   return j.dump(2) + "\n";

@@ -7,6 +7,7 @@
 #include "engine/dynamics/energy.hpp"
 #include "engine/run/recorder.hpp"
 #include "report/metrics.hpp"
+#include "report/provenance.hpp"
 
 namespace elbowsim {
 
@@ -164,6 +165,7 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   const Model& m = scenario.model;
   const double e_in = result.energy_final.electrical_in;
   nlohmann::ordered_json j;
+  j["provenance"] = report::provenance_json();  // first: tests/golden/golden.sh drops this block
   j["scenario"] = m.name;
   if (!scenario.variant.empty()) j["variant"] = scenario.variant;  // `render` titles frames by it
   j["description"] = scenario.description;

@@ -4,6 +4,7 @@
 
 #include "app/output/atomic_file.hpp"
 #include "app/output/run_manifest.hpp"
+#include "report/provenance.hpp"
 
 namespace elbowsim::study {
 
@@ -31,7 +32,10 @@ std::filesystem::path run_folder(const std::filesystem::path& case_folder, const
 }
 
 void write_case_record(const std::filesystem::path& case_folder, const CaseRecord& r) {
-  Json doc{{"index", r.index}, {"folder", r.folder}, {"status", r.status}};
+  Json doc{{"provenance", report::provenance_json()},
+           {"index", r.index},
+           {"folder", r.folder},
+           {"status", r.status}};
   Json runs = Json::array(), failures = Json::array();
   for (const std::string& v : r.variants) runs.push_back({{"variant", v}, {"folder", v}});
   for (const auto& [variant, reason] : r.failures) failures.push_back({{"variant", variant}, {"reason", reason}});

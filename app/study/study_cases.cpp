@@ -4,6 +4,8 @@
 #include <cctype>
 #include <map>
 
+#include "report/provenance.hpp"
+
 namespace elbowsim::study {
 
 namespace {
@@ -124,6 +126,7 @@ bool in_shard(long index, int shard, int shards) { return index % shards == shar
 nlohmann::ordered_json cases_manifest(const StudyDesign& d, const std::vector<CaseSpec>& cases,
                                       const std::vector<std::string>& variants, std::uint64_t seed) {
   nlohmann::ordered_json doc;
+  doc["provenance"] = report::provenance_json();  // of the process that wrote it first
   doc["study"] = d.name;
   doc["scenario"] = d.scenario;
   doc["set"] = d.sets;

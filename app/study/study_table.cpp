@@ -7,6 +7,7 @@
 #include "app/output/atomic_file.hpp"
 #include "app/study/draws.hpp"
 #include "app/study/paired_verdict.hpp"
+#include "report/provenance.hpp"
 
 namespace elbowsim::study {
 
@@ -74,6 +75,7 @@ std::string draw_list(const Json& draws) {
 Json study_document(const Scenario& base, const std::string& file, const std::vector<StudyCase>& cases,
                     const std::vector<Json>& case_docs) {
   Json doc;
+  doc["provenance"] = report::provenance_json();
   doc["scenario"] = base.model.name;
   doc["file"] = file;
   if (!case_docs.empty()) {

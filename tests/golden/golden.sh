@@ -7,9 +7,10 @@
 #   bash tests/golden/golden.sh BUILD/app/elbowsim . WORKDIR --update   # rewrite hashes.txt
 #
 # Hashed per run folder (and per variant folder): trajectory.csv, events.csv,
-# scenario.yaml and summary.json without its wall_seconds line (the only
-# field that is not a result). comparison.* are left out: they are made from
-# the summaries and carry wall times.
+# scenario.yaml and summary.json without its wall_seconds line and its
+# "provenance" block (the program's version, commit, build type, compiler:
+# the fields that are not results). comparison.* are left out: they are made
+# from the summaries and carry wall times.
 #
 # Bit-identical floating point holds on one platform: the same glibc libm
 # (which picks FMA code paths by CPU) and the same build. hashes.txt records
@@ -33,6 +34,10 @@ fingerprint() {
   } | sha256sum | cut -c1-16
 }
 
+without_provenance() {  # summary.json less its top-level "provenance": { ... } block
+  awk '/^  "provenance": \{$/ { skip = 1; next } skip { if (/^  \},?$/) skip = 0; next } { print }' "$1"
+}
+
 hash_folder() {  # one line per folder holding a run: relative path and hash
   local root=$1
   find "$root" -name summary.json -printf '%h\n' | sort | while read -r dir; do
@@ -41,7 +46,7 @@ hash_folder() {  # one line per folder holding a run: relative path and hash
         [ -f "$dir/$f" ] && { echo "== $f"; cat "$dir/$f"; }
       done
       echo "== summary.json"
-      grep -v '"wall_seconds"' "$dir/summary.json"
+      without_provenance "$dir/summary.json" | grep -v '"wall_seconds"'
     } | sha256sum | cut -c1-64
   done | sha256sum | cut -c1-64
 }
