@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 #include "support/models.hpp"
 
 namespace elbowsim::bench {

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

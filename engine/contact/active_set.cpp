@@ -11,7 +11,7 @@
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/motor.hpp"
 #include "engine/dynamics/walker_orin.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

@@ -18,8 +18,8 @@
 #include "engine/run/derivative.hpp"
 #include "engine/run/integrator.hpp"
 #include "engine/run/joint_stick_slip.hpp"
-#include "engine/run/state_layout.hpp"
 #include "engine/run/validity.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

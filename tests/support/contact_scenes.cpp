@@ -11,7 +11,7 @@
 #include "engine/run/derivative.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/rnea.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim::testing {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "engine/run/derivative.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 #include "support/allocations.hpp"
 #include "support/approx.hpp"
 #include "support/models.hpp"
