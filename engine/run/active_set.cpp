@@ -1,4 +1,4 @@
-#include "engine/contact/active_set.hpp"
+#include "engine/run/active_set.hpp"
 
 #include "engine/contact/constrained_dynamics.hpp"
 #include "engine/contact/constraint_rows.hpp"
