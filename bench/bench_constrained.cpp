@@ -30,7 +30,7 @@ struct Fixture {
   static Model make(int n, int p) {
     Model m = testing::random_chain(n, 4000 + n);
     for (int k = 0; k < p; ++k)
-      m.elbows.push_back({"e" + std::to_string(k), (k + 1) * (n - 1) / p, Eigen::Vector3d(0.1, 0, 0), 0.03});
+      m.elbows.push_back({'e' + std::to_string(k), (k + 1) * (n - 1) / p, Eigen::Vector3d(0.1, 0, 0), 0.03});
     m.table = {TableBox{}};
     m.effects.contact = true;
     finalize(m);

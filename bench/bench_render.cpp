@@ -63,8 +63,9 @@ Recording prototype_recording(const Model& model) {
     row[L.hand(2)] = row[L.hand_desired(2)] = 0.1 + 0.05 * std::cos(2 * t);
     for (int e = 0; e < 3; ++e) {
       const bool rest = std::sin(2 * t + e) > -0.3;
-      row[L.elbow_force(e)] = rest ? 8.0 + 3 * std::sin(3 * t + e) : 0.0;
-      row[L.elbow_resting(e)] = rest ? 1.0 : 0.0;
+      // at(): the layout gives -1 for a column it lacks (here it has them all).
+      row.at(L.elbow_force(e)) = rest ? 8.0 + 3 * std::sin(3 * t + e) : 0.0;
+      row.at(L.elbow_resting(e)) = rest ? 1.0 : 0.0;
     }
     row[L.energy(Energy::in)] = 2.0 * t;
     rec.values.insert(rec.values.end(), row.begin(), row.end());

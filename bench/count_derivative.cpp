@@ -9,8 +9,8 @@
 #include <string>
 
 #include "engine/run/derivative.hpp"
-#include "engine/run/state_layout.hpp"
 #include "derivative_scene.hpp"
+#include "engine/state_layout.hpp"
 
 using namespace elbowsim;
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 #include "support/models.hpp"
 
 namespace elbowsim::bench {
@@ -16,7 +16,7 @@ inline Model derivative_chain(int n, int p, int solver) {
   Model m = testing::random_chain(n, 4000 + n);
   for (int k = 0; k < p; ++k)
     m.elbows.push_back(
-        {"e" + std::to_string(k), (k + 1) * (n - 1) / p, Eigen::Vector3d(0.1, 0, 0), 0.03});
+        {'e' + std::to_string(k), (k + 1) * (n - 1) / p, Eigen::Vector3d(0.1, 0, 0), 0.03});
   m.table = {TableBox{}};
   m.effects.contact = true;
   if (solver >= 0) m.contact.solver = static_cast<ConstraintSolver>(solver);

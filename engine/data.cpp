@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 
@@ -29,8 +29,8 @@ ContactData make_contact_data(const Model& model) {
   // The stick-slip LCP: at most 10 variables per 3 rows (a two-tangent cone: its
   // normal, 8 directions and its slip), 4 per 2 (one tangent).
   const int cones = model.has_coulomb_friction() ? 4 * capacity : 0;
-  return ContactData(std::move(g), model.dof, static_cast<int>(model.table.size()), model.dof,
-                     capacity, cones);
+  return ContactData(std::move(g), static_cast<int>(model.table.size()), model.dof, capacity,
+                     cones);
 }
 
 }  // namespace

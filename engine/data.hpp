@@ -56,7 +56,7 @@ struct Data {
   // --- the model it was made for (check_data) -------------------------------
   long model_id = 0;        // Model::id at construction
   int dof = 0;              // [n]
-  int state_size = 0;       // size of x (run/state_layout.hpp)
+  int state_size = 0;       // size of x (state_layout.hpp)
 
   // --- state -------------------------------------------------------------
   double t = 0;             // [s]
@@ -113,7 +113,7 @@ struct Data {
   Eigen::VectorXd coupling;
 
   // --- integrator state ----------------------------------------------------
-  // x = [q; qd; i (motor: full); energy integrals] (run/state_layout.hpp)
+  // x = [q; qd; i (motor: full); energy integrals] (state_layout.hpp)
   Eigen::VectorXd x, x_start, k1, k2, k3, k4, x_a, x_b, x_c;
   Eigen::ArrayXd lambda;  // stiff linear rates per component of x (derivative.hpp)
   // Exponential-integrator coefficients for one step length h (integrator.cpp):

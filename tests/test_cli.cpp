@@ -318,7 +318,7 @@ TEST_CASE("cli: a folder another run is writing is refused (exit 1, nothing writ
   const std::string out = (dir / "busy").string();
   {
     const elbowsim::FolderLock held(dir / "busy");  // as another run would hold it
-    for (const std::string command : {"run " + kPendulum + " --out " + out,
+    for (const std::string& command : {"run " + kPendulum + " --out " + out,
                                       "sweep " + kPendulum + " --key simulation.duration --values 0.1 --out " + out}) {
       const Outcome busy = run(command);
       INFO(busy.output);
@@ -339,7 +339,7 @@ TEST_CASE("cli: SIGINT or SIGTERM during a run: what was recorded is written, ma
   for (const auto& [signal, code] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
     const fs::path out = dir / signal;
     const Outcome r = elbowsim::testing::shell(
-        "(" + std::string(ELBOWSIM_BINARY) + " run " + kPendulum + " --out " + out.string() +
+        '(' + std::string(ELBOWSIM_BINARY) + " run " + kPendulum + " --out " + out.string() +
         " --set simulation.duration=2000 --set simulation.step=1e-4 --set output.every=1000"
         " --no-render & pid=$!; sleep 1; kill -" + signal + " $pid; wait $pid; echo \"exit=$?\")");
     INFO(r.output);
@@ -449,7 +449,7 @@ TEST_CASE(
   const fs::path dir = scratch("cli", "line_buffered");
   const fs::path out = dir / "out", log = dir / "run.log";
   const Outcome r = elbowsim::testing::shell(
-      "(" + std::string(ELBOWSIM_BINARY) + " run " + kPendulum + " --out " + out.string() +
+      '(' + std::string(ELBOWSIM_BINARY) + " run " + kPendulum + " --out " + out.string() +
       " --no-render --no-report --set 'variants={quick: {simulation.duration: 0.5}, long:"
       " {simulation.duration: 2000, simulation.step: 1.0e-4, output.every: 1000}}' > " +
       log.string() + " 2>&1 & pid=$!; for i in $(seq 200); do grep -q 'steps to t' " +

@@ -74,7 +74,7 @@ TEST_CASE(
     const int t = r.trajectory.layout.time();
     REQUIRE(std::abs(r.trajectory.at(row, t) - ref.trajectory.at(row, t)) < 1e-9);
     for (int j = 0; j < s.model.dof; ++j) {
-      const std::string q = "q" + std::to_string(j);
+      const std::string q = 'q' + std::to_string(j);
       worst = std::max(worst, std::abs(r.trajectory.at(row, r.trajectory.column(q)) -
                                        ref.trajectory.at(row, ref.trajectory.column(q))));
     }

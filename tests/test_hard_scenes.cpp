@@ -356,7 +356,7 @@ TEST_CASE(
       // An upward force f at x_c turns joint j (axis -y) by f (x_c - x_j).
       double table = 0;
       for (int k = 0; k < 6; ++k) {
-        const std::string name = "e" + std::to_string(k);
+        const std::string name = 'e' + std::to_string(k);
         const double fn = tr.at(row, tr.column("fn_" + name));
         if (j <= elbow_links[k]) table += fn * (origin_x[elbow_links[k] + 1] - origin_x[j]);
         if (j == 0) {
@@ -485,7 +485,7 @@ TEST_CASE(
   std::string five = "elbows=[";
   for (int k = 0; k < 5; ++k) {  // five balls 1 nm apart: 5 rows on a 4-joint arm
     char ball[96];
-    const std::string name = k ? "e" + std::to_string(k) : "elbow";  // the task rests "elbow"
+    const std::string name = k ? 'e' + std::to_string(k) : "elbow";  // the task rests "elbow"
     std::snprintf(ball, sizeof ball, "%s{name: %s, link: 1, at: %.10f, radius: 0.03}",
                   k ? ", " : "", name.c_str(), 0.25 - 1e-9 * k);
     five += ball;
@@ -527,8 +527,8 @@ TEST_CASE(
         split = std::max(split, (hi - lo) / sum);
         for (int j = 0; j < 4; ++j)
           angle = std::max(
-              angle, std::abs(r.trajectory.at(row, r.trajectory.column("q" + std::to_string(j))) -
-                              ref.at(row, ref.column("q" + std::to_string(j)))));
+              angle, std::abs(r.trajectory.at(row, r.trajectory.column('q' + std::to_string(j))) -
+                              ref.at(row, ref.column('q' + std::to_string(j)))));
       }
       MESSAGE(std::string(solver), ", ", balls, " balls: total force vs one ball ", total_error,
               " relative, split spread ", split, ", angles within ", angle, " rad");

@@ -57,7 +57,7 @@ std::string panda_twin_text() {
   const std::size_t from = text.find("\nrobot:\n"), to = text.find("\nmotors:\n");
   REQUIRE(from != std::string::npos);
   REQUIRE(to != std::string::npos);
-  text.replace(from, to - from, "\n" + robot.substr(robot.find("robot:\n")));
+  text.replace(from, to - from, '\n' + robot.substr(robot.find("robot:\n")));
   const std::string named = "link: panda_link4";
   REQUIRE(text.find(named) != std::string::npos);
   text.replace(text.find(named), named.size(), "link: 3");

@@ -15,7 +15,10 @@ namespace {
 
 std::string join_quoted(const std::vector<std::string>& words) {
   std::string out;
-  for (const std::string& w : words) out += (out.empty() ? "" : " ") + shell_quote(w);
+  for (const std::string& w : words) {
+    if (!out.empty()) out += ' ';
+    out += shell_quote(w);
+  }
   return out;
 }
 

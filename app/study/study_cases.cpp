@@ -115,7 +115,7 @@ std::vector<CaseSpec> enumerate_cases(const StudyDesign& d) {
       const std::string value = safe_label(c.values[j]);
       parts.push_back(labels[j].empty() ? value : labels[j] + "_" + value);
     }
-    if (c.draw >= 0) parts.push_back("d" + std::to_string(c.draw));
+    if (c.draw >= 0) parts.push_back('d' + std::to_string(c.draw));
     c.folder = folder_name(k, count, parts);
   }
   return cases;

@@ -140,8 +140,8 @@ RunErrors compare_runs(const RunResult& run, const RunResult& reference) {
   const std::size_t rows = std::min(a.rows(), b.rows());
   e.rows = static_cast<long>(rows);
   std::vector<std::pair<int, int>> angles;  // (run, reference) column of each joint angle
-  for (int j = 0; a.column("q" + std::to_string(j)) >= 0; ++j)
-    angles.push_back({a.column("q" + std::to_string(j)), b.column("q" + std::to_string(j))});
+  for (int j = 0; a.column('q' + std::to_string(j)) >= 0; ++j)
+    angles.push_back({a.column('q' + std::to_string(j)), b.column('q' + std::to_string(j))});
   std::vector<std::pair<int, int>> forces;
   for (std::size_t c = 0; c < a.columns().size(); ++c) {
     const std::string& name = a.columns()[c].name;

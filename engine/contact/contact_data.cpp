@@ -22,8 +22,7 @@ SolverWorkspace::SolverWorkspace(int m, int n)
       dx(Eigen::VectorXd::Zero(n)), A(block), b(rhs), impulse(rhs), speed_before(rhs), speed_after(rhs),
       energy_lost(rhs), w(rhs) {}
 
-ContactData::ContactData(ContactGeometry g, int links, int boxes, int n, int capacity,
-                         int cone_capacity)
+ContactData::ContactData(ContactGeometry g, int boxes, int n, int capacity, int cone_capacity)
     : geometry(std::move(g)), cones(cone_capacity), lemke(capacity) {
   const auto slots = geometry.slots.size();
   const auto cap = static_cast<std::size_t>(capacity);

@@ -89,8 +89,7 @@ struct ContactData {
   // Slots from `geometry` (primitives.hpp), rows for up to `capacity` of them.
   // `cone_capacity`: LCP variables of the stick-slip problem (0 without
   // Coulomb friction).
-  ContactData(ContactGeometry geometry, int links, int boxes, int n, int capacity,
-              int cone_capacity = 0);
+  ContactData(ContactGeometry geometry, int boxes, int n, int capacity, int cone_capacity = 0);
 
   ContactGeometry geometry;               // primitives and slots (fixed for the run)
   // --- which slots rest -----------------------------------------------------

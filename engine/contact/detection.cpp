@@ -5,7 +5,7 @@
 #include "engine/contact/collision.hpp"
 #include "engine/contact/geometry.hpp"
 #include "engine/dynamics/kinematics.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

@@ -27,7 +27,7 @@ void freeze_frames(Data& data);
 // (>= 0 while it stays): a face's ball centre must stay over the face, an
 // edge's between the edge's ends and, for a ball of radius > 0, beside both
 // faces (not over one); likewise a corner's. An event function: the step is
-// cut where it turns negative (events.hpp). Needs forward_kinematics.
+// cut where it turns negative (run/contact_events.hpp). Needs forward_kinematics.
 double feature_margin(const Model& model, const Data& data, int slot);
 
 // Normal velocity [m/s] of slot k's ball centre at the rates of data.x, along

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace elbowsim {
 
@@ -97,7 +98,10 @@ double segment_box_parameter(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
       if (t > 0 && t < 1) cuts[n++] = t;
     }
   }
-  std::sort(cuts, cuts + n);
+  // At most 8 cuts: insertion sort. (std::sort's branch for more than 16 values, never
+  // taken here, made GCC 12 warn of an access past the array: -Warray-bounds.)
+  for (int k = 1; k < n; ++k)
+    for (int j = k; j > 0 && cuts[j] < cuts[j - 1]; --j) std::swap(cuts[j], cuts[j - 1]);
   // On each piece the clamped axes are fixed, f is quadratic: its minimiser, clamped.
   double best_t = 0, best_f = squared_distance(xa, h);
   for (int k = 0; k + 1 < n; ++k) {

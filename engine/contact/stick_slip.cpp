@@ -7,7 +7,7 @@
 #include "engine/contact/friction.hpp"
 #include "engine/contact/friction_lcp.hpp"
 #include "engine/dynamics/kinematics.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

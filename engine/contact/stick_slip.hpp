@@ -4,7 +4,7 @@
 // A resting slot sticks (tangent rows hold its contact point; its force f_t
 // stays inside the cone |f_t| <= mu f_n) or slips (its normal row carries
 // -mu f_n along the slip). Modes change at events located inside a step
-// (events.hpp): a sticking slot's force reaching the cone's edge starts a
+// (run/contact_events.hpp): a sticking slot's force reaching the cone's edge starts a
 // slip, a slip that stops (its speed along its direction turns negative) may
 // stick. When a step starts, the modes carried over are kept if they are
 // consistent (forces inside their cones, normal forces >= 0, a slip just

@@ -7,7 +7,7 @@
 #include "engine/control/controller.hpp"
 #include "engine/data.hpp"
 #include "engine/model.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

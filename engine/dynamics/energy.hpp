@@ -1,5 +1,5 @@
 // Stored energy of the arm and motors. Dissipated and supplied energy are
-// integrated along with the state (run/state_layout.hpp, run/derivative.cpp).
+// integrated along with the state (state_layout.hpp, run/derivative.cpp).
 #pragma once
 
 #include "engine/data.hpp"

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "engine/run/derivative.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

@@ -10,7 +10,7 @@
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/motor.hpp"
 #include "engine/control/controller.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

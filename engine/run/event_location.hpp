@@ -1,6 +1,6 @@
 // Locating an event inside a step: the step is redone from its start
 // (data.x_start at t0) over shorter lengths until the event function's sign
-// change is bracketed within a tolerance. Contact events (contact/events) and
+// change is bracketed within a tolerance. Contact events (run/contact_events) and
 // joint stick-slip (run/joint_stick_slip) share it.
 #pragma once
 

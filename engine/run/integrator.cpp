@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "engine/run/derivative.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

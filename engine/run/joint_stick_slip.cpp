@@ -5,7 +5,7 @@
 #include "engine/dynamics/joint_friction.hpp"
 #include "engine/run/derivative.hpp"
 #include "engine/run/event_location.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

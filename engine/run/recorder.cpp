@@ -9,7 +9,7 @@
 #include "engine/control/plan.hpp"
 #include "engine/dynamics/energy.hpp"
 #include "engine/dynamics/kinematics.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

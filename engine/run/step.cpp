@@ -4,22 +4,22 @@
 #include <cmath>
 #include <limits>
 
-#include "engine/contact/active_set.hpp"
 #include "engine/contact/collision.hpp"
 #include "engine/contact/contact_checks.hpp"
-#include "engine/contact/events.hpp"
 #include "engine/contact/impact.hpp"
 #include "engine/contact/projection.hpp"
 #include "engine/control/controller.hpp"
 #include "engine/control/digital_loop.hpp"
 #include "engine/control/plan.hpp"
 #include "engine/dynamics/energy.hpp"
+#include "engine/run/active_set.hpp"
 #include "engine/run/adaptive.hpp"
+#include "engine/run/contact_events.hpp"
 #include "engine/run/derivative.hpp"
 #include "engine/run/integrator.hpp"
 #include "engine/run/joint_stick_slip.hpp"
-#include "engine/run/state_layout.hpp"
 #include "engine/run/validity.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

@@ -1,10 +1,60 @@
 // One step of the simulation, the way MuJoCo's mj_step reads: a flat list of
 // stages, each a named function, only those of the scene's effects running.
+// This is the engine's one stage list (docs/architecture.md links here), in the
+// order step.cpp calls them. "runs with": contact (effects.contact), joint friction
+// (effects.joint_friction), projection (effects.contact and stabilization:
+// projection), digital loop (controller.sample_rate), fixed or adaptive step
+// (simulation.integrator); blank: always.
 //
-//   detect -> active set -> integrate -> events -> impacts -> stabilise -> checks
+// reset(model, data) function             file (engine/)            runs with
+//   check            check_data           data
+//   integrator       prepare_integrator   run/integrator
+//       the ETD coefficients for the step
+//   initial state    reset_state          run/step
+//       t = 0; on the plan when a controller tracks one
+//   first sample     start_digital_loop   control/digital_loop      digital loop
+//   joint modes      decide_joint_modes   run/joint_stick_slip      joint friction
+//   collision        CollisionWorld       contact/collision_bullet  contact
+//       Bullet's world, built once
+//   active set       select_active_set    run/active_set            contact
+//       as in step()
+//   outputs          evaluate_outputs     run/step
+//       qdd, voltage, forces and energies at t = 0
 //
-// reset() puts a Data at the model's initial state; step() advances it by one
-// step; simulate() (simulator.hpp) is a loop over step() plus recording.
+// step(model, data)  function             file (engine/)            runs with
+//   check            check_data           data
+//   active set       select_active_set    run/active_set            contact
+//       detection (detect_contacts, contact/detection: Bullet distances, normals, surface
+//       points), then the LCP on the touching contacts (elbows, links): the rows on for the step
+//   joint modes      decide_joint_modes   run/joint_stick_slip      joint friction
+//       which joints stick and which slide, held over the step
+//   integrate        integrate_step       run/integrator            fixed step
+//       euler, semi-implicit Euler, rk4 (ETD)
+//     or             adaptive_step        run/adaptive              adaptive step
+//       dopri5, ros34pw2, with error control
+//   joint events     locate_joint_event   run/joint_stick_slip      joint friction
+//       a joint stopping or breaking away inside the step: the step is redone up to it
+//   contact events   locate_first_event   run/contact_events        contact
+//       the detection at the step's end; with contact.events: locate, the landings and
+//       releases inside the step: the step is redone up to the first
+//   impacts          land_touching_slots  contact/impact            contact
+//       impulses for the contacts that landed
+//   stabilise        stabilise            contact/projection        projection
+//       back onto C = 0, dC/dt = 0
+//   contact checks   check_contacts       contact/contact_checks    contact
+//       how far the resting contacts drift off C = 0 and dC/dt = 0
+//   validity         check_step           run/validity
+//       divergence, current and speed bounds, a link or elbow in the table
+//   sample           sample_if_due        control/digital_loop      digital loop
+//       at a sample instant, unless the step failed: sensors, control law, held voltage
+//
+// Every derivative evaluation (integrate, and the steps the event searches redo) is
+// nonstiff_rates (run/derivative): forward kinematics (dynamics/kinematics) -> control law
+// (command, control/controller) -> motor (motor_stage, dynamics/motor) -> applied torques
+// (dynamics/applied_torques) -> arm accelerations (dynamics/forward_dynamics, or
+// dynamics/joint_friction with joint friction; while elbows rest, contact/constraint_rows and
+// contact/constrained_dynamics) -> energy powers. simulate() (simulator.hpp) is a loop
+// over step() plus recording.
 #pragma once
 
 #include "engine/data.hpp"

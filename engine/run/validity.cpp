@@ -11,7 +11,7 @@
 #include "engine/dynamics/energy.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/run/fixed_step_stability.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "engine/data.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 #include "support/models.hpp"
 #include "support/scenes.hpp"
 

@@ -11,7 +11,7 @@
 #include "engine/run/derivative.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/rnea.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim::testing {
 
@@ -37,7 +37,7 @@ TableBox table_under(double top_z, double x) {
 Model chain_with_elbows(int n, int p, std::uint32_t seed) {
   Model m = random_chain(n, seed);
   for (int k = 0; k < p; ++k)
-    m.elbows.push_back({"e" + std::to_string(k), 1 + (k * 2) % (n - 1),
+    m.elbows.push_back({'e' + std::to_string(k), 1 + (k * 2) % (n - 1),
                         0.2 * Eigen::Vector3d::Random(), 0.03});
   m.table = {TableBox{}};
   m.effects.contact = true;

@@ -26,7 +26,7 @@ Model chain(int n, int p, bool twin, bool friction, std::uint32_t seed) {
   Model m = random_chain(n, seed);
   for (int k = 0; k < p; ++k) {
     const int link = n == 1 ? 0 : 1 + (k * 5 + static_cast<int>(seed)) % (n - 1);
-    m.elbows.push_back({"e" + std::to_string(k), link, 0.2 * Eigen::Vector3d::Random(), 0.03});
+    m.elbows.push_back({'e' + std::to_string(k), link, 0.2 * Eigen::Vector3d::Random(), 0.03});
   }
   if (twin && p >= 2) m.elbows.back() = Elbow{"twin", m.elbows[0].link, m.elbows[0].point, 0.03};
   m.table = {TableBox{}};

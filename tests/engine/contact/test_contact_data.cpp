@@ -44,7 +44,7 @@ ContactData three_elbows_two_boxes() {
   }
   g.first_slot.push_back(static_cast<int>(g.slots.size()));
   g.boxes = 2;
-  return ContactData(g, 4, 2, 5, 3);
+  return ContactData(g, 2, 5, 3);
 }
 
 TEST_CASE("ContactData: sized for 6 slots, rows for 3, 5 joints; use_rows(0) at start") {

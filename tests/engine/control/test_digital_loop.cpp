@@ -29,12 +29,6 @@ ExperimentScene sampled_arm(double step, double period, int delay) {
   return scene;
 }
 
-// Sample instants k T hit by the recording's time column (to rounding).
-bool at_instant(double t, double period) {
-  const double k = std::round(t / period);
-  return std::abs(t - k * period) < 1e-12;
-}
-
 }  // namespace
 
 TEST_CASE("measure_angles: rounded to the encoder's resolution (joint or motor side), plus seeded noise") {

@@ -37,9 +37,9 @@ Eigen::VectorXd final_state(const RunResult& r, int n) {
   Eigen::VectorXd x(3 * n);
   const std::size_t last = r.trajectory.rows() - 1;
   for (int j = 0; j < n; ++j) {
-    x[j] = r.trajectory.at(last, r.trajectory.column("q" + std::to_string(j)));
+    x[j] = r.trajectory.at(last, r.trajectory.column('q' + std::to_string(j)));
     x[n + j] = r.trajectory.at(last, r.trajectory.column("qd" + std::to_string(j)));
-    x[2 * n + j] = r.trajectory.at(last, r.trajectory.column("i" + std::to_string(j)));
+    x[2 * n + j] = r.trajectory.at(last, r.trajectory.column('i' + std::to_string(j)));
   }
   return x;
 }

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "engine/run/derivative.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 #include "support/allocations.hpp"
 #include "support/approx.hpp"
 #include "support/models.hpp"
@@ -60,9 +60,9 @@ TEST_CASE("nonstiff_rates with full motors: di/dt, electrical powers and the vis
   const StateLayout s(m);
   Data data(m);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(s.size), N(s.size);
-  x.segment(s.q(), 2) = Eigen::Vector2d(0.3, -0.4);
-  x.segment(s.qd(), 2) = Eigen::Vector2d(1.2, -0.7);
-  x.segment(s.current, 2) = Eigen::Vector2d(0.8, -0.3);
+  x.segment(s.q(), 2) << 0.3, -0.4;
+  x.segment(s.qd(), 2) << 1.2, -0.7;
+  x.segment(s.current, 2) << 0.8, -0.3;
   const double t = 0.37;
   nonstiff_rates(m, data, t, x, N);
   Eigen::ArrayXd lambda(s.size);
@@ -111,7 +111,7 @@ TEST_CASE("a derivative evaluation allocates nothing: s = 2..60, p = 0..4 restin
         CAPTURE(std::string(to_string(solver)));
         Model m = random_chain(n, static_cast<std::uint32_t>(300 + n));
         for (int k = 0; k < p; ++k)
-          m.elbows.push_back({"e" + std::to_string(k), (k + 1) * (n - 1) / p, Eigen::Vector3d(0.1, 0, 0), 0.03});
+          m.elbows.push_back({'e' + std::to_string(k), (k + 1) * (n - 1) / p, Eigen::Vector3d(0.1, 0, 0), 0.03});
         m.table = {TableBox{}};
         m.effects.contact = true;
         m.contact.solver = solver;

@@ -7,8 +7,8 @@
 
 #include "engine/run/event_location.hpp"
 #include "engine/run/integrator.hpp"
-#include "engine/run/state_layout.hpp"
 #include "engine/run/step.hpp"
+#include "engine/state_layout.hpp"
 #include "support/scenes.hpp"
 
 using namespace elbowsim;

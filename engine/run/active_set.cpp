@@ -1,4 +1,4 @@
-#include "engine/contact/active_set.hpp"
+#include "engine/run/active_set.hpp"
 
 #include "engine/contact/constrained_dynamics.hpp"
 #include "engine/contact/constraint_rows.hpp"
@@ -11,7 +11,7 @@
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/motor.hpp"
 #include "engine/dynamics/walker_orin.hpp"
-#include "engine/run/state_layout.hpp"
+#include "engine/state_layout.hpp"
 
 namespace elbowsim {
 

@@ -1,4 +1,4 @@
-// engine/contact/active_set.cpp: which elbows rest for the coming step (the LCP on the
+// engine/run/active_set.cpp: which elbows rest for the coming step (the LCP on the
 // touching elbows), select_active_set on its own: landings, releases, Painleve's paradox
 // and dependent rows; and Painleve's paradox stopping a whole run.
 #include <doctest/doctest.h>
@@ -7,13 +7,13 @@
 
 #include <numbers>
 
-#include "engine/contact/active_set.hpp"
 #include "engine/contact/collision.hpp"
 #include "engine/dynamics/rnea.hpp"
 #include "engine/contact/constraint_rows.hpp"
 #include "engine/contact/detection.hpp"
 #include "engine/dynamics/crba.hpp"
 #include "engine/dynamics/kinematics.hpp"
+#include "engine/run/active_set.hpp"
 #include "engine/run/simulator.hpp"
 #include "engine/run/step.hpp"
 #include "support/approx.hpp"

@@ -1,4 +1,4 @@
-#include "engine/contact/events.hpp"
+#include "engine/run/contact_events.hpp"
 
 #include <algorithm>
 

@@ -1,12 +1,12 @@
-// engine/contact/events.cpp: landings and releases located inside a step (events:
+// engine/run/contact_events.cpp: landings and releases located inside a step (events:
 // locate), locate_first_event on its own and through whole runs.
 #include <doctest/doctest.h>
 
 #include <cmath>
 
 #include "engine/contact/detection.hpp"
-#include "engine/contact/events.hpp"
 #include "engine/dynamics/kinematics.hpp"
+#include "engine/run/contact_events.hpp"
 #include "engine/run/integrator.hpp"
 #include "engine/run/simulator.hpp"
 #include "support/approx.hpp"
