@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "report/summary_units.hpp"
+
 namespace elbowsim::report {
 
 namespace {
@@ -18,30 +20,11 @@ void flatten(const nlohmann::ordered_json& node, const std::string& path,
     out.push_back({path, node, metric_unit(path)});
 }
 
-bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
-
 }  // namespace
 
 std::string metric_unit(const std::string& path) {
-  if (starts_with(path, "energy_initial.") || starts_with(path, "energy_final.")) return "J";
-  if (path == "balance_residual" || path == "max_abs_balance_residual") return "J";
-  if (path == "final_time" || path == "wall_seconds" || path == "settings.step" ||
-      path == "settings.duration")
-    return "s";
-  if (path == "model.total_mass") return "kg";
-  if (path == "contact.max_abs_C") return "m";
-  if (path == "contact.max_abs_Jc_qd") return "m/s";
-  if (starts_with(path, "contact.bodies.")) {  // contact.bodies.<body>.<quantity>
-    const std::string quantity = path.substr(path.rfind('.') + 1);
-    if (quantity == "force_mean" || quantity == "force_peak") return "N";
-    if (quantity == "friction_work") return "J";
-    return "";
-  }
-  if (starts_with(path, "metrics.")) {  // metrics.<name>[.<joint or elbow>]
-    const std::string rest = path.substr(8);
-    return elbowsim::metric_unit(rest.substr(0, rest.find('.')));
-  }
-  return "";
+  const std::string unit = summary_unit(path);  // the one table: summary_units.cpp
+  return unit == "1" ? "" : unit;
 }
 
 std::vector<Metric> summary_metrics(const nlohmann::ordered_json& summary) {

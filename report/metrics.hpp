@@ -35,7 +35,8 @@ std::vector<Metric> summary_metrics(const nlohmann::ordered_json& summary);
 // when summary.json has no "metrics" (an older or partial run folder).
 std::vector<Metric> run_metrics(const RunData& run);
 
-// The unit of a summary.json metric path; "" when it has none.
+// The unit a report shows for a summary.json path (summary_units.hpp), "" for a pure
+// number and for a path without one.
 std::string metric_unit(const std::string& path);
 
 // The value of `path` among `metrics`, or nullptr.

@@ -628,3 +628,74 @@ TEST_CASE("cli: every JSON file a command writes starts with the provenance") {
                                        "cases.json", "case.json", "montecarlo.json", "study.json",
                                        "accuracy.json"});
 }
+
+namespace {
+
+// Every number of a JSON document by its dotted path; a list of numbers once, by the list's.
+void numbers_of(const nlohmann::ordered_json& node, const std::string& path,
+                std::vector<std::string>& out) {
+  const bool number_list = node.is_array() && !node.empty() &&
+                           std::all_of(node.begin(), node.end(), [](const auto& v) { return v.is_number(); });
+  if (node.is_number() || number_list) return out.push_back(path);
+  if (node.is_object() || node.is_array())
+    for (const auto& [key, value] : node.items())
+      numbers_of(value, path.empty() ? key : path + "." + key, out);
+}
+
+}  // namespace
+
+TEST_CASE("cli: summary.json names its program and gives every number its unit") {
+  const fs::path dir = scratch("cli", "summary_units");
+  const std::string experiment = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_experiment.yaml";
+  const std::string runs[] = {
+      // a pendulum without motors; the step check on
+      "run " + kPendulum + " --no-render --no-report --out " + (dir / "pendulum").string() +
+          " --set simulation.duration=0.2",
+      // motors, contact bodies with friction, stick and slip, a sampled loop, two variants;
+      // an adaptive integrator (rtol, atol, max_step)
+      "run " + experiment + " --no-render --no-report --out " + (dir / "pd").string() +
+          " --set controller.type=pd --set simulation.duration=0.3",
+      "run " + kPendulum + " --no-render --no-report --no-check-step --out " +
+          (dir / "adaptive").string() + " --set simulation.duration=0.2 --set simulation.integrator=dopri5",
+  };
+  for (const std::string& command : runs) {
+    const Outcome r = run(command);
+    INFO(command << "\n" << r.output);
+    REQUIRE(r.exit_code == 0);
+  }
+  const nlohmann::ordered_json expected = binary_provenance().json;
+  const std::set<std::string> units{"1", "state", "s", "m", "m/s", "kg", "J", "N", "A", "W", "Hz", "rad"};
+  std::set<std::string> seen_keys;
+  int files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (entry.path().filename() != "summary.json") continue;
+    ++files;
+    CAPTURE(entry.path().string());
+    const auto doc = nlohmann::ordered_json::parse(slurp(entry.path()));
+    REQUIRE(doc.is_object());
+    CHECK(doc["provenance"] == expected);
+    CHECK(std::next(doc.begin()).key() == "units");
+    const nlohmann::ordered_json& map = doc["units"];
+    REQUIRE(map.is_object());
+    std::vector<std::string> paths;
+    for (const auto& [key, value] : doc.items())
+      if (key != "units") numbers_of(value, key, paths);
+    for (const std::string& path : paths) {
+      CAPTURE(path);
+      REQUIRE(map.contains(path));
+      CHECK(units.count(map[path].get<std::string>()) == 1);
+      seen_keys.insert(path);
+    }
+    CHECK(map.size() == paths.size());  // no unit for a number the file lacks
+    // Spot checks against the quantities' dimensions.
+    CHECK(map["final_time"] == "s");
+    CHECK(map["energy_final.joule"] == "J");
+    if (map.contains("metrics.hand_error_rms")) CHECK(map["metrics.hand_error_rms"] == "m");
+    if (map.contains("metrics.current_peak")) CHECK(map["metrics.current_peak"] == "A");
+  }
+  CHECK(files == 4);  // pendulum, pd's two variants, adaptive
+  for (const char* key : {"contact.bodies.link3.force_mean", "contact.bodies.link3.slips",
+                          "step_check.metrics.hand_error_rms.floor", "control_loop.sample_rate",
+                          "settings.atol", "metrics.rest_fraction.elbow"})
+    CHECK_MESSAGE(seen_keys.count(key) == 1, key);
+}

@@ -14,6 +14,7 @@
 #include "report/comparison.hpp"
 #include "report/metrics.hpp"
 #include "report/plots_aside.hpp"
+#include "report/summary_units.hpp"
 #include "report_test_helpers.hpp"
 #include "support/approx.hpp"
 #include "support/recordings.hpp"
@@ -395,4 +396,39 @@ TEST_CASE(
     aside.keep();
   }
   CHECK(listing() == std::set<std::string>{"plots", "plots/new.png", "report.html"});
+}
+
+TEST_CASE("summary_units: every number's unit from one table; a key without one is an error") {
+  CHECK(r::summary_unit("final_time") == "s");
+  CHECK(r::summary_unit("energy_final.gear_loss") == "J");
+  CHECK(r::summary_unit("metrics.hand_error_rms") == "m");
+  CHECK(r::summary_unit("metrics.current_peak.1") == "A");      // a joint's element
+  CHECK(r::summary_unit("metrics.rest_fraction.elbow") == "1");  // a share: a pure number
+  CHECK(r::summary_unit("metrics.samples") == "1");
+  CHECK(r::summary_unit("contact.bodies.link3.force_peak") == "N");
+  CHECK(r::summary_unit("step_check.metrics.joule.floor") == "J");
+  CHECK(r::summary_unit("step_check.metrics.joule.relative_change") == "1");
+  CHECK(r::summary_unit("metrics.no_such_metric").empty());
+  CHECK(r::summary_unit("contact.bodies.link3.colour").empty());
+  CHECK(r::metric_unit("metrics.rest_fraction.elbow").empty());  // reports show no "1"
+  CHECK(r::metric_unit("contact.max_abs_Jc_qd") == "m/s");
+
+  const Json summary = Json::parse(R"({"provenance": {"program": "elbowsim"}, "scenario": "s",
+      "final_time": 1.5, "valid": true, "metrics": {"current_rms": [0.5, 0.25],
+      "rest_fraction": {"elbow": 0.9}}, "contact": {"bodies": {"elbow": {"kind": "elbow",
+      "force_mean": 3.0}}}, "warnings": []})");
+  const Json units = r::units_json(summary);
+  CHECK(units == Json::parse(R"({"final_time": "s", "metrics.current_rms": "A",
+      "metrics.rest_fraction.elbow": "1", "contact.bodies.elbow.force_mean": "N"})"));
+  const Json written = r::with_units(summary);
+  REQUIRE(written.size() == summary.size() + 1);
+  auto key = written.begin();
+  CHECK(key.key() == "provenance");
+  CHECK((++key).key() == "units");
+  CHECK((++key).key() == "scenario");
+
+  Json grown = summary;
+  grown["contact"]["bodies"]["elbow"]["stiffness"] = 1e5;  // a key added without its unit
+  CHECK_THROWS_WITH_AS(r::units_json(grown),
+                       doctest::Contains("contact.bodies.elbow.stiffness"), std::logic_error);
 }

@@ -47,7 +47,7 @@ void write_outputs(const Scenario& scenario, const RunResult& result,
   write("events.csv", scenario.model.effects.contact,
         [&](std::ostream& out) { write_events_csv(out, scenario.model, result.events); });
   write("summary.json", scenario.output.summary,
-        [&](std::ostream& out) { out << summary.dump(2) << '\n'; });
+        [&](std::ostream& out) { out << summary_text(summary); });
   // What an earlier run derived from its data (video, frames, report) goes
   // in the same commit: this run's are added to the manifest as they are made.
   for (const std::string& name : derived_artefacts()) files.remove_at_commit(folder / name);
@@ -252,7 +252,7 @@ int stop_runs(const std::vector<const Scenario*>& scenarios,
       try {
         if (scenarios[k]->output.summary)
           write_atomically(folders[k] / "summary.json",
-                           [&](std::ostream& out) { out << outcome.summary.dump(2) << '\n'; });
+                           [&](std::ostream& out) { out << summary_text(outcome.summary); });
       } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << '\n';
         return exit_io;

@@ -8,6 +8,7 @@
 #include "engine/run/recorder.hpp"
 #include "report/metrics.hpp"
 #include "report/provenance.hpp"
+#include "report/summary_units.hpp"
 
 namespace elbowsim {
 
@@ -200,6 +201,10 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   j["warnings"] = result.warnings;
   if (!result.saturation.empty()) j["saturation_share"] = result.saturation;  // per motor, warnings.hpp
   return j;
+}
+
+std::string summary_text(const nlohmann::ordered_json& summary) {
+  return report::with_units(summary).dump(2) + '\n';
 }
 
 nlohmann::ordered_json summary_shape(const Scenario& scenario, bool step_check) {

@@ -223,6 +223,12 @@ std::string metric_unit(const std::string& name) {
   return "";
 }
 
+bool is_metric(const std::string& name) {
+  for (const Vocabulary& v : kVocabulary)
+    if (name == v.name) return true;
+  return false;
+}
+
 Metrics compute_metrics(const Recording& recording) {
   Metrics m;
   if (recording.rows() == 0) return m;

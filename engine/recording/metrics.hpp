@@ -67,7 +67,9 @@ struct Metrics {
 
 Metrics compute_metrics(const Recording& recording);
 
-// The unit of a metric of the vocabulary, "" for an unknown name.
+// The unit of a metric of the vocabulary, "" for an unknown name and for a ratio or count.
 std::string metric_unit(const std::string& name);
+// Whether `name` is a metric of the vocabulary.
+bool is_metric(const std::string& name);
 
 }  // namespace elbowsim

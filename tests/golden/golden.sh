@@ -7,9 +7,9 @@
 #   bash tests/golden/golden.sh BUILD/app/elbowsim . WORKDIR --update   # rewrite hashes.txt
 #
 # Hashed per run folder (and per variant folder): trajectory.csv, events.csv,
-# scenario.yaml and summary.json without its wall_seconds line and its
-# "provenance" block (the program's version, commit, build type, compiler:
-# the fields that are not results). comparison.* are left out: they are made
+# scenario.yaml and summary.json without its wall_seconds line, its
+# "provenance" block (the program's version, commit, build type, compiler)
+# and its "units" block (report/summary_units.cpp): the fields that are not results. comparison.* are left out: they are made
 # from the summaries and carry wall times.
 #
 # Bit-identical floating point holds on one platform: the same glibc libm
@@ -34,8 +34,8 @@ fingerprint() {
   } | sha256sum | cut -c1-16
 }
 
-without_provenance() {  # summary.json less its top-level "provenance": { ... } block
-  awk '/^  "provenance": \{$/ { skip = 1; next } skip { if (/^  \},?$/) skip = 0; next } { print }' "$1"
+without_provenance() {  # summary.json less its top-level "provenance" and "units" blocks
+  awk '/^  "(provenance|units)": \{$/ { skip = 1; next } skip { if (/^  \},?$/) skip = 0; next } { print }' "$1"
 }
 
 hash_folder() {  # one line per folder holding a run: relative path and hash
