@@ -191,10 +191,17 @@ constexpr CommandSpec kCommands[] = {
 std::string spelling(const OptionSpec& o) {
   const std::string_view names = o.names;
   const std::size_t comma = names.find(',');
-  std::string out = comma == std::string_view::npos
-                        ? "    --" + std::string(names)
-                        : "-" + std::string(names.substr(0, comma)) + ", --" +
-                              std::string(names.substr(comma + 1));
+  // Appended piece by piece: GCC 12 warns -Wrestrict on "-" + std::string&& (bug 105329).
+  std::string out;
+  if (comma == std::string_view::npos) {
+    out = "    --";
+    out += names;
+  } else {
+    out = '-';
+    out += names.substr(0, comma);
+    out += ", --";
+    out += names.substr(comma + 1);
+  }
   if (o.value) out += std::string(" ") + o.value;
   if (o.repeatable && !out.ends_with("...")) out += " ...";  // (--grid's meaning says it)
   return out;

@@ -147,8 +147,8 @@ void main() { frag_color = vec4(min(unshadowed + key_visibility() * key_light, v
 
 // The inset's faded scene: lit per vertex (Gouraud), no shadows, then mixed
 // `fade` of the way toward fade_color. Per fragment it cost a tenth of a
-// render's CPU; at 28 % contrast the difference hardly shows (README). Drawn
-// with kUnlitFragment, which takes base_color as it is.
+// render's CPU; at 28 % contrast the difference hardly shows (docs/rendering.md,
+// "Lighting"). Drawn with kUnlitFragment, which takes base_color as it is.
 inline constexpr const char* kFadedVertex = R"(
 uniform float fade;
 uniform vec3 fade_color;

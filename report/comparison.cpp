@@ -229,7 +229,8 @@ std::vector<std::string> verdict(const std::vector<RunData>& runs, const Compari
   std::vector<std::string> errors = smaller_is_better(table, accuracy, "smaller", "RMS hand error");
   if (std::all_of(runs.begin(), runs.end(), controller_knows_everything)) {
     // The feed-forward inverts the plant exactly and sees the true state: what
-    // is left of the hand error is the integrator's (README, the experiment).
+    // is left of the hand error is the integrator's (docs/experiment.md, "What
+    // accuracy costs").
     std::string numbers;
     for (const std::string& e : errors) numbers += (numbers.empty() ? "" : " ") + e;
     sentences.push_back("Hand accuracy: no verdict. In these runs the controller knows the plant "

@@ -3,7 +3,7 @@
 //   elbowsim run SCENARIO --expect "energy_final.electrical_in < 120"
 //   elbowsim compare A B --expect "A.energy_final.electrical_in < B.energy_final.electrical_in"
 //
-// The language (README "Expectations" has the full reference):
+// The language (docs/cli.md, "Expectations", has the full reference):
 //   metric paths   dotted paths into summary.json: energy_final.joule,
 //                  contact.landings, completed, warnings.0; in compare the
 //                  first segment is a run label (its folder name). A segment

@@ -1,6 +1,6 @@
 // Small pieces of HTML5 shared by the run report and the comparison report.
 // Pages are one file plus relative links (plots/*.png, video.mp4): readable
-// from disk without a server, portable as a folder (README: "Reports").
+// from disk without a server, portable as a folder (docs/cli.md, "Reports").
 #pragma once
 
 #include <filesystem>

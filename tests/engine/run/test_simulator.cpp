@@ -130,7 +130,7 @@ TEST_CASE("a table believed 2 mm lower: the plant starts on the real table, the 
   // elbow on the real table top), not the plan's (2 mm inside it, beyond
   // contact.penetration_tolerance: the run would be invalid at once). The plan
   // then keeps pressing the elbow 2 mm into a table that does not give: the
-  // hand misses by millimetres (1.6 mm RMS for 1 mm in the shipped experiment, README).
+  // hand misses by millimetres (1.6 mm RMS for 1 mm in the shipped experiment, docs/experiment.md).
   const ExperimentScene scene = WritingArm{}.scene();
   Model low = scene.model;
   for (TableBox& box : low.table) box.center.z() -= 2e-3;

@@ -96,7 +96,9 @@ TEST_CASE("hand_error_warnings: the largest distance, when and the threshold; no
         "hand_error (1 mm): the arm did not do the task it was given");
   model.warn.hand_error = 3e-3;
   CHECK(hand_error_warnings(model, rec).empty());
-  CHECK(hand_error_warnings(model, zero_recording({.dof = 2}, 5)).empty());  // no task: no hand error
+  TrajectoryLayout::Groups no_task;  // no task: no hand error
+  no_task.dof = 2;
+  CHECK(hand_error_warnings(model, zero_recording(no_task, 5)).empty());
 }
 
 TEST_CASE("lift_off_warnings: a planned elbow's release events, the first time and the count") {
