@@ -4,6 +4,7 @@
 // darkens the table under it. Drawn through the same prepare_panel /
 // draw_panel as every video frame, read back before the overlay text.
 #include <doctest/doctest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -28,10 +29,21 @@ namespace {
 
 constexpr int kWidth = 640, kHeight = 360;
 
-// Both variants run once per test program, 2 s of the 4.8 s, nothing rendered.
+// Both variants run once per test process, 2 s of the 4.8 s, nothing rendered. The
+// folder is the process's own (ctest runs each case as a process, two at once under -j),
+// removed when the process ends.
+struct OwnFolder {
+  fs::path path;
+  ~OwnFolder() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
+
 const fs::path& experiment() {
-  static const fs::path dir = [] {
-    const fs::path d = elbowsim::testing::scratch("render", "experiment");
+  static const OwnFolder dir{[] {
+    const fs::path d =
+        elbowsim::testing::scratch("render", "experiment_" + std::to_string(::getpid()));
     const std::string scenario =
         std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_experiment.yaml";
     const auto run = elbowsim::testing::shell(
@@ -39,8 +51,8 @@ const fs::path& experiment() {
         " --no-report --no-render --set simulation.duration=2");
     if (run.exit_code != 0) throw std::runtime_error("experiment run failed: " + run.output);
     return d;
-  }();
-  return dir;
+  }()};
+  return dir.path;
 }
 
 struct Run {

@@ -52,6 +52,12 @@ double stable_step_limit(IntegratorKind kind, const LinearisedArm& arm, double h
 // at most 13 % from its value there (singular_stretch; 9 % elbow_experiment).
 inline constexpr double kStableMargin = 1.5;
 
+// The analysis solves eigenvalue problems of size 2n or 3n, two per pose and up to
+// about 110 more when the step is unstable (stable_step_limit): above this many
+// joints it is not made. (At 256 joints one problem took 1.2 s, and every load of a
+// scenario with simulation.integrator: auto made two.)
+inline constexpr int kStabilityMaxJoints = 32;
+
 // What the stability of the model's fixed step says at pose q:
 struct FixedStepStability {
   double radius = 0;           // at options.step, for `kind`

@@ -20,8 +20,17 @@ IntegratorChoice choose_integrator(const Model& model, const ControllerSpec* con
   const Eigen::VectorXd q =
       model.initial.q.size() == model.dof ? model.initial.q : Eigen::VectorXd::Zero(model.dof);
   const double h = model.options.step;
-  const FixedStepStability s = fixed_step_stability(model, IntegratorKind::rk4, controller, q);
   IntegratorChoice choice;
+  if (model.dof > kStabilityMaxJoints) {
+    choice.kind = IntegratorKind::ros34pw2;
+    choice.reason = format(
+        "the arm has %.0f joints, more than the %.0f the fixed steps' stability analysis is "
+        "made for (its eigenvalue problems grow as the cube of the joints); ros34pw2 is "
+        "implicit in the motor-arm system, stable at any step",
+        model.dof, kStabilityMaxJoints);
+    return choice;
+  }
+  const FixedStepStability s = fixed_step_stability(model, IntegratorKind::rk4, controller, q);
   const bool unresolved = s.fastest >= 0 && s.electrical_time < 0.1 * h;
   if (unresolved) {
     choice.kind = IntegratorKind::ros34pw2;

@@ -20,7 +20,8 @@ struct IntegratorChoice {
 // with the controller's continuous feedback gains; null: none), one rk4 step
 // is stable at options.step and at kStableMargin times it, and every motor's
 // L/R is at least a tenth of the step (below it rk4 is first order:
-// engine/MODEL.md); else ros34pw2.
+// engine/MODEL.md); else ros34pw2. Above kStabilityMaxJoints joints, no analysis:
+// ros34pw2.
 IntegratorChoice choose_integrator(const Model& model, const ControllerSpec* controller);
 
 }  // namespace elbowsim

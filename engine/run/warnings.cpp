@@ -215,10 +215,11 @@ std::vector<std::string> motor_rating_warnings(const Model& model, const Metrics
 namespace {
 
 // The model's fixed step on the system linearised at initial.q, or nothing
-// (adaptive integrators, an unfinalized model).
+// (adaptive integrators, an unfinalized model, more than kStabilityMaxJoints joints).
 bool fixed_step_at_start(const Model& model, const ControllerSpec* controller,
                          FixedStepStability& out) {
-  if (is_adaptive(model.options.integrator) || model.dof == 0 || model.km.size() != model.dof ||
+  if (is_adaptive(model.options.integrator) || model.dof == 0 ||
+      model.dof > kStabilityMaxJoints || model.km.size() != model.dof ||
       model.viscous.size() != model.dof)
     return false;
   const Eigen::VectorXd q =

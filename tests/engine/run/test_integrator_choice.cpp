@@ -7,6 +7,7 @@
 
 #include "engine/run/fixed_step_stability.hpp"
 #include "engine/run/integrator_choice.hpp"
+#include "support/models.hpp"
 #include "support/scenes.hpp"
 
 using namespace elbowsim;
@@ -77,4 +78,16 @@ TEST_CASE("auto: a tracking controller's continuous gains count; a sampled loop'
   CHECK(choose_integrator(m, &pd).kind == IntegratorKind::ros34pw2);
   pd.loop.sample_period = 1e-3;
   CHECK(choose_integrator(m, &pd).kind == IntegratorKind::rk4);
+}
+
+TEST_CASE("auto: no analysis above 32 joints (ros34pw2, saying why); up to 32 the analysis decides") {
+  const IntegratorChoice analysed = choose_integrator(random_chain(kStabilityMaxJoints, 7), nullptr);
+  MESSAGE(analysed.reason);
+  CHECK_FALSE(has(analysed.reason, "joints, more than"));
+  CHECK(has(analysed.reason, "linearised at initial.q"));
+  const IntegratorChoice long_arm = choose_integrator(random_chain(kStabilityMaxJoints + 1, 7), nullptr);
+  MESSAGE(long_arm.reason);
+  CHECK(long_arm.kind == IntegratorKind::ros34pw2);
+  CHECK(has(long_arm.reason, "the arm has 33 joints, more than the 32 the fixed steps' stability "
+                             "analysis is made for"));
 }
