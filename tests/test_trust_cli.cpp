@@ -67,6 +67,21 @@ TEST_CASE("cli: the PD experiment's held-up arm rests its last link: reported, w
   CHECK(said);
 }
 
+TEST_CASE("cli: the nominal experiment: no other part rests in either run, and the comparison says same") {
+  const fs::path dir = elbowsim::testing::scratch("cli", "nominal_bodies");
+  const auto out = run_elbowsim("run " + kExperiment + " --no-render --no-check-step --out " + dir.string());
+  INFO(out.output);
+  REQUIRE(out.exit_code == 0);
+  const std::string compare = slurp(dir / "compare" / "report.html");
+  const std::size_t row = compare.find("<tr data-metric=\"contact.bodies\">");
+  REQUIRE(row != std::string::npos);
+  const std::string cells = compare.substr(row, compare.find("</tr>", row) - row);
+  INFO(cells);
+  // elbow_on, elbow_off, then elbow_off vs elbow_on
+  CHECK(has(cells, "<td class=\"value\">none</td><td class=\"value\">none</td>"));
+  CHECK(has(cells, "<td class=\"num same\">same</td>"));
+}
+
 TEST_CASE("cli: a continuous-control scene's hand error is below the integration floor, never a result") {
   // The controller knows the plant and sees its true state: what is left of the hand error
   // is the integrator's (tens of nm that move by a quarter at half the step).
