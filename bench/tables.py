@@ -29,6 +29,10 @@ import re
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.join(ROOT, "docs"))
+from marked_blocks import marked, write_or_check  # noqa: E402  (docs/marked_blocks.py)
+
 TO_NS = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}
 TIME = "cpu_time"  # what the tables show: CPU time excludes time the thread was descheduled
 
@@ -401,16 +405,6 @@ def build_blocks(folder):
     return machine_doc, blocks, ratios, checks
 
 
-def replace_blocks(text, blocks, doc):
-    for name, lines in blocks.items():
-        pattern = re.compile(rf"(<!-- bench:{name} -->\n).*?(<!-- /bench:{name} -->)", re.S)
-        if len(pattern.findall(text)) != 1:
-            sys.exit(f"tables.py: {doc} needs exactly one <!-- bench:{name} --> ... "
-                     f"<!-- /bench:{name} --> pair")
-        text = pattern.sub(lambda m: m[1] + "\n".join(lines) + "\n" + m[2], text)
-    return text
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--results", help="folder with machine.json and <program>.json")
@@ -438,26 +432,11 @@ def main():
         print("  " + c)
     if args.print:
         for name, lines in blocks.items():
-            print(f"\n<!-- bench:{name} -->\n" + "\n".join(lines) + f"\n<!-- /bench:{name} -->")
+            print("\n" + marked("bench", name, lines))
         return 0
     doc = os.path.relpath(args.doc, ROOT)
-    with open(args.doc) as f:
-        text = f.read()
-    new = replace_blocks(text, blocks, doc)
-    if args.check:
-        if new != text:
-            print(f"\n{doc}: benchmark tables differ from {os.path.relpath(folder, ROOT)}")
-            return 1
-        print(f"\n{doc}: up to date")
-        return 0
-    if new != text:
-        with open(args.doc, "w") as f:
-            f.write(new)
-        print(f"\n{doc}: benchmark tables written")
-    else:
-        print(f"\n{doc}: already up to date")
-    return 0
-
+    return write_or_check(args.doc, doc, blocks, "bench", args.check, "benchmark tables",
+                          os.path.relpath(folder, ROOT))
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -25,8 +25,11 @@ Standard library only, like bench/tables.py.
 import argparse
 import json
 import os
-import re
 import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from marked_blocks import marked, write_or_check  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ON, OFF = "elbow_on", "elbow_off"
@@ -269,16 +272,6 @@ def build_blocks(folder):
     return blocks, {"energy": energy_ranges, "hand error": hand_ranges}
 
 
-def replace_blocks(text, blocks, doc):
-    for name, lines in blocks.items():
-        pattern = re.compile(rf"(<!-- results:{name} -->\n).*?(<!-- /results:{name} -->)", re.S)
-        if len(pattern.findall(text)) != 1:
-            sys.exit(f"tables.py: {doc} needs exactly one <!-- results:{name} --> ... "
-                     f"<!-- /results:{name} --> pair")
-        text = pattern.sub(lambda m: m[1] + "\n".join(lines) + "\n" + m[2], text)
-    return text
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--results", default=os.path.join(ROOT, "docs", "results"),
@@ -297,25 +290,10 @@ def main():
             print(f"  {table_name:10s} {k}: {v}")
     if args.print:
         for name, lines in blocks.items():
-            print(f"\n<!-- results:{name} -->\n" + "\n".join(lines) + f"\n<!-- /results:{name} -->")
+            print("\n" + marked("results", name, lines))
         return 0
-    with open(args.doc) as f:
-        text = f.read()
-    new = replace_blocks(text, blocks, rel(args.doc))
-    if args.check:
-        if new != text:
-            print(f"\n{rel(args.doc)}: result tables differ from {rel(args.results)}")
-            return 1
-        print(f"\n{rel(args.doc)}: up to date")
-        return 0
-    if new != text:
-        with open(args.doc, "w") as f:
-            f.write(new)
-        print(f"\n{rel(args.doc)}: result tables written")
-    else:
-        print(f"\n{rel(args.doc)}: already up to date")
-    return 0
-
+    return write_or_check(args.doc, rel(args.doc), blocks, "results", args.check,
+                          "result tables", rel(args.results))
 
 if __name__ == "__main__":
     sys.exit(main())
