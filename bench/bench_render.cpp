@@ -67,7 +67,7 @@ Recording prototype_recording(const Model& model) {
       row.at(L.elbow_force(e)) = rest ? 8.0 + 3 * std::sin(3 * t + e) : 0.0;
       row.at(L.elbow_resting(e)) = rest ? 1.0 : 0.0;
     }
-    row[L.energy(Energy::in)] = 2.0 * t;
+    row[L.energy(Energy::electrical_in)] = 2.0 * t;
     rec.values.insert(rec.values.end(), row.begin(), row.end());
   }
   return rec;

@@ -12,35 +12,11 @@
 #include "engine/contact/contact_data.hpp"
 #include "engine/control/digital_loop.hpp"
 #include "engine/eigen_types.hpp"
+#include "engine/recording/energy_terms.hpp"
 #include "engine/model.hpp"
 #include "engine/run/step_log.hpp"
 
 namespace elbowsim {
-
-// Energy terms of the balance E_in - losses = change of stored energy.
-struct EnergyTerms {
-  double electrical_in = 0;    // [J] integral of v.i (or tau.qd without motors)
-  double joule = 0;            // [J] integral of i^T R i
-  double viscous = 0;          // [J] integral of qd^T (D + Dm) qd
-  double kinetic_links = 0;    // [J] 1/2 sum m v_c^2 + w^T I w
-  double kinetic_rotors = 0;   // [J] 1/2 qd^T Jm qd
-  double potential = 0;        // [J] -sum m g.c
-  double magnetic = 0;         // [J] 1/2 i^T L i (full motor model only)
-  // With contact:
-  double friction = 0;         // [J] integral of mu fn |v_slide| (energy lost to sliding)
-  double normal_work = 0;      // [J] integral of fn^T Jc qd, work of the table's push (0 if C holds)
-  double impact_loss = 0;      // [J] kinetic energy lost in impacts
-  double projection = 0;       // [J] stored-energy change made by drift projection
-  double external = 0;         // [J] work of the constant hand force
-  // With motors, E_in split by the sign of each motor's power v_j i_j: what
-  // the supply delivered and what the motors fed back (drawn - regenerated = E_in).
-  double drawn = 0;            // [J] integral of sum_j max(v_j i_j, 0)
-  double regenerated = 0;      // [J] integral of sum_j max(-v_j i_j, 0)
-  double joint_friction = 0;   // [J] integral of the sliding joints' friction loss (joint_friction)
-  double gear_loss = 0;        // [J] integral of the gears' loss (gear efficiency below 1)
-  double mechanical() const { return kinetic_links + kinetic_rotors + potential; }
-  double stored() const { return mechanical() + magnetic; }
-};
 
 struct Controller;
 

@@ -72,7 +72,7 @@ Playback::Playback(const Model& model, const Recording& rec) : dof_(model.dof) {
       link_fn_.push_back(column(rec, L.link_force(j), rows));
       link_rest_.push_back(column(rec, L.link_resting(j), rows));
     }
-  energy_in_ = column(rec, L.energy(Energy::in), rows);
+  energy_in_ = column(rec, L.energy(Energy::electrical_in), rows);
   // Hand path: drop samples closer than 1 mm to the last kept one.
   for (std::size_t r = 0; !hand_.empty() && r < rows; ++r) {
     const Eigen::Vector3d p(hand_[0][r], hand_[1][r], hand_[2][r]);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/recording/energy_terms.hpp"
 #include "report/quantity.hpp"
 
 namespace elbowsim::report {
@@ -19,49 +20,40 @@ double number(const Json& node, const char* key) {
                                                                          : 0.0;
 }
 
-// A few words for a bar chart's category.
-std::string short_label(const std::string& key, bool into) {
-  static const std::pair<const char*, const char*> names[] = {{"drawn", "drawn"},
-                                                              {"regenerated", "regenerated"},
-                                                              {"electrical_in", "input work"},
-                                                              {"potential", "PE"},
-                                                              {"kinetic", "KE"},
-                                                              {"magnetic", "magnetic"},
-                                                              {"joule", "Joule"},
-                                                              {"viscous", "viscous"},
-                                                              {"friction", "elbow friction"},
-                                                              {"impact_loss", "impacts"},
-                                                              {"joint_friction", "joint fr."},
-                                                              {"gear_loss", "gears"},
-                                                              {"normal_work", "table"},
-                                                              {"projection", "projection"},
-                                                              {"external", "hand force"}};
-  for (const auto& [k, name] : names)
-    if (key == k) {
-      const bool stored = key == "potential" || key == "kinetic" || key == "magnetic";
-      return stored ? std::string(name) + (into ? " given up" : " gained") : name;
-    }
-  return key;
+// A term's labels, from engine/recording/energy_terms.hpp by its member name; the two
+// kinetic terms are booked as one, "kinetic".
+struct Labels {
+  std::string in, out, short_in, short_out;
+};
+
+Labels labels(const std::string& key) {
+  if (key == "kinetic")
+    return {"kinetic energy given up", "kinetic energy gained", "KE given up", "KE gained"};
+  for (const EnergyTermInfo& t : kEnergyTerms) {
+    if (key != t.name) continue;
+    const std::string name = t.short_label;
+    if (t.role == EnergyRole::stored) return {t.label_in, t.label_out, name + " given up", name + " gained"};
+    return {t.label_in, t.label_out, name, name};
+  }
+  return {key, key, key, key};
 }
 
 // A term on its side. `amount` is counted in the term's own direction (into
 // the arm when `supplied`, out of it otherwise); a negative amount is booked
 // on the other side, a zero on its own.
-void book(EnergyFlow& flow, const std::string& key, const std::string& in_label,
-          const std::string& out_label, double amount, bool supplied) {
+void book(EnergyFlow& flow, const std::string& key, double amount, bool supplied) {
   const bool into = supplied ? !(amount < 0) : amount < 0;
+  const Labels l = labels(key);
   (into ? flow.in : flow.out)
-      .push_back({key, into ? in_label : out_label, std::abs(amount), short_label(key, into)});
+      .push_back({key, into ? l.in : l.out, std::abs(amount), into ? l.short_in : l.short_out});
 }
 
 // A loss: out of the arm; a negative loss (rounding) is booked in, and says so.
-void loss(EnergyFlow& flow, const std::string& key, const std::string& label, double value) {
-  book(flow, key, label + " (negative)", label, value, false);
-}
+void loss(EnergyFlow& flow, const std::string& key, double value) { book(flow, key, value, false); }
 
 // A stored energy: its increase is a destination, its decrease a source.
-void stored(EnergyFlow& flow, const std::string& key, const std::string& what, double change) {
-  book(flow, key, what + " given up", what + " gained", change, false);
+void stored(EnergyFlow& flow, const std::string& key, double change) {
+  book(flow, key, change, false);
 }
 
 double sum(const std::vector<EnergyTerm>& terms) {
@@ -111,40 +103,37 @@ std::optional<EnergyFlow> energy_flow(const Json& summary) {
   flow.electrical_in = number(f, "electrical_in");
   flow.motors = number(f, "drawn") != 0 || number(f, "regenerated") != 0;
   if (flow.motors) {
-    flow.in.push_back({"drawn", "drawn from the supply", number(f, "drawn"), "drawn"});
-    flow.out.push_back(
-        {"regenerated", "fed back to the supply", number(f, "regenerated"), "regenerated"});
+    // E_in's two parts, each on its side as recorded (each >= 0).
+    const Labels drawn = labels("drawn"), regenerated = labels("regenerated");
+    flow.in.push_back({"drawn", drawn.in, number(f, "drawn"), drawn.short_in});
+    flow.out.push_back({"regenerated", regenerated.out, number(f, "regenerated"), regenerated.short_out});
   } else if (flow.electrical_in != 0) {
-    book(flow, "electrical_in", "work of the joint inputs", "work done on the joint inputs",
-         flow.electrical_in, true);
+    book(flow, "electrical_in", flow.electrical_in, true);
   }
-  stored(flow, "potential", "potential energy", delta("potential"));
-  stored(flow, "kinetic", "kinetic energy", delta("kinetic_links") + delta("kinetic_rotors"));
-  if (flow.motors) stored(flow, "magnetic", "magnetic energy", delta("magnetic"));
-  loss(flow, "joule", "Joule loss (windings)", number(f, "joule"));
-  loss(flow, "viscous", "viscous loss (joints, gears)", number(f, "viscous"));
+  stored(flow, "potential", delta("potential"));
+  stored(flow, "kinetic", delta("kinetic_links") + delta("kinetic_rotors"));
+  if (flow.motors) stored(flow, "magnetic", delta("magnetic"));
+  // The losses in list order: those every run has, those of contact in a
+  // contact run, the others where they are not 0.
   const bool contact = summary.contains("contact") && summary["contact"].is_object() &&
                        summary["contact"].value("enabled", false);
-  if (contact) {
-    loss(flow, "friction", "elbow friction (sliding)", number(f, "friction"));
-    loss(flow, "impact_loss", "impacts (landings)", number(f, "impact_loss"));
+  for (const EnergyTermInfo& t : kEnergyTerms) {
+    if (t.role != EnergyRole::lost || !*t.summary_key) continue;
+    const double value = number(f, t.summary_key);
+    const bool shown = t.group == EnergyGroup::always     ? true
+                       : t.group == EnergyGroup::contact ? contact
+                                                         : value != 0;
+    if (shown) loss(flow, t.summary_key, value);
   }
-  for (const auto& [key, label] :
-       {std::pair<const char*, const char*>{"joint_friction", "joint friction"},
-        {"gear_loss", "gear loss"}})
-    if (number(f, key) != 0) loss(flow, key, label, number(f, key));
   flow.residual = summary.value("balance_residual", 0.0);
   const double scale = std::max(sum(flow.in), sum(flow.out));
-  for (const auto& [key, label] : {std::pair<const char*, const char*>{"normal_work", "table"},
-                                   {"projection", "projection steps"}})
-    if (std::abs(delta(key)) > kNegligible * scale)
-      book(flow, key, std::string("work of the ") + label, std::string("work against the ") + label,
-           delta(key), true);
+  for (const char* key : {"normal_work", "projection"})
+    if (std::abs(delta(key)) > kNegligible * scale) book(flow, key, delta(key), true);
   // The work of a hand force is in the balance but not in summary.json: what
   // the recorded terms leave over beyond the residual.
   const double external = flow.residual - (sum(flow.in) - sum(flow.out));
   if (std::abs(external) > 1e-7 * std::max(scale, 1e-300))
-    book(flow, "external", "work of the hand force", "work against the hand force", external, true);
+    book(flow, "external", external, true);
   order(flow.in, flow.motors ? "drawn" : "electrical_in");
   order(flow.out, "regenerated");
   flow.total_in = sum(flow.in);

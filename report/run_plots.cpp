@@ -159,7 +159,7 @@ Planned power(const RunData& run) {
 
 Planned energy(const RunData& run) {
   const Recording& rec = run.trajectory;
-  const auto e_in = column(rec, rec.layout.energy(Energy::in));
+  const auto e_in = column(rec, rec.layout.energy(Energy::electrical_in));
   LinePlot p = time_plot(run, "Cumulative energy", plot::linear_axis("energy", "J"));
   const auto t = column(rec, rec.layout.time());
   p.series.push_back(series("E_in (electrical in, net)", t, e_in));
@@ -352,7 +352,7 @@ FigureSet write_comparison_plots(const std::vector<RunData>& runs, const fs::pat
   add_comparison_lead_figures(runs, report_folder, set);
   std::vector<Planned> planned;
   planned.push_back(overlay(runs, "energy", "Cumulative energy", plot::linear_axis("energy", "J"),
-                            {[](const TrajectoryLayout& L) { return L.energy(Energy::in); },
+                            {[](const TrajectoryLayout& L) { return L.energy(Energy::electrical_in); },
                              [](const TrajectoryLayout& L) { return L.energy(Energy::joule); }},
                             "Electrical energy in (solid) and Joule loss (dashed), per run."));
   std::vector<const Recording*> recordings;

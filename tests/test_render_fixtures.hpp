@@ -59,7 +59,7 @@ inline elbowsim::Recording recording(bool desired_hand = false) {
     for (int a = 0; a < 3; ++a) testing::set(rec, k, L.hand(a), hand[a]);
     testing::set(rec, k, L.elbow_force(0), fn[k]);
     testing::set(rec, k, L.elbow_resting(0), k >= 5 ? 1.0 : 0.0);
-    testing::set(rec, k, L.energy(Energy::in), t);
+    testing::set(rec, k, L.energy(Energy::electrical_in), t);
   }
   return rec;
 }

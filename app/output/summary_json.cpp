@@ -14,14 +14,12 @@ namespace elbowsim {
 
 namespace {
 
+// The terms with a summary key, in the order of engine/recording/energy_terms.hpp.
 nlohmann::ordered_json energy_json(const EnergyTerms& e) {
-  return {{"electrical_in", e.electrical_in}, {"joule", e.joule},
-          {"viscous", e.viscous},             {"kinetic_links", e.kinetic_links},
-          {"kinetic_rotors", e.kinetic_rotors}, {"potential", e.potential},
-          {"magnetic", e.magnetic}, {"friction", e.friction},
-          {"normal_work", e.normal_work}, {"impact_loss", e.impact_loss},
-          {"projection", e.projection}, {"drawn", e.drawn}, {"regenerated", e.regenerated},
-          {"joint_friction", e.joint_friction}, {"gear_loss", e.gear_loss}};
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  for (const EnergyTermInfo& t : kEnergyTerms)
+    if (*t.summary_key) j[t.summary_key] = e.*t.value;
+  return j;
 }
 
 nlohmann::ordered_json model_json(const Model& m) {

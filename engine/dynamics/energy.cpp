@@ -33,9 +33,8 @@ void stored_energy(const Model& model, const Data& data, ConstVec qd, ConstVec c
 }
 
 double balance_residual(const EnergyTerms& now, const EnergyTerms& initial) {
-  const double supplied = now.electrical_in + now.normal_work + now.projection + now.external;
-  const double lost = now.joule + now.viscous + now.friction + now.impact_loss + now.joint_friction +
-                      now.gear_loss;
+  const double supplied = energy_sum(now, EnergyRole::supplied);
+  const double lost = energy_sum(now, EnergyRole::lost);
   return supplied - lost - (now.stored() - initial.stored());
 }
 

@@ -12,9 +12,10 @@ namespace elbowsim {
 void stored_energy(const Model& model, const Data& data, ConstVec qd, ConstVec current,
                    EnergyTerms& out);
 
-// (E_in + E_normal + E_projection) - (E_joule + E_viscous + E_friction +
-// E_impact) - (E_stored - E_stored(0)): zero for exact integration, so it
-// measures the integration error.
+// (supplied) - (lost) - (E_stored - E_stored(0)), the roles of energy_terms.hpp
+// (E_in + E_normal + E_projection + the hand force's work) - (E_joule + E_viscous
+// + E_friction + E_impact + E_joint_friction + E_gear) - ...: zero for exact
+// integration, so it measures the integration error.
 double balance_residual(const EnergyTerms& now, const EnergyTerms& initial);
 
 }  // namespace elbowsim

@@ -85,7 +85,7 @@ void hand_metrics(const Series& s, Metrics& m) {
 void energy_metrics(const Series& s, Metrics& m) {
   const TrajectoryLayout& L = s.rec.layout;
   const std::size_t last = s.rows() - 1;
-  add(m, "energy_in", s.at(last, L.energy(Energy::in)));
+  add(m, "energy_in", s.at(last, L.energy(Energy::electrical_in)));
   add(m, "joule", s.at(last, L.energy(Energy::joule)));
   if (L.energy(Energy::drawn) < 0) return;
   add(m, "energy_drawn", s.at(last, L.energy(Energy::drawn)));

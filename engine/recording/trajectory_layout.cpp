@@ -11,11 +11,6 @@ void add_joint_columns(std::vector<Column>& cols, const char* prefix, const char
   for (int j = 0; j < n; ++j) cols.push_back({prefix + std::to_string(j), unit});
 }
 
-constexpr const char* kEnergyNames[] = {"E_in",  "E_joule",   "E_viscous", "KE_links",
-                                        "KE_rotors", "PE",    "E_magnetic", "E_friction",
-                                        "E_normal", "E_impact", "E_projection", "E_drawn",
-                                        "E_regenerated", "E_joint_friction", "E_gear"};
-
 bool starts_with(const std::string& s, const std::string& prefix) {
   return s.size() > prefix.size() && s.compare(0, prefix.size(), prefix) == 0;
 }
@@ -64,21 +59,24 @@ TrajectoryLayout::TrajectoryLayout(Groups groups) : groups_(std::move(groups)) {
   }
   // Each energy column's index, recorded as it is laid out (-1: not recorded).
   energy_index_.fill(-1);
-  auto add_energy = [&](Energy e) {
-    energy_index_[static_cast<std::size_t>(e)] = size();
-    cols.push_back({kEnergyNames[static_cast<int>(e)], "J"});
-  };
-  for (Energy e : {Energy::in, Energy::joule, Energy::viscous, Energy::kinetic_links,
-                   Energy::kinetic_rotors, Energy::potential, Energy::magnetic})
-    add_energy(e);
-  if (groups_.contact)
-    for (Energy e : {Energy::friction, Energy::normal, Energy::impact, Energy::projection})
-      add_energy(e);
-  if (groups_.motors)
-    for (Energy e : {Energy::drawn, Energy::regenerated}) add_energy(e);
-  if (groups_.joint_friction) add_energy(Energy::joint_friction);
-  if (groups_.gear) add_energy(Energy::gear);
+  for (const EnergyTermInfo& t : kEnergyTerms) {
+    if (!*t.column || !has_energy_group(groups_, t.group)) continue;
+    energy_index_[static_cast<std::size_t>(t.term)] = size();
+    cols.push_back({t.column, "J"});
+  }
   cols.push_back({"balance_residual", "J"});
+}
+
+bool TrajectoryLayout::has_energy_group(const Groups& groups, EnergyGroup group) {
+  switch (group) {
+    case EnergyGroup::always: return true;
+    case EnergyGroup::contact: return groups.contact;
+    case EnergyGroup::motors: return groups.motors;
+    case EnergyGroup::joint_friction: return groups.joint_friction;
+    case EnergyGroup::gear: return groups.gear;
+    case EnergyGroup::hand_force: return false;  // its work is not recorded
+  }
+  return false;
 }
 
 int TrajectoryLayout::energy(Energy e) const { return energy_index_[static_cast<std::size_t>(e)]; }
@@ -119,10 +117,10 @@ TrajectoryLayout TrajectoryLayout::from_columns(const std::vector<Column>& colum
       if (seen >= 2 && std::find(g.elbows.begin(), g.elbows.end(), elbow) == g.elbows.end())
         g.elbows.push_back(elbow);
     }
-  g.contact = has("E_friction") || has("fn_link0") || !g.elbows.empty();
+  g.contact = has(energy_term(Energy::friction).column) || has("fn_link0") || !g.elbows.empty();
   g.friction = g.contact && (has("E_friction_link0") || has("E_friction_link1"));
-  g.joint_friction = has("E_joint_friction");
-  g.gear = has("E_gear");
+  g.joint_friction = has(energy_term(Energy::joint_friction).column);
+  g.gear = has(energy_term(Energy::gear_loss).column);
   TrajectoryLayout layout(std::move(g));
   const std::vector<Column>& expected = layout.columns();
   auto text = [](const Column& c) { return "'" + c.name + " [" + c.unit + "]'"; };

@@ -17,14 +17,18 @@
 //   E_friction_<e> [J] per elbow, then E_friction_link<j> [J] per link (contact with
 //     friction: the energy friction took from the arm at that body so far, E_friction
 //     split by body);
-//   E_in, E_joule, E_viscous, KE_links, KE_rotors, PE, E_magnetic [J];
-//   E_friction, E_normal, E_impact, E_projection [J] (contact);
+//   the energy terms with a column, in the order of engine/recording/energy_terms.hpp [J]:
+//     E_in, E_joule, E_viscous, KE_links, KE_rotors, PE, E_magnetic;
+//     E_friction, E_normal, E_impact, E_projection (contact);
+//     E_drawn, E_regenerated (motors); E_joint_friction; E_gear;
 //   balance_residual [J].
 #pragma once
 
 #include <array>
 #include <string>
 #include <vector>
+
+#include "engine/recording/energy_terms.hpp"
 
 namespace elbowsim {
 
@@ -33,12 +37,6 @@ struct Column {
   std::string unit;  // e.g. "rad"
 };
 
-// The energy columns, in order (friction to projection: contact only;
-// drawn, regenerated: motors only, after them).
-enum class Energy {
-  in, joule, viscous, kinetic_links, kinetic_rotors, potential, magnetic,
-  friction, normal, impact, projection, drawn, regenerated, joint_friction, gear
-};
 
 class TrajectoryLayout {
  public:
@@ -53,6 +51,9 @@ class TrajectoryLayout {
     bool joint_friction = false;      // E_joint_friction
     bool gear = false;                // E_gear (gear efficiency below 1)
   };
+
+  // Whether a run of these groups has the energy terms of `group`.
+  static bool has_energy_group(const Groups& groups, EnergyGroup group);
 
   TrajectoryLayout() = default;
   explicit TrajectoryLayout(Groups groups);
@@ -91,7 +92,7 @@ class TrajectoryLayout {
   bool has_body_friction() const { return friction_ >= 0; }
   int elbow_friction(int k) const { return friction_ < 0 ? -1 : friction_ + k; }
   int link_friction(int j) const { return friction_ < 0 ? -1 : friction_ + elbows() + j; }
-  int energy(Energy e) const;
+  int energy(Energy e) const;  // -1 for a term without a column or not recorded
   int balance_residual() const { return size() - 1; }
   // Index of the elbow called `name`, or -1.
   int elbow(const std::string& name) const;
@@ -101,7 +102,7 @@ class TrajectoryLayout {
   std::vector<Column> columns_;
   int q_ = 1, current_ = -1, torque_ = -1, hand_ = -1, desired_ = -1, elbow_ = -1, link_ = -1,
       friction_ = -1;
-  std::array<int, static_cast<std::size_t>(Energy::gear) + 1> energy_index_{};  // energy(): -1 if absent
+  std::array<int, kEnergyTermCount> energy_index_{};  // energy(): -1 if absent
 };
 
 }  // namespace elbowsim

@@ -23,43 +23,44 @@ void stiff_rates(const Model& model, Eigen::Ref<Eigen::ArrayXd> lambda) {
 
 namespace {
 
-// Powers that feed the energy integrals: electrical input, Joule loss, viscous
-// loss (and with contact, friction loss and the table's normal work). Without
-// motors the input is the work of the input torques: data.actuation less the
-// hand force's share, whose power `hand_power` has its own integral.
-void energy_rates(const Model& model, Data& data, ConstVec qd, double hand_power,
-                  Eigen::Ref<Eigen::VectorXd> out) {
+// Powers that feed the energy integrals (each into its slot): electrical
+// input, Joule loss, viscous loss (and with contact, friction loss and the
+// table's normal work). Without motors the input is the work of the input
+// torques: data.actuation less the hand force's share, whose power
+// `hand_power` has its own integral.
+void energy_rates(const Model& model, Data& data, const StateLayout& s, ConstVec qd,
+                  double hand_power, Eigen::Ref<Eigen::VectorXd> N) {
+  const auto rate = [&](Energy e) -> double& { return N[s.slot(e)]; };
   if (model.has_motor()) {
-    out[0] = data.voltage.dot(data.current);
-    out[1] = data.current.dot(model.resistance.cwiseProduct(data.current));
-    // E_in split by the sign of each motor's power (after the contact terms).
+    rate(Energy::electrical_in) = data.voltage.dot(data.current);
+    rate(Energy::joule) = data.current.dot(model.resistance.cwiseProduct(data.current));
+    // E_in split by the sign of each motor's power.
     double drawn = 0, regenerated = 0;
     for (int j = 0; j < model.dof; ++j) {
       const double p = data.voltage[j] * data.current[j];
       (p > 0 ? drawn : regenerated) += std::abs(p);
     }
-    const int k = model.effects.contact ? 5 : 3;
-    out[k] = drawn;
-    out[k + 1] = regenerated;
+    rate(Energy::drawn) = drawn;
+    rate(Energy::regenerated) = regenerated;
   } else {
-    out[0] = data.actuation.dot(qd) - hand_power;
-    out[1] = 0.0;
+    rate(Energy::electrical_in) = data.actuation.dot(qd) - hand_power;
+    rate(Energy::joule) = 0.0;
   }
-  out[2] = model.effects.damping ? qd.dot(model.viscous.cwiseProduct(qd)) : 0.0;
+  rate(Energy::viscous) = model.effects.damping ? qd.dot(model.viscous.cwiseProduct(qd)) : 0.0;
   if (!model.effects.contact) return;
   // Table power on the arm: f^T Jf qd = the normal rows' fn^T Jc qd (normal
   // work, zero while C holds) - the friction loss (sliding rows: mu fn |v_t|
   // >= 0; tangent rows of sticking slots: -f_t v_t, zero while they stick).
   const ContactData& c = data.contact;
   if (c.active.empty()) {
-    out[3] = out[4] = 0.0;
+    rate(Energy::friction) = rate(Energy::normal_work) = 0.0;
     return;
   }
   const Eigen::Index pn = c.normal_rows();
   const double normal = c.fn.head(pn).dot(c.Cd.head(pn));
   data.contact.Jf_qd.noalias() = c.Jf * qd;
-  out[3] = normal - c.fn.dot(c.Jf_qd);
-  out[4] = normal;
+  rate(Energy::friction) = normal - c.fn.dot(c.Jf_qd);
+  rate(Energy::normal_work) = normal;
 }
 
 // E_friction's rate split by contact body (each elbow, then each link): each
@@ -122,11 +123,12 @@ void nonstiff_rates(const Model& model, Data& data, double t, ConstVec x,
   if (s.current >= 0)
     N.segment(s.current, s.n) =
         (data.voltage - model.km.cwiseProduct(qd)).cwiseQuotient(model.inductance);
-  energy_rates(model, data, qd, hand_power, N.segment(s.energy, s.energy_terms));
-  if (s.external >= 0) N[s.external] = hand_power;
+  energy_rates(model, data, s, qd, hand_power, N);
+  if (s.slot(Energy::external) >= 0) N[s.slot(Energy::external)] = hand_power;
   // Friction loss of the sliding joints (a stuck joint does not move: qd_j = 0).
-  if (s.joint_friction >= 0) N[s.joint_friction] = -data.joint_friction_torque.dot(qd);
-  if (s.gear >= 0) N[s.gear] = data.gear_loss_power;
+  if (s.slot(Energy::joint_friction) >= 0)
+    N[s.slot(Energy::joint_friction)] = -data.joint_friction_torque.dot(qd);
+  if (s.slot(Energy::gear_loss) >= 0) N[s.slot(Energy::gear_loss)] = data.gear_loss_power;
   if (s.body_friction >= 0) body_friction_rates(model, data, N.segment(s.body_friction, s.size - s.body_friction));
 }
 

@@ -100,17 +100,8 @@ void write_contacts(const Model& model, const TrajectoryLayout& L, const Data& d
 
 void write_energies(const TrajectoryLayout& L, const Data& data, double* row) {
   const EnergyTerms& e = data.energy;
-  const std::pair<Energy, double> terms[] = {
-      {Energy::in, e.electrical_in},       {Energy::joule, e.joule},
-      {Energy::viscous, e.viscous},        {Energy::kinetic_links, e.kinetic_links},
-      {Energy::kinetic_rotors, e.kinetic_rotors}, {Energy::potential, e.potential},
-      {Energy::magnetic, e.magnetic},      {Energy::friction, e.friction},
-      {Energy::normal, e.normal_work},     {Energy::impact, e.impact_loss},
-      {Energy::projection, e.projection},  {Energy::drawn, e.drawn},
-      {Energy::regenerated, e.regenerated}, {Energy::joint_friction, e.joint_friction},
-      {Energy::gear, e.gear_loss}};
-  for (const auto& [column, value] : terms)
-    if (L.energy(column) >= 0) row[L.energy(column)] = value;
+  for (const EnergyTermInfo& t : kEnergyTerms)
+    if (L.energy(t.term) >= 0) row[L.energy(t.term)] = e.*t.value;
   row[L.balance_residual()] = balance_residual(e, data.energy_initial);
 }
 

@@ -102,19 +102,9 @@ void evaluate_outputs(const Model& model, Data& data) {
   if (s.current >= 0) data.current = data.x.segment(s.current, s.n);
   // nonstiff_rates leaves the full di/dt in data.current_rate (motor_stage).
   stored_energy(model, data, data.qd, data.current, data.energy);
-  data.energy.electrical_in = data.x[s.energy];
-  data.energy.joule = data.x[s.energy + 1];
-  data.energy.viscous = data.x[s.energy + 2];
-  if (s.external >= 0) data.energy.external = data.x[s.external];
-  if (s.joint_friction >= 0) data.energy.joint_friction = data.x[s.joint_friction];
-  if (s.gear >= 0) data.energy.gear_loss = data.x[s.gear];
-  if (s.drawn >= 0) {
-    data.energy.drawn = data.x[s.drawn];
-    data.energy.regenerated = data.x[s.drawn + 1];
-  }
+  for (const EnergyTermInfo& term : kEnergyTerms)  // the integrated terms from their slots
+    if (s.slot(term.term) >= 0) data.energy.*term.value = data.x[s.slot(term.term)];
   if (!model.effects.contact) return;
-  data.energy.friction = data.x[s.energy + 3];
-  data.energy.normal_work = data.x[s.energy + 4];
   data.energy.impact_loss = data.contact.impact_loss;
   data.energy.projection = data.contact.projection_energy;
 }

@@ -126,7 +126,7 @@ TEST_CASE("metrics: hand path length, energy in and Joule loss of a recording") 
   for (std::size_t r = 0; r < 5; ++r) {
     set(rec, r, L.hand(0), 0.03 * double(r));  // 3-4-5 steps: 5 cm each
     set(rec, r, L.hand(2), 0.04 * double(r));
-    set(rec, r, L.energy(Energy::in), 2.0 * double(r));
+    set(rec, r, L.energy(Energy::electrical_in), 2.0 * double(r));
     set(rec, r, L.energy(Energy::joule), 0.5 * double(r));
   }
   const Metrics m = compute_metrics(rec);

@@ -75,7 +75,7 @@ TEST_CASE("trajectory layout: the index accessors point at their columns, -1 whe
   CHECK(name(L.elbow_force(0)) == "fn_elbow");
   CHECK(name(L.elbow_distance(0)) == "d_elbow");
   CHECK(name(L.elbow_resting(0)) == "rest_elbow");
-  CHECK(name(L.energy(Energy::in)) == "E_in");
+  CHECK(name(L.energy(Energy::electrical_in)) == "E_in");
   CHECK(name(L.energy(Energy::magnetic)) == "E_magnetic");
   CHECK(name(L.energy(Energy::projection)) == "E_projection");
   CHECK(name(L.energy(Energy::drawn)) == "E_drawn");
@@ -95,7 +95,7 @@ TEST_CASE("trajectory layout: the index accessors point at their columns, -1 whe
   CHECK(fname(F.link_friction(0)) == "E_friction_link0");
   CHECK(fname(F.link_friction(1)) == "E_friction_link1");
   CHECK(F.columns()[std::size_t(F.link_friction(1))].unit == "J");
-  CHECK(F.link_friction(1) + 1 == F.energy(Energy::in));
+  CHECK(F.link_friction(1) + 1 == F.energy(Energy::electrical_in));
   const TrajectoryLayout bare(Groups{1, false, false, false, {}});
   CHECK(bare.size() == 1 + 3 + 1 + 3 + 7 + 1);
   CHECK(bare.current(0) == -1);

@@ -88,14 +88,14 @@ TEST_CASE("nonstiff_rates with a hand force: J^T F on the joints, F.v its own in
   m.hand_load.force = Eigen::Vector3d(0, 0, f);
   finalize(m);
   const StateLayout s(m);
-  REQUIRE(s.external >= 0);
+  REQUIRE(s.slot(Energy::external) >= 0);
   Data data(m);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(s.size), N(s.size);
   nonstiff_rates(m, data, 0.0, x, N);
   CHECK(std::abs(N[s.qd()]) < 1e-14);  // held: gravity torque 2.4525 N m balanced
   x[s.qd()] = 1.5;
   nonstiff_rates(m, data, 0.0, x, N);
-  CHECK(approx(N[s.external], f * 0.5 * 1.5, 0, 1e-14));
+  CHECK(approx(N[s.slot(Energy::external)], f * 0.5 * 1.5, 0, 1e-14));
   CHECK(std::abs(N[s.energy]) < 1e-14);  // no input torques: E_in does not count the force
 }
 

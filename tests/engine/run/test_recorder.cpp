@@ -90,8 +90,8 @@ TEST_CASE("record_sample writes every column (no NaN left) from Data, column by 
   CHECK(at(L.elbow_force(0)) > 0);  // the arm leans on its elbow
   CHECK(at(L.elbow_distance(0)) == data.contact.detected[0].distance);
   CHECK(at(L.elbow_resting(0)) == 1.0);
-  CHECK(at(L.energy(Energy::in)) == data.energy.electrical_in);
+  CHECK(at(L.energy(Energy::electrical_in)) == data.energy.electrical_in);
   CHECK(at(L.energy(Energy::magnetic)) == data.energy.magnetic);
-  CHECK(at(L.energy(Energy::normal)) == data.energy.normal_work);
+  CHECK(at(L.energy(Energy::normal_work)) == data.energy.normal_work);
   CHECK(at(L.balance_residual()) == balance_residual(data.energy, data.energy_initial));
 }
