@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "report/quantity.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::report {
 
