@@ -68,7 +68,6 @@ std::string percent(double fraction, PercentDigits digits) {
   if (!std::isfinite(p)) return kNotFinite;
   switch (digits) {
     case PercentDigits::two:
-      if (p != 0 && std::abs(p) < 0.01) return significant(p, 2) + " %";
       if (std::abs(p) >= 10) return significant(std::round(p), 4) + " %";
       return significant(p, 2) + " %";
     case PercentDigits::tenths:
