@@ -19,7 +19,7 @@ std::string significant(double x, int digits, Sign sign) {
 }
 
 std::string fixed(double x, int decimals) {
-  // A double below 1e308 has at most 309 digits before the point.
+  // The largest double has 309 digits before the point; room for 80 decimals after it.
   char text[400];
   std::snprintf(text, sizeof text, "%.*f", decimals, x);
   return text;

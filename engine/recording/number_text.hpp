@@ -24,7 +24,7 @@ enum class Sign { if_negative, always };
 // printf's %+.*g).
 std::string significant(double x, int digits = 6, Sign sign = Sign::if_negative);
 
-// `decimals` digits after the point, printf's %.*f ("3.14", "12.0", "-0.50").
+// `decimals` digits after the point (up to 80), printf's %.*f ("3.14", "12.0", "-0.50").
 std::string fixed(double x, int decimals);
 
 // 17 significant digits, printf's %.17g: reads back as the same double. For values written
