@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/recording/number_text.hpp"
 #include "render/nice_scale.hpp"
 #include "render/overlay.hpp"
 
@@ -120,7 +121,7 @@ std::vector<std::string> FrameSource::overlay(double t) const {
   std::vector<std::string> lines =
       overlay_lines(title_, model_, playback_.at(t), options_.landed_window);
   if (model_.effects.contact && options_.force_scale > 0 && playback_.max_force() > 0)
-    lines.push_back("force arrows: " + short_number(0.01 / options_.force_scale) + " N per cm");
+    lines.push_back("force arrows: " + significant(0.01 / options_.force_scale, 3) + " N per cm");
   return lines;
 }
 

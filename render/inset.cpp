@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "engine/recording/number_text.hpp"
 #include "render/nice_scale.hpp"
 
 namespace elbowsim {
@@ -175,7 +176,7 @@ Inset make_inset(const InsetPlan& plan, const PixelRect& rect, const Camera& mai
   inset.scale_label = length_label(plan.scale_bar);
   const double m = inset.magnification;
   inset.title =
-      "hand path \u00d7" + short_number(m >= 10 ? std::round(m) : std::round(10 * m) / 10);
+      "hand path \u00d7" + significant(m >= 10 ? std::round(m) : std::round(10 * m) / 10, 3);
   return inset;
 }
 

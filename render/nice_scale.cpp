@@ -1,7 +1,8 @@
 #include "render/nice_scale.hpp"
 
 #include <cmath>
-#include <cstdio>
+
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim {
 
@@ -34,21 +35,11 @@ double nice_floor(double x) {
   return p;
 }
 
-std::string short_number(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g", x);
-  return buffer;
-}
-
 std::string length_label(double metres) {
-  struct Unit {
-    double size;
-    const char* name;
-  };
-  // The largest unit in which the length is at least 1.
-  for (const Unit& u : {Unit{1, "m"}, Unit{0.01, "cm"}, Unit{1e-3, "mm"}, Unit{1e-6, "µm"}})
-    if (metres >= u.size * (1 - 1e-9)) return short_number(metres / u.size) + " " + u.name;
-  return short_number(metres * 1e9) + " nm";
+  // The largest unit in which the length is at least 1 (to rounding); the centimetre too,
+  // which an SI prefix ladder (quantity()) skips.
+  static constexpr Unit units[] = {{"m", 1}, {"cm", 100}, {"mm", 1e3}, {"µm", 1e6}, {"nm", 1e9}};
+  return in_units(metres, units, 3, 1e-9);
 }
 
 }  // namespace elbowsim

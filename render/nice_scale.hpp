@@ -14,7 +14,5 @@ double nice_floor(double x);
 // A length in the unit that makes it a small whole number: "500 µm", "2 mm",
 // "1 cm", "20 cm", "1 m" (UTF-8).
 std::string length_label(double metres);
-// A number without trailing zeros: 2, 0.5, 12.5.
-std::string short_number(double x);
 
 }  // namespace elbowsim

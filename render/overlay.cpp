@@ -4,18 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
+
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim {
 
 namespace {
-
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, pattern, value);
-  return buffer;
-}
 
 const char* state_word(const ElbowSample& e, double t, double window) {
   if (!e.resting) return t - e.lifted_at <= window ? "lifted" : "free";
@@ -121,23 +116,23 @@ void scale_bar(cairo_t* cr, const InsetOverlay& inset, double size, double pad) 
 
 std::vector<std::string> overlay_lines(const std::string& title, const Model& model,
                                        const PlaybackState& state, double landed_window) {
-  std::vector<std::string> lines{title, format("t = %.3f s", state.t)};
-  if (state.energy_in) lines.push_back(format("E_in = %.3f J", *state.energy_in));
+  std::vector<std::string> lines{title, "t = " + fixed(state.t, 3) + " s"};
+  if (state.energy_in) lines.push_back("E_in = " + fixed(*state.energy_in, 3) + " J");
   if (!model.effects.contact) return lines;
   for (std::size_t k = 0; k < model.elbows.size() && k < state.elbows.size(); ++k) {
     const ElbowSample& e = state.elbows[k];
     std::string line = model.elbows[k].name + ": ";
-    if (e.resting) line += format("%.2f N ", e.fn);
+    if (e.resting) line += fixed(e.fn, 2) + " N ";
     line += state_word(e, state.t, landed_window);
     if (!e.resting && e.distance)
-      line += format(", %.1f mm above the table", 1e3 * std::max(*e.distance, 0.0));
+      line += ", " + fixed(1e3 * std::max(*e.distance, 0.0), 1) + " mm above the table";
     lines.push_back(line);
   }
   // A link's own solid resting (not an elbow): named only while it rests.
   for (std::size_t j = 0; j < state.links.size(); ++j)
     if (state.links[j].resting)
       lines.push_back("link" + std::to_string(j) +
-                      format(" (not an elbow): %.2f N resting", state.links[j].fn));
+                      " (not an elbow): " + fixed(state.links[j].fn, 2) + " N resting");
   return lines;
 }
 

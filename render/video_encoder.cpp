@@ -4,22 +4,16 @@
 
 #include <cerrno>
 #include <cstring>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 
+#include "engine/recording/number_text.hpp"
 #include "render/video_library.hpp"
 #include "render/yuv.hpp"
 
 namespace elbowsim {
 
 namespace {
-
-std::string format_fps(double fps) {
-  std::ostringstream s;
-  s << fps;
-  return s.str();
-}
 
 // x264's settings, the same as the ffmpeg command's below.
 const char* const kPreset = "veryfast";  // x264 speed/size trade-off; crf 20 looks clean
@@ -72,7 +66,7 @@ std::string frames_to_video_command(const std::filesystem::path& frames,
                                     const std::filesystem::path& video, double fps) {
   std::string colour;
   for (const char* a : kColour) colour += std::string(" ") + a;
-  return "ffmpeg -framerate " + format_fps(fps) + " -i '" + (frames / "frame_%05d.png").string() +
+  return "ffmpeg -framerate " + significant(fps) + " -i '" + (frames / "frame_%05d.png").string() +
          "' -c:v libx264 -preset " + kPreset + " -x264-params " + kX264Params + " -crf " + kCrf +
          " -vf scale=out_color_matrix=bt709:out_range=tv -pix_fmt yuv420p" + colour +
          " -movflags +faststart '" + video.string() + "'";

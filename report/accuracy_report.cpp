@@ -1,10 +1,10 @@
 #include "report/accuracy_report.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <sstream>
 
+#include "engine/recording/number_text.hpp"
 #include "report/html.hpp"
 #include "report/plot/plot.hpp"
 #include "report/plots_aside.hpp"
@@ -42,12 +42,12 @@ double value_of(const Json& point, const Measure& m) {
   return v.is_number() ? v.get<double>() : std::nan("");
 }
 
+// A measure as the tables show it: "—" where missing (NaN), "differ" where value_of says
+// the runs' events differ (infinity), else `digits` significant digits.
 std::string sci(double x, int digits = 3) {
   if (std::isnan(x)) return "—";
   if (std::isinf(x)) return "differ";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*g", digits, x);
-  return text;
+  return significant(x, digits);
 }
 
 std::string setting_text(const Json& p) {
@@ -106,9 +106,7 @@ std::string cell(const Json& v) {
   if (v.is_string()) return v.get<std::string>();
   if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
   if (v.is_number_integer()) return std::to_string(v.get<long>());
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", v.get<double>());
-  return text;
+  return round_trip(v.get<double>());
 }
 
 std::string quoted(std::string text) {

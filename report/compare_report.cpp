@@ -1,13 +1,12 @@
 #include "report/compare_report.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
+#include "engine/recording/number_text.hpp"
 #include "report/headline.hpp"
 #include "report/html.hpp"
 #include "report/plots_aside.hpp"
-#include "report/quantity.hpp"
 
 namespace elbowsim::report {
 
@@ -65,12 +64,6 @@ std::string runs_table(const std::vector<RunData>& runs, const fs::path& out) {
   return t + "</table>\n";
 }
 
-std::string ratio(double a, double b) {
-  char text[32];
-  std::snprintf(text, sizeof text, "×%.3g", b / a);
-  return text;
-}
-
 // Run `run` against the first: "same" within the noise floor; else "+12.3 %",
 // or the difference itself where the first run's value is within the floor
 // of 0; settings "differs"; timings a ratio, never a percentage.
@@ -86,21 +79,18 @@ std::string relative_text(const ComparedMetric& m, std::size_t run) {
       return same ? "same" : "differs";
     case MetricKind::timing:
       if (same) return m.path == "wall_seconds" ? "same (timing noise)" : "same";
-      return a != 0 ? ratio(a, b) + " (timing)" : "differs (timing)";
+      return a != 0 ? "×" + significant(b / a, 3) + " (timing)" : "differs (timing)";
     default:
       break;
   }
   if (same) return "same";
   if (std::abs(a) > m.floor.value && m.relative[run]) {
     // Up to doubling as a percentage; beyond, as a factor ("×8.72").
-    if (*m.relative[run] >= 1 && a > 0) return ratio(a, b);
-    char text[32];
-    std::snprintf(text, sizeof text, "%+.3g %%", 100 * *m.relative[run]);
-    return text;
+    if (*m.relative[run] >= 1 && a > 0) return "×" + significant(b / a, 3);
+    return percent(*m.relative[run], PercentDigits::three_signed);
   }
-  char text[48];
-  std::snprintf(text, sizeof text, "%+.3g", b - a);
-  return m.unit.empty() ? std::string(text) : std::string(text) + " " + m.unit;
+  const std::string text = significant(b - a, 3, Sign::always);
+  return m.unit.empty() ? text : text + " " + m.unit;
 }
 
 std::string floor_text(const ComparedMetric& m) {

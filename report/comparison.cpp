@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 
+#include "engine/recording/number_text.hpp"
 #include "report/headline.hpp"
 #include "report/metrics.hpp"
 #include "report/provenance.hpp"
-#include "report/quantity.hpp"
 
 namespace elbowsim::report {
 
@@ -47,12 +46,6 @@ void add_rows(const std::vector<RunData>& runs, const std::vector<std::vector<Me
     row.same = same_within(row.values, row.kind, row.floor, m.path);
     out.push_back(std::move(row));
   }
-}
-
-std::string percent(double p) {
-  char text[32];
-  std::snprintf(text, sizeof text, p >= 9.95 ? "%.0f %%" : "%.1f %%", p);
-  return text;
 }
 
 // "<best>: 38 % less <what> than <other> (4.1 J vs 6.6 J)" for each other
@@ -94,8 +87,8 @@ std::vector<std::string> smaller_is_better(const Comparison& table, const std::s
       sentences.push_back(lb + ": " + quantity(o - b, row->unit) + " " + less + " " + what +
                           " than " + lo + both + ".");
     else
-      sentences.push_back(lb + ": " + percent(p) + " " + less + " " + what + " than " + lo + both +
-                          ".");
+      sentences.push_back(lb + ": " + percent(p / 100, PercentDigits::tenths) + " " + less + " " +
+                          what + " than " + lo + both + ".");
   }
   return sentences;
 }

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "engine/recording/energy_terms.hpp"
-#include "report/quantity.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::report {
 

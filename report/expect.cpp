@@ -1,13 +1,13 @@
 #include "report/expect.hpp"
 
-#include "report/expect_paths.hpp"
-
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <ostream>
+
+#include "engine/recording/number_text.hpp"
+#include "report/expect_paths.hpp"
 
 namespace elbowsim::report {
 
@@ -304,11 +304,7 @@ class Parser {
 
 std::string value_text(const nlohmann::ordered_json& v) {
   if (v.is_null()) return "NaN (null)";
-  if (v.is_number()) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.10g", v.get<double>());
-    return text;
-  }
+  if (v.is_number()) return significant(v.get<double>(), 10);
   if (v.is_string()) return "'" + v.get<std::string>() + "'";
   return v.dump();
 }

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "engine/recording/number_text.hpp"
 #include "report/columns.hpp"
-#include "report/quantity.hpp"
 
 namespace elbowsim::report {
 
@@ -110,12 +110,6 @@ bool own_desired(const std::vector<const RunData*>& runs, std::size_t r, const T
   return false;
 }
 
-std::string magnification_text(double k) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", k);
-  return text;
-}
-
 }  // namespace
 
 TaskPlane task_plane(const std::vector<const Recording*>& recordings) {
@@ -161,7 +155,7 @@ HandPathFigures hand_path_figures(const std::vector<const RunData*>& runs,
   out.k = error_magnification(recordings, plane);
   out.path = plane_plot(plane, "Hand path in the " + plane.name + " plane — " + title_suffix);
   plot::LinePlot magnified =
-      plane_plot(plane, "Hand path, error × " + magnification_text(out.k) + " — " + title_suffix);
+      plane_plot(plane, "Hand path, error × " + significant(out.k) + " — " + title_suffix);
   // Actual paths first, the desired ones dashed on top (where they coincide
   // the actual line shows between the dashes), start dots last.
   std::vector<plot::Series> actual, desired, dots, magnified_actual, magnified_dots;
@@ -183,8 +177,8 @@ HandPathFigures hand_path_figures(const std::vector<const RunData*>& runs,
     std::vector<double> ma(a.size()), mb(b.size());
     for (std::size_t k = 0; k < a.size(); ++k)
       ma[k] = da[k] + out.k * (a[k] - da[k]), mb[k] = db[k] + out.k * (b[k] - db[k]);
-    magnified_actual.push_back(line(who + "desired + " + magnification_text(out.k) + "·error", ma,
-                                    mb, color, plot::Dash::solid, 2.0));
+    magnified_actual.push_back(line(who + "desired + " + significant(out.k) + "·error", ma, mb,
+                                    color, plot::Dash::solid, 2.0));
     if (!ma.empty()) magnified_dots.push_back(start_marker(ma, mb, color));
   }
   for (auto* group : {&actual, &desired, &dots})
@@ -204,7 +198,7 @@ HandPathFigures hand_path_figures(const std::vector<const RunData*>& runs,
         "The same paths with the tracking error magnified: each sample drawn at desired + "
         "k·(actual "
         "− desired) with k = " +
-        magnification_text(out.k) +
+        significant(out.k) +
         ", so that the error's shape and where along the path it grows can be seen (an error of "
         "10 µm is drawn " +
         quantity(10e-6 * out.k, "m") + " long). " + plane_note;

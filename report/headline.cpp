@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "engine/recording/number_text.hpp"
 #include "report/energy_flow.hpp"
-#include "report/quantity.hpp"
 
 namespace elbowsim::report {
 

@@ -2,11 +2,11 @@
 
 #include <cerrno>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
 
+#include "engine/recording/number_text.hpp"
 #include "report/provenance.hpp"
 
 namespace elbowsim::report::html {
@@ -84,16 +84,12 @@ std::string display_value(const nlohmann::ordered_json& value) {
   if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
   if (value.is_number_integer()) return value.dump();
   if (!value.is_number()) return value.dump();
-  char text[40];
-  std::snprintf(text, sizeof text, "%.6g", value.get<double>());
-  return text;
+  return significant(value.get<double>());
 }
 
 std::string exact_value(const nlohmann::ordered_json& value) {
   if (!value.is_number_float()) return display_value(value);
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", value.get<double>());
-  return text;
+  return round_trip(value.get<double>());
 }
 
 std::string page_begin(const std::string& title) {

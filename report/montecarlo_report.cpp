@@ -5,10 +5,10 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "engine/recording/number_text.hpp"
 #include "report/html.hpp"
 #include "report/plot/plot.hpp"
 #include "report/plots_aside.hpp"
-#include "report/quantity.hpp"
 
 namespace elbowsim::report {
 
@@ -88,10 +88,6 @@ plot::LinePlot scatter(const Json& doc) {
   return p;
 }
 
-std::string fmt(double x) { return html::display_value(Json(x)); }
-
-std::string fmt(double x, const std::string& unit) { return quantity(x, unit); }
-
 // object[key] as a number; NaN when missing or null (a NaN written to JSON
 // reads back as null: a floor whose nominal run was invalid).
 double number(const Json& object, const char* key) {
@@ -103,8 +99,8 @@ double number(const Json& object, const char* key) {
 std::string interval(const Json& ci, const std::string& unit, const std::string& why) {
   if (!ci.is_array() || ci.size() != 2 || !ci[0].is_number() || !ci[1].is_number())
     return why.empty() ? "—" : "none: " + why;
-  return fmt(ci[0].get<double>(), unit) + (unit.empty() ? "–" : " to ") +
-         fmt(ci[1].get<double>(), unit);
+  return quantity(ci[0].get<double>(), unit) + (unit.empty() ? "–" : " to ") +
+         quantity(ci[1].get<double>(), unit);
 }
 
 std::string draw_list(const Json& draws) {
@@ -129,11 +125,11 @@ std::string metrics_section(const Json& doc) {
     for (const auto& [name, m] : metrics.items()) {
       const std::string unit = m.value("unit", "");
       out += "<tr><td>" + html::escape(variant) + "</td><td>" + html::escape(name) + "</td><td>" +
-             std::to_string(m.value("valid", 0)) + "</td><td>" + fmt(number(m, "mean"), unit) +
+             std::to_string(m.value("valid", 0)) + "</td><td>" + quantity(number(m, "mean"), unit) +
              "</td><td>" +
              html::escape(interval(m.value("ci95", Json()), unit, m.value("no_interval", "")) +
                           draw_list(m.value("draws", Json::array()))) +
-             "</td><td>" + fmt(number(m, "median"), unit) + "</td></tr>\n";
+             "</td><td>" + quantity(number(m, "median"), unit) + "</td></tr>\n";
     }
   return out + "</tbody></table>\n";
 }
@@ -156,8 +152,9 @@ std::string pairs_section(const Json& doc) {
       const std::string reason = r.value("reason", "");
       out += "<tr><td>" + html::escape(p.value("a", "") + " / " + p.value("b", "")) + "</td><td>" +
              html::escape(metric) + "</td><td>" + (ratio ? "ratio A/B" : "difference A − B") +
-             "</td><td>" + std::to_string(r.value("pairs", 0)) + "</td><td>" + fmt(value, unit) +
-             "</td><td>" + html::escape(interval(r.value("ci95", Json()), unit, "")) + "</td><td>" +
+             "</td><td>" + std::to_string(r.value("pairs", 0)) + "</td><td>" +
+             quantity(value, unit) + "</td><td>" +
+             html::escape(interval(r.value("ci95", Json()), unit, "")) + "</td><td>" +
              html::escape(percent(number(r, "win_rate"))) + " of draws</td><td>" +
              html::escape(r.value("outcome", "") + (reason.empty() ? "" : ": " + reason) +
                           draw_list(r.value("draws", Json::array()))) +
@@ -177,10 +174,10 @@ std::string parameters_section(const Json& doc) {
     const std::string law = p.value("law", "");
     std::string spread;
     if (law == "range" && p.contains("range"))
-      spread = "uniform in [" + fmt(p["range"][0].get<double>()) + ", " +
-               fmt(p["range"][1].get<double>()) + "]";
+      spread = "uniform in [" + significant(p["range"][0].get<double>()) + ", " +
+               significant(p["range"][1].get<double>()) + "]";
     else
-      spread = law + " ±" + fmt(100 * p.value("spread", 0.0)) + " %" +
+      spread = law + " ±" + significant(100 * p.value("spread", 0.0)) + " %" +
                (law == "normal" ? " (σ, truncated at 3σ)" : "");
     std::string nominal;
     const Json nominals = p.value("nominal", Json::object());  // kept: items() does not own it
@@ -237,10 +234,10 @@ void write_montecarlo_report(const std::filesystem::path& folder) {
       {"uncertain parameters", std::to_string(doc["parameters"].size())}};
   for (const auto& [variant, f] : doc["accuracy_floor"].items())
     rows.push_back({"accuracy floor, " + variant,
-                    "RMS hand error " + fmt(number(f, "hand_error_rms_step"), "m") + " at step " +
-                        fmt(number(f, "step"), "s") + ", " +
-                        fmt(number(f, "hand_error_rms_half_step"), "m") + " at half of it: floor " +
-                        fmt(number(f, "floor"), "m")});
+                    "RMS hand error " + quantity(number(f, "hand_error_rms_step"), "m") +
+                        " at step " + quantity(number(f, "step"), "s") + ", " +
+                        quantity(number(f, "hand_error_rms_half_step"), "m") +
+                        " at half of it: floor " + quantity(number(f, "floor"), "m")});
   page += html::info_table(rows);
   page += metrics_section(doc) + pairs_section(doc) + parameters_section(doc);
   page += "<h2>Distributions</h2>\n";

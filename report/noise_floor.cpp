@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/recording/number_text.hpp"
 #include "report/energy_flow.hpp"
-#include "report/quantity.hpp"
 
 namespace elbowsim::report {
 

@@ -1,8 +1,8 @@
 #include "report/run_report.hpp"
 
 #include <cmath>
-#include <cstdio>
 
+#include "engine/recording/number_text.hpp"
 #include "report/energy_flow.hpp"
 #include "report/headline.hpp"
 #include "report/html.hpp"
@@ -18,12 +18,6 @@ using Rows = std::vector<std::pair<std::string, std::string>>;
 
 constexpr std::size_t kMaxEventRows = 200;
 constexpr std::size_t kWarningsShown = 6;  // more fold away, so the headline stays on screen
-
-std::string number(double v, const char* unit = "") {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.6g", v);
-  return *unit ? std::string(text) + " " + unit : text;
-}
 
 std::string joined(const nlohmann::ordered_json& list) {
   std::string out;
@@ -42,7 +36,7 @@ std::string dynamics_name(const std::string& method) {
 
 std::string status(const nlohmann::ordered_json& s) {
   const std::string steps = std::to_string(s.value("steps", 0L)) +
-                            " steps to t = " + number(s.value("final_time", 0.0), "s");
+                            " steps to t = " + significant(s.value("final_time", 0.0)) + " s";
   if (!s.value("completed", false)) return "STOPPED EARLY after " + steps;
   return s.value("valid", true) ? "completed: " + steps : "completed, NOT VALID: " + steps;
 }
@@ -58,18 +52,18 @@ Rows run_rows(const RunData& run) {
   rows.push_back({"scenario file", s.value("file", "")});
   rows.push_back({"active effects", joined(s.value("effects", nlohmann::ordered_json::array()))});
   rows.push_back({"model", std::to_string(model.value("dof", 0)) + " joints, total mass " +
-                               number(model.value("total_mass", 0.0), "kg") + ", hand on link " +
+                               significant(model.value("total_mass", 0.0)) + " kg, hand on link " +
                                std::to_string(model.value("hand_link", 0))});
   for (const auto& row : run.model_rows) rows.push_back(row);
   std::string integrator = settings.value("integrator", "");
   if (settings.contains("rtol"))  // adaptive: its tolerances; step is the recording interval
-    integrator += ", rtol " + number(settings.value("rtol", 0.0), "") + ", atol " +
-                  number(settings.value("atol", 0.0), "") + ", rows every " +
-                  number(settings.value("step", 0.0), "s");
+    integrator += ", rtol " + significant(settings.value("rtol", 0.0)) + ", atol " +
+                  significant(settings.value("atol", 0.0)) + ", rows every " +
+                  significant(settings.value("step", 0.0)) + " s";
   else
-    integrator += ", step " + number(settings.value("step", 0.0), "s");
-  rows.push_back(
-      {"integrator", integrator + ", duration " + number(settings.value("duration", 0.0), "s")});
+    integrator += ", step " + significant(settings.value("step", 0.0)) + " s";
+  rows.push_back({"integrator", integrator + ", duration " +
+                                    significant(settings.value("duration", 0.0)) + " s"});
   rows.push_back({"dynamics", dynamics_name(settings.value("dynamics", ""))});
   if (s.contains("controller") && s["controller"].is_string()) {
     std::string believes = "knows the plant exactly";
@@ -83,13 +77,13 @@ Rows run_rows(const RunData& run) {
   }
   if (s.contains("control_loop") && s["control_loop"].is_object()) {
     const auto& loop = s["control_loop"];
-    std::string text = number(loop.value("sample_rate", 0.0), "Hz") + " sampling, delay " +
+    std::string text = significant(loop.value("sample_rate", 0.0)) + " Hz sampling, delay " +
                        std::to_string(loop.value("delay_samples", 0)) + " samples";
     if (const long counts = loop.value("encoder_counts_per_rev", 0L); counts > 0)
       text += ", encoder " + std::to_string(counts) + " counts/rev (" +
               loop.value("encoder_side", "") + " side)";
     if (const double noise = loop.value("angle_noise", 0.0); noise > 0)
-      text += ", angle noise σ " + number(noise, "rad");
+      text += ", angle noise σ " + significant(noise) + " rad";
     if (const int bits = loop.value("pwm_bits", 0); bits > 0)
       text += ", " + std::to_string(bits) + "-bit amplifier";
     rows.push_back({"control loop", text});
@@ -104,7 +98,7 @@ Rows run_rows(const RunData& run) {
                                    std::to_string(contact.value("releases", 0)) + " releases"});
   const long steps_per_second = wall > 0 ? std::lround(s.value("steps", 0L) / wall) : 0;
   rows.push_back(
-      {"wall time", number(wall, "s") +
+      {"wall time", significant(wall) + " s" +
                         (wall > 0 ? " (" + std::to_string(steps_per_second) + " steps/s)" : "")});
   rows.push_back({"recorded samples", std::to_string(run.trajectory.rows())});
   return rows;
@@ -128,14 +122,14 @@ std::string notices(const RunData& run) {
   if (run.has_summary() && s.value("completed", true) && !s.value("valid", true))
     out += html::notice("failure", "This run is not valid: do not use its numbers.",
                         {"Failure: " + s.value("failure", std::string("(no reason recorded)")),
-                         "It ran to t = " + number(s.value("final_time", 0.0), "s") +
+                         "It ran to t = " + significant(s.value("final_time", 0.0)) + " s" +
                              "; the plots show what it computed, for diagnosis."},
                         "failure");
   if (run.has_summary() && !s.value("completed", true))
     out += html::notice(
         "failure", "This run did not complete.",
         {"Failure: " + s.value("failure", std::string("(no reason recorded)")),
-         "What it recorded is kept: t = 0 to " + number(s.value("final_time", 0.0), "s") + ", " +
+         "What it recorded is kept: t = 0 to " + significant(s.value("final_time", 0.0)) + " s, " +
              std::to_string(run.trajectory.rows()) +
              " samples; the plots and totals cover that span only."},
         "failure");
@@ -212,10 +206,10 @@ std::string events_section(const RunData& run) {
       "<th>energy lost [J]</th></tr>\n";
   for (std::size_t k = 0; k < std::min(run.events.size(), kMaxEventRows); ++k) {
     const EventRow& e = run.events[k];
-    out += "<tr><td class=\"num\">" + number(e.t) + "</td><td>" + html::escape(e.elbow) +
-           "</td><td>" + html::escape(e.kind) + "</td><td class=\"num\">" + number(e.speed) +
-           "</td><td class=\"num\">" + number(e.impulse) + "</td><td class=\"num\">" +
-           number(e.energy_lost) + "</td></tr>\n";
+    out += "<tr><td class=\"num\">" + significant(e.t) + "</td><td>" + html::escape(e.elbow) +
+           "</td><td>" + html::escape(e.kind) + "</td><td class=\"num\">" + significant(e.speed) +
+           "</td><td class=\"num\">" + significant(e.impulse) + "</td><td class=\"num\">" +
+           significant(e.energy_lost) + "</td></tr>\n";
   }
   out += "</table>\n";
   if (run.events.size() > kMaxEventRows)

@@ -5,6 +5,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "engine/recording/number_text.hpp"
+
 namespace elbowsim::report {
 
 namespace {
@@ -78,14 +80,11 @@ Interval bca(const std::vector<double>& x, double level, int resamples, std::uin
   return {quantile(means, adjusted((1 - level) / 2)), quantile(means, adjusted((1 + level) / 2))};
 }
 
-std::string count(std::size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
 // Why no interval is given for n values; "" when n is enough.
 std::string too_few(std::size_t n, const char* one, const char* many) {
   if (n >= kMinIntervalValues) return "";
-  return count(n, one, many) + "; an interval needs at least " + std::to_string(kMinIntervalValues);
+  return counted(static_cast<long long>(n), one, many) + "; an interval needs at least " +
+         std::to_string(kMinIntervalValues);
 }
 
 bool finite(const Interval& i) { return std::isfinite(i.low) && std::isfinite(i.high); }
@@ -125,7 +124,8 @@ Estimate estimate_mean(const std::vector<double>& x, Scale scale, double level, 
   for (std::size_t i = 0; i < x.size(); ++i)
     if (!std::isfinite(x[i])) e.involved.push_back(i);
   if (!e.involved.empty()) {
-    e.no_interval = count(e.involved.size(), "value is", "values are") + " not finite";
+    e.no_interval = counted(static_cast<long long>(e.involved.size()), "value is", "values are") +
+                    " not finite";
     return e;
   }
   e.no_interval = too_few(x.size(), "value", "values");
@@ -134,7 +134,7 @@ Estimate estimate_mean(const std::vector<double>& x, Scale scale, double level, 
     for (std::size_t i = 0; i < x.size(); ++i)
       if (!(x[i] >= 0)) e.involved.push_back(i);
     if (!e.involved.empty()) {
-      e.no_interval = count(e.involved.size(), "value is", "values are") +
+      e.no_interval = counted(static_cast<long long>(e.involved.size()), "value is", "values are") +
                       " negative, for a quantity that never is";
       return e;
     }
@@ -197,7 +197,8 @@ PairedStatistic paired_ratio(const std::vector<double>& a, const std::vector<dou
     PairedStatistic out;
     out.pairs = a.size();
     out.involved = bad;
-    out.problem = "a ratio needs values > 0; " + count(bad.size(), "pair has", "pairs have") +
+    out.problem = "a ratio needs values > 0; " +
+                  counted(static_cast<long long>(bad.size()), "pair has", "pairs have") +
                   " a value <= 0 or not finite";
     return out;
   }
@@ -219,7 +220,8 @@ PairedStatistic paired_difference(const std::vector<double>& a, const std::vecto
     PairedStatistic out;
     out.pairs = a.size();
     out.involved = bad;
-    out.problem = count(bad.size(), "pair has", "pairs have") + " a value that is not finite";
+    out.problem = counted(static_cast<long long>(bad.size()), "pair has", "pairs have") +
+                  " a value that is not finite";
     return out;
   }
   return paired(d, a, b, level, resamples, seed, [](double y) { return y; });

@@ -5,10 +5,10 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "engine/recording/number_text.hpp"
 #include "report/html.hpp"
 #include "report/plot/plot.hpp"
 #include "report/plots_aside.hpp"
-#include "report/quantity.hpp"
 #include "report/run_plots.hpp"
 
 namespace elbowsim::report {

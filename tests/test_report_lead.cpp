@@ -8,9 +8,9 @@
 
 #include <regex>
 
+#include "engine/recording/number_text.hpp"
 #include "report/comparison.hpp"
 #include "report/energy_flow.hpp"
-#include "report/quantity.hpp"
 #include "report_test_helpers.hpp"
 #include "support/approx.hpp"
 
@@ -87,16 +87,16 @@ TEST_CASE("run report: the first section states the headline numbers, warnings a
   CHECK(headline_cell(lead, "valid") == "valid");
   const auto m = s["metrics"];
   CHECK(headline_cell(lead, "metrics.hand_error_rms") ==
-        r::quantity(m["hand_error_rms"].get<double>(), "m"));
+        elbowsim::quantity(m["hand_error_rms"].get<double>(), "m"));
   CHECK(headline_cell(lead, "metrics.hand_error_max") ==
-        r::quantity(m["hand_error_max"].get<double>(), "m"));
+        elbowsim::quantity(m["hand_error_max"].get<double>(), "m"));
   CHECK(headline_cell(lead, "energy_final.joule") ==
-        r::quantity(s["energy_final"]["joule"].get<double>(), "J"));
+        elbowsim::quantity(s["energy_final"]["joule"].get<double>(), "J"));
   CHECK(headline_cell(lead, "energy_final.electrical_in")
-            .starts_with(r::quantity(s["energy_final"]["electrical_in"].get<double>(), "J") +
+            .starts_with(elbowsim::quantity(s["energy_final"]["electrical_in"].get<double>(), "J") +
                          " (drawn "));
   CHECK(headline_cell(lead, "metrics.power_peak") ==
-        r::quantity(m["power_peak"].get<double>(), "W"));
+        elbowsim::quantity(m["power_peak"].get<double>(), "W"));
   CHECK(headline_cell(lead, "metrics.rest_fraction") == "100 % of the run");
   CHECK(lead.find("accuracy check") != std::string::npos);
 

@@ -9,8 +9,8 @@
 
 #include "app/commands/commands.hpp"
 #include "app/output/atomic_file.hpp"
-#include "app/scenario/counted.hpp"
 #include "app/study/case_record.hpp"
+#include "engine/recording/number_text.hpp"
 #include "report/merged_study.hpp"
 #include "report/noise_floor.hpp"
 

@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -22,20 +22,19 @@
 #include "app/commands/step_check.hpp"
 #include "app/output/atomic_file.hpp"
 #include "app/output/folder_lock.hpp"
-#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/cases.hpp"
 #include "app/study/draws.hpp"
-#include "app/study/study_table.hpp"
 #include "app/study/paired_verdict.hpp"
+#include "app/study/study_table.hpp"
 #include "engine/control/inverse_kinematics.hpp"
+#include "engine/recording/number_text.hpp"
 #include "engine/run/simulator.hpp"
 #include "engine/run/warnings.hpp"
 #include "report/montecarlo_report.hpp"
 #include "report/provenance.hpp"
-#include "report/quantity.hpp"
-#include "report/study_report.hpp"
 #include "report/statistics.hpp"
+#include "report/study_report.hpp"
 
 namespace elbowsim {
 
@@ -253,12 +252,12 @@ void write_samples_csv(const std::filesystem::path& path, const std::vector<Vari
             << "," << sensor_seed;
         const auto& params = variants[v].nominal.uncertainty.parameters;
         for (std::size_t j = 0; j < params.size(); ++j)
-          out << "," << study::exact(study::drawn_value(params[j], draws[d].u[j]));
+          out << "," << round_trip(study::drawn_value(params[j], draws[d].u[j]));
         for (const StudiedMetric& k : kMetrics) {
           const auto it = s.metrics.find(k.name);
-          out << "," << (it == s.metrics.end() ? std::string() : study::exact(it->second));
+          out << "," << (it == s.metrics.end() ? std::string() : round_trip(it->second));
         }
-        out << "," << study::exact(s.unplanned.share) << "," << s.unplanned.body;
+        out << "," << round_trip(s.unplanned.share) << "," << s.unplanned.body;
         std::string failure = s.failure;
         std::replace(failure.begin(), failure.end(), '"', '\'');
         out << ",\"" << failure << "\"\n";
@@ -291,10 +290,11 @@ void unplanned_contact(const std::vector<Variant>& variants, const std::vector<s
     std::string names;
     for (const std::string& b : bodies) names += (names.empty() ? "" : ", ") + b;
     verdict.push_back(name + ": in " + std::to_string(entry["draws"].size()) + " of " +
-                      std::to_string(samples.size()) + " draws a part the scene does not plan to "
-                      "rest lay on the table for more than " + report::percent(threshold) +
-                      " of the run (" + names + "; up to " +
-                      report::percent(entry["largest_share"].get<double>()) +
+                      std::to_string(samples.size()) +
+                      " draws a part the scene does not plan to "
+                      "rest lay on the table for more than " +
+                      percent(threshold) + " of the run (" + names + "; up to " +
+                      percent(entry["largest_share"].get<double>()) +
                       "): those draws compare an arm leaning on it (montecarlo.json "
                       "unplanned_contact lists them)");
   }

@@ -14,8 +14,8 @@
 #include "app/output/run_folder.hpp"
 #include "app/output/run_manifest.hpp"
 #include "app/output/trajectory_csv.hpp"
-#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
+#include "engine/recording/number_text.hpp"
 #include "render/playback.hpp"
 #include "render/render_job.hpp"
 

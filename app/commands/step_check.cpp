@@ -4,6 +4,7 @@
 
 #include "app/commands/interrupt.hpp"
 #include "app/study/draws.hpp"
+#include "engine/recording/number_text.hpp"
 #include "engine/run/simulator.hpp"
 
 namespace elbowsim {
@@ -12,24 +13,22 @@ Scenario at_half_step(const Scenario& scenario) {
   const Options& o = scenario.model.options;
   std::vector<std::string> overrides{"simulation.integrator=" + std::string(to_string(o.integrator))};
   if (is_adaptive(o.integrator)) {
-    overrides.push_back("simulation.rtol=" + study::exact(o.rtol / 10));
-    overrides.push_back("simulation.atol=" + study::exact(o.atol / 10));
+    overrides.push_back("simulation.rtol=" + round_trip(o.rtol / 10));
+    overrides.push_back("simulation.atol=" + round_trip(o.atol / 10));
   } else {
-    overrides.push_back("simulation.step=" + study::exact(o.step / 2));
+    overrides.push_back("simulation.step=" + round_trip(o.step / 2));
     overrides.push_back("output.every=" + std::to_string(2 * scenario.output.every));
   }
   // The plan stays sampled as the scenario's: only the integration changes.
   if (scenario.experiment.needs_plan() && scenario.experiment.task.plan_step <= 0)
-    overrides.push_back("task.plan_step=" + study::exact(o.step));
+    overrides.push_back("task.plan_step=" + round_trip(o.step));
   return load_scenario_text(scenario.resolved_yaml, scenario.file, overrides);
 }
 
 std::string refinement_text(const Scenario& scenario) {
   const Options& o = scenario.model.options;
   if (is_adaptive(o.integrator)) return "rtol and atol / 10";
-  char text[64];
-  std::snprintf(text, sizeof text, "half the step (%g s)", o.step / 2);
-  return text;
+  return "half the step (" + significant(o.step / 2) + " s)";
 }
 
 nlohmann::ordered_json check_step(const Scenario& scenario, const RunResult& result) {

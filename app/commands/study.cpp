@@ -14,9 +14,9 @@
 #include "app/commands/interrupt.hpp"
 #include "app/commands/study_plan.hpp"
 #include "app/output/atomic_file.hpp"
-#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/case_record.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim {
 

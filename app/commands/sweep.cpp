@@ -14,8 +14,8 @@
 #include "app/output/atomic_file.hpp"
 #include "app/output/folder_lock.hpp"
 #include "app/output/run_folder.hpp"
-#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
+#include "engine/recording/number_text.hpp"
 #include "report/comparison.hpp"
 #include "report/sweep_plots.hpp"
 

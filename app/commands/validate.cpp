@@ -3,12 +3,12 @@
 #include <iostream>
 
 #include "app/commands/commands.hpp"
-#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
 #include "app/study/cases.hpp"
 #include "engine/contact/geometry.hpp"
 #include "engine/control/plan.hpp"
 #include "engine/dynamics/kinematics.hpp"
+#include "engine/recording/number_text.hpp"
 #include "engine/run/step.hpp"
 #include "engine/run/step_log.hpp"
 #include "engine/run/warnings.hpp"

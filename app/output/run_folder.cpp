@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <sstream>
 
 #include "app/output/run_manifest.hpp"
 #include "app/output/trajectory_csv.hpp"
 #include "app/scenario/scenario.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim {
 
@@ -22,12 +22,6 @@ std::string slurp(const fs::path& path) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", v);
-  return text;
 }
 
 // events.csv rows: time, contact (elbow), kind, speed, impulse, energy_lost.
@@ -56,15 +50,16 @@ std::vector<report::EventRow> read_events(const fs::path& path) {
 std::string links_text(const Model& m) {
   std::string text;
   for (const Link& link : m.links)
-    text +=
-        (text.empty() ? "" : "; ") + number(link.tip.norm()) + " m, " + number(link.mass) + " kg";
+    text += (text.empty() ? "" : "; ") + significant(link.tip.norm(), 4) + " m, " +
+            significant(link.mass, 4) + " kg";
   return text;
 }
 
 std::string motor_text(const Motor& motor) {
-  return "R " + number(motor.resistance) + " ohm, L " + number(motor.inductance) + " H, K " +
-         number(motor.torque_constant) + " N m/A, gear " + number(motor.gear_ratio) + ":1, limit " +
-         number(motor.voltage_limit) + " V";
+  return "R " + significant(motor.resistance, 4) + " ohm, L " + significant(motor.inductance, 4) +
+         " H, K " + significant(motor.torque_constant, 4) + " N m/A, gear " +
+         significant(motor.gear_ratio, 4) + ":1, limit " + significant(motor.voltage_limit, 4) +
+         " V";
 }
 
 std::string motors_text(const Model& m) {
@@ -82,15 +77,16 @@ std::string contact_text(const Model& m) {
   std::string text;
   for (const Elbow& e : m.elbows)
     text += (text.empty() ? "" : "; ") + e.name + " on link " + std::to_string(e.link) +
-            ", radius " + number(e.radius) + " m";
+            ", radius " + significant(e.radius, 4) + " m";
   text += "; table of " + std::to_string(m.table.size()) + " box(es); restitution " +
-          number(m.contact.restitution);
+          significant(m.contact.restitution, 4);
   if (m.effects.friction)
-    text += std::string(", ") + to_string(m.contact.friction.law) + " friction mu " + number(m.contact.friction.mu);
+    text += std::string(", ") + to_string(m.contact.friction.law) + " friction mu " +
+            significant(m.contact.friction.mu, 4);
   else
     text += ", no friction";
   if (m.effects.stabilization == Stabilization::baumgarte)
-    text += ", Baumgarte time " + number(m.contact.baumgarte_time) + " s";
+    text += ", Baumgarte time " + significant(m.contact.baumgarte_time, 4) + " s";
   return text;
 }
 
@@ -98,9 +94,8 @@ std::string contact_text(const Model& m) {
 Rows model_rows(const Model& m) {
   Rows rows{{"links (length, mass)", links_text(m)}};
   if (m.has_motor()) rows.push_back({"motors", motors_text(m)});
-  std::string gravity = number(m.gravity.x());
-  gravity += ", " + number(m.gravity.y()) + ", " + number(m.gravity.z());
-  rows.push_back({"gravity", "(" + gravity + ") m/s^2"});
+  rows.push_back(
+      {"gravity", '(' + listed({m.gravity.x(), m.gravity.y(), m.gravity.z()}, 4) + ") m/s^2"});
   if (m.effects.contact)
     rows.push_back({"elbows and table", contact_text(m)});
   else if (!m.table.empty())
@@ -181,8 +176,9 @@ std::string inconsistency(const report::RunData& run) {
   const double tolerance = 1e-9 * std::max(1.0, std::abs(final_time));
   const bool completed = run.summary.value("completed", false);
   if (last > final_time + tolerance || (completed && last < final_time - tolerance))
-    return "trajectory.csv ends at t = " + number(last) + " s but summary.json says the run " +
-           (completed ? "completed at" : "stopped at") + " t = " + number(final_time) +
+    return "trajectory.csv ends at t = " + significant(last, 4) +
+           " s but summary.json says the run " + (completed ? "completed at" : "stopped at") +
+           " t = " + significant(final_time, 4) +
            " s: the files are from different runs, or one of them was cut";
   return "";
 }

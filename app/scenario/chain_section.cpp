@@ -15,6 +15,7 @@
 
 #include "app/scenario/checks.hpp"
 #include "app/scenario/sections.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::loader {
 
@@ -43,11 +44,10 @@ void check_inertia(const Eigen::Matrix3d& inertia, const Value& at) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(inertia);
   const Eigen::Vector3d m = eig.eigenvalues();  // ascending
   if (!(m[0] > 0))
-    at.fail("must be positive definite (principal moments " + format_number(m[0]) + ", " +
-            format_number(m[1]) + ", " + format_number(m[2]) + ")");
+    at.fail("must be positive definite (principal moments " + listed({m[0], m[1], m[2]}) + ")");
   if (m[0] + m[1] < m[2] - 1e-12 * inertia.trace())
-    at.fail("violates the triangle inequality: principal moments " + format_number(m[0]) + " + " +
-            format_number(m[1]) + " < " + format_number(m[2]) + " (no rigid body has them)");
+    at.fail("violates the triangle inequality: principal moments " + significant(m[0]) + " + " +
+            significant(m[1]) + " < " + significant(m[2]) + " (no rigid body has them)");
 }
 
 // --- planar ----------------------------------------------------------------
@@ -63,15 +63,15 @@ struct PlanarLink {
 void check_planar_inertia(const Value& v, const Link& link, double planar) {
   const double m = link.mass, r = link.radius;
   if (planar >= m * r * r / 4 * (1 - 1e-12)) return;
-  const std::string min_inertia = "I >= m r^2/4 = " + format_number(m * r * r / 4) + " kg m^2";
+  const std::string min_inertia = "I >= m r^2/4 = " + significant(m * r * r / 4) + " kg m^2";
   if (v.get("inertia").present())
-    v.get("inertia").fail("is too small for the link's radius " + format_number(r) + " m: needs " +
-                          min_inertia + " (got " + format_number(planar) + ")");
-  const std::string max_radius = "r <= 2 sqrt(I/m) = " + format_number(2 * std::sqrt(planar / m)) +
-                                 " m for I = " + format_number(planar) + " kg m^2";
+    v.get("inertia").fail("is too small for the link's radius " + significant(r) + " m: needs " +
+                          min_inertia + " (got " + significant(planar) + ")");
+  const std::string max_radius = "r <= 2 sqrt(I/m) = " + significant(2 * std::sqrt(planar / m)) +
+                                 " m for I = " + significant(planar) + " kg m^2";
   if (v.get("radius").present())
     v.get("radius").fail("is too large for the link: needs " + max_radius);
-  v.fail("the link is too short for the default radius " + format_number(r) +
+  v.fail("the link is too short for the default radius " + significant(r) +
          " m: give a radius with " + max_radius + ", or an inertia with " + min_inertia);
 }
 

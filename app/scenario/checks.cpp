@@ -1,18 +1,20 @@
 #include "app/scenario/checks.hpp"
 
+#include "engine/recording/number_text.hpp"
+
 namespace elbowsim::loader {
 
 double number(const Value& v) { return v.number(); }
 
 double positive(const Value& v) {
   double x = v.number();
-  if (!(x > 0)) v.fail("must be > 0 (got " + format_number(x) + ")");
+  if (!(x > 0)) v.fail("must be > 0 (got " + significant(x) + ")");
   return x;
 }
 
 double non_negative(const Value& v) {
   double x = v.number();
-  if (!(x >= 0)) v.fail("must be >= 0 (got " + format_number(x) + ")");
+  if (!(x >= 0)) v.fail("must be >= 0 (got " + significant(x) + ")");
   return x;
 }
 

@@ -3,14 +3,14 @@
 // validated whenever given, even with effects.contact off (then unused), so
 // that switching contact on later cannot meet an invalid elbow or box.
 #include <map>
+#include <sstream>
 #include <string>
 
-#include <sstream>
-
-#include "engine/contact/detection.hpp"
-#include "engine/dynamics/kinematics.hpp"
 #include "app/scenario/checks.hpp"
 #include "app/scenario/sections.hpp"
+#include "engine/contact/detection.hpp"
+#include "engine/dynamics/kinematics.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::loader {
 
@@ -36,8 +36,8 @@ Eigen::Vector3d read_elbow_point(const Value& v, const Model& model, int link, b
   const double distance = non_negative(at);
   const double length = model.links[static_cast<std::size_t>(link)].tip.x();
   if (distance > length)
-    at.fail("must be <= the length of link " + std::to_string(link) + " (" + format_number(length) +
-            " m; got " + format_number(distance) + ")");
+    at.fail("must be <= the length of link " + std::to_string(link) + " (" + significant(length) +
+            " m; got " + significant(distance) + ")");
   return Eigen::Vector3d(distance, 0, 0);
 }
 
@@ -70,8 +70,8 @@ double in_range(const Value& v, double lo, double hi, bool closed) {
   const double x = v.number();
   const bool inside = closed ? (x >= lo && x <= hi) : (x > lo && x < hi);
   if (!inside)
-    v.fail("must be in " + std::string(closed ? "[" : "(") + format_number(lo) + ", " +
-           format_number(hi) + (closed ? "]" : ")") + " (got " + format_number(x) + ")");
+    v.fail("must be in " + std::string(closed ? "[" : "(") + significant(lo) + ", " +
+           significant(hi) + (closed ? "]" : ")") + " (got " + significant(x) + ")");
   return x;
 }
 

@@ -5,6 +5,7 @@
 
 #include "app/scenario/checks.hpp"
 #include "app/scenario/sections.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::loader {
 
@@ -56,8 +57,8 @@ DigitalLoopSpec read_digital_loop(const Value& controller, double step) {
   // The integrator steps to each instant; a period shorter than the step
   // would make every step a fraction of the scene's.
   if (out.sample_period < step * (1 - 1e-9))
-    rate.fail("a sample period of " + format_number(out.sample_period) +
-              " s is shorter than simulation.step (" + format_number(step) +
+    rate.fail("a sample period of " + significant(out.sample_period) +
+              " s is shorter than simulation.step (" + significant(step) +
               " s): lower the rate or the step");
   out.delay = static_cast<int>(value_or(controller.get("delay"), 0L,
                                         [](const Value& v) { return whole_in(v, 0, 1000); }));

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "app/scenario/checks.hpp"
-#include "app/scenario/counted.hpp"
 #include "app/scenario/sections.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::loader {
 
@@ -31,8 +31,8 @@ void read_points(const Value& v, InputProfile& p) {
   for (Eigen::Index k = 1; k < t.size(); ++k) {
     if (!(t[k] > t[k - 1]))
       items[static_cast<std::size_t>(k)].fail("times must be strictly increasing (got " +
-                                              format_number(t[k - 1]) + " then " +
-                                              format_number(t[k]) + ")");
+                                              significant(t[k - 1]) + " then " + significant(t[k]) +
+                                              ")");
   }
   Eigen::VectorXd y = v.require("values").numbers(t.size(), "one per time");
   p.times.assign(t.data(), t.data() + t.size());

@@ -2,8 +2,8 @@
 // all joints plus optional per-joint overrides. Read and validated even when
 // effects.motor is none, so that switching the motor on later cannot fail.
 #include "app/scenario/checks.hpp"
-#include "app/scenario/counted.hpp"
 #include "app/scenario/sections.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::loader {
 
@@ -29,7 +29,8 @@ Value overlay_motor(const Value& v, Motor& motor) {
     const Value e = v.get(key);
     if (!e.present()) continue;
     *target = e.number();
-    if (!(*target > 0 && *target <= 1)) e.fail("must be in (0, 1] (got " + format_number(*target) + ")");
+    if (!(*target > 0 && *target <= 1))
+      e.fail("must be in (0, 1] (got " + significant(*target) + ")");
   }
   return v.get("inductance");
 }

@@ -4,8 +4,8 @@
 #include <charconv>
 #include <vector>
 
-#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::loader {
 

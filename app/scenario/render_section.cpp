@@ -6,6 +6,7 @@
 
 #include "app/scenario/checks.hpp"
 #include "app/scenario/sections.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::loader {
 
@@ -31,7 +32,7 @@ CameraSettings read_camera(const Value& camera) {
   if (fov.present()) {
     out.fov_deg = fov.number();
     if (!(out.fov_deg >= 1 && out.fov_deg <= 170))
-      fov.fail("must be in [1, 170] degrees (got " + format_number(out.fov_deg) + ")");
+      fov.fail("must be in [1, 170] degrees (got " + significant(out.fov_deg) + ")");
   }
   Value preset = camera.get("preset");
   if (preset.present()) {
@@ -54,8 +55,8 @@ CameraSettings read_camera(const Value& camera) {
   out.up = value_or(up, out.up, vec3);
   if (out.up.cross(view).norm() <= 1e-9 * out.up.norm() * view.norm())
     (up.present() ? up : target)
-        .fail("up [" + format_number(out.up.x()) + ", " + format_number(out.up.y()) + ", " +
-              format_number(out.up.z()) + "] must not be zero or parallel to target - eye");
+        .fail("up [" + listed({out.up.x(), out.up.y(), out.up.z()}) +
+              "] must not be zero or parallel to target - eye");
   return out;
 }
 
@@ -110,7 +111,7 @@ RenderSettings read_render(const Value& render) {
   read_size(render.get("size"), out);
   Value fps = render.get("fps");
   out.fps = value_or(fps, out.fps, positive);
-  if (out.fps > 240) fps.fail("must be <= 240 (got " + format_number(out.fps) + ")");
+  if (out.fps > 240) fps.fail("must be <= 240 (got " + significant(out.fps) + ")");
   // `msaa` alone (as before there was a choice) asks for multisampling, 1 for none.
   Value msaa = render.get("msaa"), antialiasing = render.get("antialiasing");
   if (msaa.present()) {

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "app/scenario/checks.hpp"
-#include "app/scenario/counted.hpp"
 #include "app/scenario/sections.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::loader {
 

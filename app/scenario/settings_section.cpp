@@ -5,6 +5,7 @@
 
 #include "app/scenario/checks.hpp"
 #include "app/scenario/sections.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::loader {
 
@@ -92,7 +93,7 @@ ValidityOptions read_validity(const Value& validity) {
   if (share.present()) {
     out.rest_share = share.number();
     if (!(out.rest_share >= 0 && out.rest_share <= 1))
-      share.fail("must be in [0, 1] (got " + format_number(out.rest_share) + ")");
+      share.fail("must be in [0, 1] (got " + significant(out.rest_share) + ")");
   }
   return out;
 }
@@ -105,7 +106,8 @@ WarningOptions read_warnings(const Value& warnings) {
     const Value share = warnings.get(key);
     if (!share.present()) return;
     value = share.number();
-    if (!(value >= 0 && value <= 1)) share.fail("must be in [0, 1] (got " + format_number(value) + ")");
+    if (!(value >= 0 && value <= 1))
+      share.fail("must be in [0, 1] (got " + significant(value) + ")");
   };
   share_in_unit_interval("saturation_share", out.saturation_share);
   share_in_unit_interval("unplanned_contact_share", out.unplanned_contact_share);
@@ -135,7 +137,7 @@ Options read_simulation(const Value& simulation, const Value& task) {
   out.step = value_or(step, 1e-3, positive);
   if (out.step > out.duration) {
     const std::string numbers =
-        "(step " + format_number(out.step) + " s, duration " + format_number(out.duration) + " s)";
+        "(step " + significant(out.step) + " s, duration " + significant(out.duration) + " s)";
     if (step.present()) step.fail("must be <= simulation.duration " + numbers);
     simulation.get("duration").fail("must be >= simulation.step " + numbers);
   }
@@ -214,7 +216,7 @@ std::vector<JointFriction> read_joint_friction(const Value& section, const Value
     for (int j = 0; j < dof; ++j)
       if (strictly_positive ? !(x[j] > 0) : !(x[j] >= 0))
         v.fail(std::string("must be ") + (strictly_positive ? "> 0" : ">= 0") + " (got " +
-               format_number(x[j]) + ")");
+               significant(x[j]) + ")");
     return x;
   };
   const Eigen::VectorXd coulomb = per_joint_values("coulomb", 0.0, false);
@@ -226,7 +228,7 @@ std::vector<JointFriction> read_joint_friction(const Value& section, const Value
     if (breakaway[j] < coulomb[j])
       section.get("breakaway")
           .fail("must be >= coulomb at every joint (joint " + std::to_string(j) + ": " +
-                format_number(breakaway[j]) + " < " + format_number(coulomb[j]) + ")");
+                significant(breakaway[j]) + " < " + significant(coulomb[j]) + ")");
     out.push_back({coulomb[j], breakaway[j], speed[j]});
   }
   return out;

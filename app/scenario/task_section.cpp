@@ -9,6 +9,7 @@
 
 #include "app/scenario/checks.hpp"
 #include "app/scenario/sections.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::loader {
 
@@ -121,8 +122,8 @@ void read_joint_limits(const Value& limits, int dof, HandTask& out) {
   for (int j = 0; j < dof; ++j) {
     if (!(out.q_min[j] < out.q_max[j]))
       max_items[static_cast<std::size_t>(j)].fail("must be > min[" + std::to_string(j) + "] (min " +
-                                                  format_number(out.q_min[j]) + ", max " +
-                                                  format_number(out.q_max[j]) + ")");
+                                                  significant(out.q_min[j]) + ", max " +
+                                                  significant(out.q_max[j]) + ")");
   }
 }
 

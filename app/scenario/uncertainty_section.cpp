@@ -13,9 +13,9 @@
 #include <set>
 
 #include "app/scenario/checks.hpp"
-#include "app/scenario/counted.hpp"
 #include "app/scenario/overrides.hpp"
 #include "app/scenario/sections.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::loader {
 

@@ -3,9 +3,9 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "app/scenario/scenario.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::urdf {
 
@@ -14,12 +14,6 @@ namespace {
 constexpr double kDefaultRadius = 0.02;  // [m] drawing radius of a link without a solid
 
 std::string quoted(const std::string& name) { return "\"" + name + "\""; }
-
-std::string number(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
 
 // A rigid body: a moving link (or the base link) and every link fixed to it,
 // each with its pose in the body's frame; the moving joints that leave it.
@@ -68,7 +62,7 @@ Body body_of(const Tree& tree, const std::string& root) {
 void check_inertial(const Link& l) {
   const double m = l.inertial.mass;
   if (!(m > 0) || !std::isfinite(m))
-    throw UrdfError("link " + quoted(l.name) + ": <inertial><mass value=\"" + number(m) +
+    throw UrdfError("link " + quoted(l.name) + ": <inertial><mass value=\"" + significant(m) +
                     "\"/> must be > 0");
 }
 
@@ -76,7 +70,7 @@ void check_inertial(const Link& l) {
 void check_inertia(const Eigen::Matrix3d& inertia, const std::string& what) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(inertia);
   const Eigen::Vector3d m = eig.eigenvalues();
-  const std::string moments = number(m[0]) + ", " + number(m[1]) + ", " + number(m[2]);
+  const std::string moments = listed({m[0], m[1], m[2]});
   if (!inertia.allFinite() || !(m[0] > 0))
     throw UrdfError(what + ": <inertia> must be positive definite (principal moments " + moments +
                     ")");
@@ -237,8 +231,8 @@ void check_joint(const Joint& j) {
   if (!(j.damping >= 0) || !std::isfinite(j.damping))
     throw UrdfError(at + ": <dynamics damping> must be >= 0");
   if (j.type == Joint::Type::revolute && !(j.lower < j.upper))
-    throw UrdfError(at + ": <limit lower=\"" + number(j.lower) + "\" upper=\"" + number(j.upper) +
-                    "\"> needs lower < upper");
+    throw UrdfError(at + ": <limit lower=\"" + significant(j.lower) + "\" upper=\"" +
+                    significant(j.upper) + "\"> needs lower < upper");
 }
 
 void add_frames(const Body& body, int link, Chain& chain) {

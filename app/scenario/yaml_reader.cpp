@@ -6,8 +6,8 @@
 #include <map>
 #include <system_error>
 
-#include "app/scenario/counted.hpp"
 #include "app/scenario/scenario.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::loader {
 
@@ -281,12 +281,6 @@ Eigen::Vector3d Value::vec3() const { return numbers(3, "x, y, z"); }
 
 // ---------------------------------------------------------------------------
 // Messages
-
-std::string format_number(double x) {
-  char buffer[64];
-  auto result = std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::general, 6);
-  return std::string(buffer, result.ptr);
-}
 
 std::string join(const std::vector<std::string_view>& words) {
   std::string out;

@@ -104,9 +104,6 @@ class Value {
   bool exists_;
 };
 
-// A number for messages, 6 significant digits ("0.001", "-1", "8.33333e-06").
-std::string format_number(double x);
-
 // "a, b, c"
 std::string join(const std::vector<std::string_view>& words);
 

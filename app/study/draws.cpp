@@ -1,9 +1,10 @@
 #include "app/study/draws.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <random>
+
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim::study {
 
@@ -44,17 +45,11 @@ double drawn_value(const UncertainParameter& p, double u) {
   return p.law == UncertainParameter::Law::range ? u : p.nominal * (1 + u);
 }
 
-std::string exact(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", x);
-  return buffer;
-}
-
 std::vector<std::string> draw_overrides(const Uncertainty& uncertainty, const Draw& draw) {
   std::vector<std::string> out;
   for (std::size_t j = 0; j < uncertainty.parameters.size(); ++j) {
     const UncertainParameter& p = uncertainty.parameters[j];
-    out.push_back(p.key + "=" + exact(drawn_value(p, draw.u[j])));
+    out.push_back(p.key + "=" + round_trip(drawn_value(p, draw.u[j])));
   }
   return out;
 }

@@ -30,7 +30,4 @@ double drawn_value(const UncertainParameter& p, double u);
 // variant's own).
 std::vector<std::string> draw_overrides(const Uncertainty& uncertainty, const Draw& draw);
 
-// A number as 17 significant digits (round-trips a double).
-std::string exact(double x);
-
 }  // namespace elbowsim::study

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "report/quantity.hpp"
+#include "engine/recording/number_text.hpp"
 #include "report/statistics.hpp"
 
 namespace elbowsim::study {
@@ -10,8 +10,6 @@ namespace elbowsim::study {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::string number(double x, const std::string& unit) { return report::quantity(x, unit); }
 
 std::string draw_list(const std::vector<long>& draws) {
   std::string out = draws.size() == 1 ? "draw " : "draws ";
@@ -25,8 +23,8 @@ std::string draw_list(const std::vector<long>& draws) {
 // The interval as a sentence writes it: a ratio's "0.113–0.130", a
 // difference's "−14.1 J to −13.0 J" (a dash between negatives misreads).
 std::string interval(const ComparedQuantity& q, const report::Interval& ci) {
-  return q.ratio ? number(ci.low, "") + "–" + number(ci.high, "")
-                 : number(ci.low, q.unit) + " to " + number(ci.high, q.unit);
+  return q.ratio ? quantity(ci.low, "") + "–" + quantity(ci.high, "")
+                 : quantity(ci.low, q.unit) + " to " + quantity(ci.high, q.unit);
 }
 
 // A difference, or its absence, with the interval behind it.
@@ -41,9 +39,9 @@ std::string difference(const std::string& a, const std::string& b, const Compare
            ci + ", contains " + (q.ratio ? "1" : "0") + ")";
   const bool lower = r.value < none;
   const std::string size =
-      q.ratio ? report::percent(std::abs(r.value - 1)) : number(std::abs(r.value), q.unit);
+      q.ratio ? percent(std::abs(r.value - 1)) : quantity(std::abs(r.value), q.unit);
   return std::string(q.what) + ": " + a + " " + size + (lower ? " lower" : " higher") + " than " +
-         b + " (" + ci + "; " + a + " lower in " + report::percent(r.win_rate) + " of draws)";
+         b + " (" + ci + "; " + a + " lower in " + percent(r.win_rate) + " of draws)";
 }
 
 std::vector<long> draws_of(const std::vector<std::size_t>& positions,
@@ -114,9 +112,9 @@ nlohmann::ordered_json paired_verdict(const PairedSamples& s, std::uint64_t seed
     if (m == "hand_error_rms") {
       const double ma = report::median(ia->second), mb = report::median(ib->second);
       if (!(ma > kFloorFactor * s.floor_a && mb > kFloorFactor * s.floor_b)) {
-        no_verdict("the medians (" + number(ma, "m") + ", " + number(mb, "m") +
-                       ") are not above 10 x the accuracy floor (" + number(s.floor_a, "m") + ", " +
-                       number(s.floor_b, "m") +
+        no_verdict("the medians (" + quantity(ma, "m") + ", " + quantity(mb, "m") +
+                       ") are not above 10 x the accuracy floor (" + quantity(s.floor_a, "m") +
+                       ", " + quantity(s.floor_b, "m") +
                        "; step halving of the nominal runs): they measure the integrator, not "
                        "the arm",
                    {});

@@ -7,6 +7,7 @@
 #include "app/output/atomic_file.hpp"
 #include "app/study/draws.hpp"
 #include "app/study/paired_verdict.hpp"
+#include "engine/recording/number_text.hpp"
 #include "report/provenance.hpp"
 
 namespace elbowsim::study {
@@ -146,7 +147,9 @@ void write_study_csv(const std::filesystem::path& path, const Json& study) {
           << unit << "," << m << " mean b" << unit;
     }
     out << ",hand_error_rms floor a [m],hand_error_rms floor b [m]\n";
-    const auto number = [](const Json& x) { return x.is_number() ? exact(x.get<double>()) : std::string(); };
+    const auto number = [](const Json& x) {
+      return x.is_number() ? round_trip(x.get<double>()) : std::string();
+    };
     for (const Json& c : study["cases"]) {
       for (const Json& p : c["pairs"]) {
         const std::string a = p.value("a", ""), b = p.value("b", "");

@@ -1,12 +1,12 @@
 #include "app/study/work_precision.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "engine/contact/constrained_dynamics.hpp"
+#include "engine/recording/number_text.hpp"
 #include "engine/run/simulator.hpp"
 
 namespace elbowsim::study {
@@ -18,12 +18,6 @@ using Json = nlohmann::ordered_json;
 constexpr double kReferenceRtol = 1e-11, kCheckRtol = 1e-10;
 // Fixed steps step / m: integer m keeps every row at the same time.
 constexpr int kStepDivisors[] = {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64};
-
-std::string g(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", x);
-  return text;
-}
 
 // A JSON number, or null for NaN and infinity (JSON has neither).
 Json number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
@@ -204,7 +198,7 @@ Json work_precision(const Scenario& scenario, const WorkPrecisionOptions& option
     throw ReferenceInvalid("the reference run (dopri5, rtol 1e-11) is not valid: " +
                            reference.result.failure);
   say("reference: dopri5 rtol 1e-11, " + std::to_string(reference.result.steps) + " steps, " +
-      g(reference.cpu_seconds) + " s CPU");
+      significant(reference.cpu_seconds, 3) + " s CPU");
   const Timed check = timed_run(reference_model(kCheckRtol), experiment, every, 1, options.stop);
   if (stopped()) return Json();
   if (!check.result.valid) say("the reference's check (rtol 1e-10) is not valid: " + check.result.failure);
@@ -232,8 +226,9 @@ Json work_precision(const Scenario& scenario, const WorkPrecisionOptions& option
   const RunErrors uncertainty = compare_runs(check.result, reference.result);
   ref["uncertainty"] = errors_json(uncertainty);
   doc["reference"] = ref;
-  say("reference check: rtol 1e-10 differs from 1e-11 by " + g(uncertainty.hand_max) +
-      " m in the hand, " + g(uncertainty.angle_max) + " rad in the angles: errors below that are not resolved");
+  say("reference check: rtol 1e-10 differs from 1e-11 by " + significant(uncertainty.hand_max, 3) +
+      " m in the hand, " + significant(uncertainty.angle_max, 3) +
+      " rad in the angles: errors below that are not resolved");
 
   std::vector<IntegratorKind> methods = options.methods;
   if (methods.empty())
@@ -253,9 +248,9 @@ Json work_precision(const Scenario& scenario, const WorkPrecisionOptions& option
       p["value"] = value;
       p.update(point_json(t, reference.result));
       const Json& hand = p["errors"]["hand_max"];
-      say(std::string(to_string(kind)) + (is_adaptive(kind) ? " rtol " : " step ") + g(value) +
-          ": " + g(t.cpu_seconds) + " s CPU, hand error " +
-          (hand.is_number() ? g(hand.get<double>()) : std::string("-")) + " m" +
+      say(std::string(to_string(kind)) + (is_adaptive(kind) ? " rtol " : " step ") +
+          significant(value, 3) + ": " + significant(t.cpu_seconds, 3) + " s CPU, hand error " +
+          (hand.is_number() ? significant(hand.get<double>(), 3) : std::string("-")) + " m" +
           (t.result.valid ? "" : " (NOT VALID: " + t.result.failure.substr(0, 80) + ")"));
       points.push_back(p);
     }
@@ -272,7 +267,7 @@ Json work_precision(const Scenario& scenario, const WorkPrecisionOptions& option
     a["value"] = value;
     a["scene_default"] = false;
     a.update(point_json(t, reference.result));
-    say(key + "=" + value + ": " + g(t.cpu_seconds) + " s CPU");
+    say(key + "=" + value + ": " + significant(t.cpu_seconds, 3) + " s CPU");
     alternatives.push_back(a);
   };
   if (options.alternatives) {

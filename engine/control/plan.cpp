@@ -5,21 +5,15 @@
 #include "engine/contact/lcp.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/rnea.hpp"
+#include "engine/recording/number_text.hpp"
 
 namespace elbowsim {
 
 namespace {
 
-std::string point_text(const Eigen::Vector3d& p) {
-  std::ostringstream s;
-  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ") m";
-  return s.str();
-}
-
+// "(0.1, 0, 0.3) m at t = 0.5 s"
 std::string where(double t, const Eigen::Vector3d& p) {
-  std::ostringstream s;
-  s << point_text(p) << " at t = " << t << " s";
-  return s.str();
+  return '(' + listed({p.x(), p.y(), p.z()}) + ") m at t = " + significant(t) + " s";
 }
 
 IkProblem ik_problem(const Model& model, const HandTask& task, Data& data,
@@ -54,9 +48,10 @@ void check_over_table(const Model& model, Data& data, const IkProblem& problem, 
     if (under.over) continue;
     std::ostringstream msg;
     msg << "the task rests elbow '" << e.name << "' on table box " << problem.planes[r].box
-        << ", but at t = " << t << " s its contact point " << point_text(contact)
-        << " is beyond the box's top face: it cannot rest there (move the table, the elbow or the "
-           "hand path, or give task.elbow_clearance)";
+        << ", but at t = " << t << " s its contact point ("
+        << listed({contact.x(), contact.y(), contact.z()})
+        << ") m is beyond the box's top face: it cannot rest there (move the table, the elbow or "
+           "the hand path, or give task.elbow_clearance)";
     throw PlanError(msg.str());
   }
 }

@@ -18,25 +18,14 @@ const char* to_string(ContactEvent::Kind kind) {
   return "?";
 }
 
-
-namespace {
-
-std::string at_time(double t) {
-  std::ostringstream s;
-  s << "t = " << t << " s";
-  return s.str();
-}
-
-}  // namespace
-
 std::string describe(const Model& model, const Warning& w) {
   std::ostringstream msg;
   switch (w.kind) {
     case Warning::Kind::dependent_rows:
-      msg << "dependent contact constraints at " << at_time(w.t) << ": " << w.count
+      msg << "dependent contact constraints at t = " << w.t << " s: " << w.count
           << " rows of M* of the touching contact points ("
-          << (model.has_coulomb_friction() ? "normal and sticking tangent rows" : "normal rows") << ") have rank "
-          << w.rank << " (threshold " << model.contact.rank_tolerance
+          << (model.has_coulomb_friction() ? "normal and sticking tangent rows" : "normal rows")
+          << ") have rank " << w.rank << " (threshold " << model.contact.rank_tolerance
           << " relative); how the force splits between them is not determined: the minimum-norm "
              "split of the rows kept on is used (a contact may carry nothing)";
       if (model.contact.solver != ConstraintSolver::schur)
@@ -48,12 +37,6 @@ std::string describe(const Model& model, const Warning& w) {
 }
 
 namespace {
-
-std::string quantity(double v, const char* unit) {
-  std::ostringstream s;
-  s << v << " " << unit;
-  return s.str();
-}
 
 std::string part_name(const Model& model, const Failure& f) {
   switch (f.part) {
@@ -105,13 +88,14 @@ std::string describe(const Model& model, const Failure& f) {
   switch (f.kind) {
     case Failure::Kind::none: return "";
     case Failure::Kind::painleve:
-      msg << "Painleve paradox at " << at_time(f.t) << ": with " << to_string(model.contact.friction.law)
-          << " friction mu = " << model.contact.friction.mu
+      msg << "Painleve paradox at t = " << f.t << " s: with "
+          << to_string(model.contact.friction.law) << " friction mu = " << model.contact.friction.mu
           << " a sliding contact's normal force would accelerate it into the table; no "
              "non-negative contact force exists (lower contact.friction.mu or change the pose)";
       return msg.str();
     case Failure::Kind::no_contact_solution:
-      msg << (model.effects.friction ? "Painleve paradox" : "contact failure") << " at " << at_time(f.t)
+      msg << (model.effects.friction ? "Painleve paradox" : "contact failure") << " at t = " << f.t
+          << " s"
           << ": no set of resting contacts has non-negative forces and accelerations"
           << (model.has_coulomb_friction() ? " with their forces inside the friction cones" : "");
       return msg.str();
@@ -120,21 +104,21 @@ std::string describe(const Model& model, const Failure& f) {
           << "): the state became non-finite or exceeded 1e12" << step_advice(model, f);
       return msg.str();
     case Failure::Kind::current_bound:
-      msg << "simulation diverged at " << at_time(f.t) << ": motor " << f.index << "'s current reached " << quantity(f.value, "A")
-          << " at " << at_time(f.t) << ", beyond " << quantity(f.limit, "A")
-          << " (validity.current_factor x its stall current)"
-          << step_advice(model, f);
+      msg << "simulation diverged at t = " << f.t << " s: motor " << f.index
+          << "'s current reached " << f.value << " A"
+          << " at t = " << f.t << " s, beyond " << f.limit << " A"
+          << " (validity.current_factor x its stall current)" << step_advice(model, f);
       return msg.str();
     case Failure::Kind::speed_bound:
-      msg << "simulation diverged at " << at_time(f.t) << ": " << part_name(model, f) << " turned at " << quantity(f.value, "rad/s")
-          << " at " << at_time(f.t) << ", beyond " << quantity(f.limit, "rad/s")
-          << " (validity.speed_factor x the motor's free-running speed)"
-          << step_advice(model, f);
+      msg << "simulation diverged at t = " << f.t << " s: " << part_name(model, f) << " turned at "
+          << f.value << " rad/s"
+          << " at t = " << f.t << " s, beyond " << f.limit << " rad/s"
+          << " (validity.speed_factor x the motor's free-running speed)" << step_advice(model, f);
       return msg.str();
     case Failure::Kind::penetration:
-      msg << "invalid run: " << part_name(model, f) << " is " << quantity(f.value, "m")
-          << " inside table box " << f.box << " at " << at_time(f.t)
-          << " (contact.penetration_tolerance " << quantity(f.limit, "m") << "): ";
+      msg << "invalid run: " << part_name(model, f) << " is " << f.value << " m"
+          << " inside table box " << f.box << " at t = " << f.t << " s"
+          << " (contact.penetration_tolerance " << f.limit << " m): ";
       if (!model.effects.contact)
         msg << "effects.contact is false, so the physics ignores the table and nothing holds the "
                "arm up; turn contact on, or keep the arm above the table";
@@ -155,21 +139,21 @@ std::string describe(const Model& model, const Failure& f) {
                "the contact" << step_advice(model, f);
       return msg.str();
     case Failure::Kind::energy_balance:
-      msg << "invalid run: the energy balance is off by " << quantity(f.value, "J") << " at "
-          << at_time(f.t) << ", " << 100 * f.value / std::max(f.flow, 1e-300) << " % of the "
-          << quantity(f.flow, "J") << " that flowed or was held (limit "
-          << 100 * model.validity.energy_residual << " %, validity.energy_residual)";
+      msg << "invalid run: the energy balance is off by " << f.value << " J at "
+          << "t = " << f.t << " s, " << 100 * f.value / std::max(f.flow, 1e-300) << " % of the "
+          << f.flow << " J that flowed or was held (limit " << 100 * model.validity.energy_residual
+          << " %, validity.energy_residual)";
       if (!std::isnan(f.since)) msg << "; beyond the limit since t = " << f.since << " s";
       msg << ": the integration is not accurate" << step_advice(model, f);
       return msg.str();
     case Failure::Kind::too_many_contacts:
-      msg << "contact failure at " << at_time(f.t) << ": " << f.value
+      msg << "contact failure at t = " << f.t << " s: " << f.value
           << " contact points touch the table at once, more than the " << f.limit
           << " rows the run made room for (contact.max_rows)";
       return msg.str();
     case Failure::Kind::stalled:
-      msg << "the run stalled at " << at_time(f.t) << ": its last " << f.limit << " steps advanced "
-          << quantity(f.value, "s") << " in all, under "
+      msg << "the run stalled at t = " << f.t << " s: its last " << f.limit << " steps advanced "
+          << f.value << " s in all, under "
           << (is_adaptive(model.options.integrator) ? "0.01" : "1")
           << " % of simulation.step each on average; located events keep cutting the steps ";
       if (f.slot >= 0 && f.slot_events > 0)
@@ -185,13 +169,13 @@ std::string describe(const Model& model, const Failure& f) {
       return msg.str();
     case Failure::Kind::step_underflow:
       msg << "the " << to_string(model.options.integrator) << " integrator could not go on at "
-          << at_time(f.t) << ": its error control cut the step to " << quantity(f.value, "s")
+          << "t = " << f.t << " s: its error control cut the step to " << f.value << " s"
           << " without meeting simulation.rtol " << model.options.rtol << " / atol "
           << model.options.atol
           << " (the solution blows up, or the equations jump where no event stops the step)";
       return msg.str();
     case Failure::Kind::interrupted:
-      msg << "interrupted at " << at_time(f.t) << " (a signal asked the run to stop): "
+      msg << "interrupted at t = " << f.t << " s (a signal asked the run to stop): "
           << "what it recorded up to then is kept";
       return msg.str();
     case Failure::Kind::elbow_not_resting:

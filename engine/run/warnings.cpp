@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "engine/recording/number_text.hpp"
 #include "engine/run/fixed_step_stability.hpp"
 
 namespace elbowsim {
@@ -21,23 +22,8 @@ std::vector<double> row_spans(const Recording& recording) {
   return spans;
 }
 
-std::string percent(double share) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g %%", 100 * share);
-  return text;
-}
-
-// A length in the unit that reads best: um below 1 mm, mm below 1 m, else m.
-std::string length_text(double metres) {
-  char text[32];
-  if (metres < 1e-3)
-    std::snprintf(text, sizeof text, "%.3g um", 1e6 * metres);
-  else if (metres < 1)
-    std::snprintf(text, sizeof text, "%.3g mm", 1e3 * metres);
-  else
-    std::snprintf(text, sizeof text, "%.3g m", metres);
-  return text;
-}
+// Lengths in warnings: um below 1 mm, mm below 1 m, else m (ASCII, as the warnings are).
+constexpr Unit kLengthUnits[] = {{"m", 1}, {"mm", 1e3}, {"um", 1e6}};
 
 }  // namespace
 
@@ -79,8 +65,8 @@ std::string saturation_clause(const Model& model, int j, double share) {
       limit, sizeof limit,
       current ? "voltage limit (%.3g V) or current limit (%.3g A)" : "voltage limit (%.3g V)",
       model.voltage_limit[j], model.current_limit[j]);
-  return "motor " + std::to_string(j) + " is at its " + limit + " for " + percent(share) +
-         " of the run";
+  return "motor " + std::to_string(j) + " is at its " + limit + " for " +
+         percent(share, PercentDigits::three) + " of the run";
 }
 
 }  // namespace
@@ -91,7 +77,7 @@ std::vector<std::string> saturation_warnings(const Model& model,
   for (std::size_t j = 0; j < shares.size(); ++j) {
     if (!(shares[j] > model.warn.saturation_share)) continue;
     out.push_back(saturation_clause(model, int(j), shares[j]) + " (warnings: saturation_share " +
-                  percent(model.warn.saturation_share) +
+                  percent(model.warn.saturation_share, PercentDigits::three) +
                   "): it cannot give what it is asked, so the arm follows the limit, not the "
                   "command; a larger gear ratio, torque constant or voltage, or a slower task, "
                   "would let it");
@@ -165,9 +151,10 @@ std::vector<std::string> unplanned_contact_warnings(const Model& model, const Me
     char forces[96];
     std::snprintf(forces, sizeof forces, "mean %.3g N while resting, peak %.3g N", mean->values[b],
                   peak->values[b]);
-    out.push_back(what + " rested on the table for " + percent(share->values[b]) + " of the run (" +
-                  forces + "; warnings: unplanned_contact_share " +
-                  percent(model.warn.unplanned_contact_share) +
+    out.push_back(what + " rested on the table for " +
+                  percent(share->values[b], PercentDigits::three) + " of the run (" + forces +
+                  "; warnings: unplanned_contact_share " +
+                  percent(model.warn.unplanned_contact_share, PercentDigits::three) +
                   "): the table carried part of the arm there, so the run's energy and accuracy "
                   "are those of an arm leaning on it; declare it as an elbow, or raise the arm "
                   "or the table");
@@ -183,10 +170,9 @@ std::vector<std::string> hand_error_warnings(const Model& model, const Recording
     if (recording.at(r, column) > recording.at(worst, column)) worst = r;
   const double largest = recording.at(worst, column);
   if (!(largest > model.warn.hand_error)) return {};
-  char when[48];
-  std::snprintf(when, sizeof when, "%.4g s", recording.at(worst, recording.layout.time()));
-  return {"the hand was " + length_text(largest) + " from its desired point at t = " + when +
-          ", above warnings: hand_error (" + length_text(model.warn.hand_error) +
+  const std::string when = significant(recording.at(worst, recording.layout.time()), 4) + " s";
+  return {"the hand was " + in_units(largest, kLengthUnits) + " from its desired point at t = " +
+          when + ", above warnings: hand_error (" + in_units(model.warn.hand_error, kLengthUnits) +
           "): the arm did not do the task it was given"};
 }
 

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <utility>
 
+#include "engine/recording/number_text.hpp"
 #include "report/plot/canvas.hpp"
 
 namespace elbowsim::plot {
@@ -196,12 +196,6 @@ Range bar_range(const BarChart& chart) {
   return r;
 }
 
-std::string value_label(double v, int digits) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*g", digits, v);
-  return text;
-}
-
 // One bar per group in each category's slot, its value printed above (below,
 // if negative); "n/a" where a value is missing.
 void draw_bars(cairo_t* cr, const BarChart& chart, const Box& area, const Mapping& y) {
@@ -221,7 +215,7 @@ void draw_bars(cairo_t* cr, const BarChart& chart, const Box& area, const Mappin
       cairo_rectangle(cr, left + 1, std::min(y0, y1), bar - 2, std::max(std::abs(y1 - y0), 1.0));
       cairo_fill(cr);
       draw_text(cr, left + bar / 2, values[c] >= 0 ? y1 - 4 : y1 + 13,
-                value_label(values[c], chart.value_digits), Align::center);
+                significant(values[c], chart.value_digits), Align::center);
     }
   }
 }

@@ -7,6 +7,8 @@
 #include <tuple>
 #include <utility>
 
+#include "engine/recording/number_text.hpp"
+
 namespace elbowsim::plot {
 
 namespace {
@@ -61,18 +63,13 @@ std::string format_linear(double value, double step, double magnitude) {
   if (std::abs(value) < 1e-9 * step) value = 0;  // no "-0.0"
   const int step_exponent = static_cast<int>(std::floor(std::log10(step) + 1e-9));
   magnitude = std::max(magnitude, step);
-  char text[64];
   // Fixed point for everyday magnitudes: as many decimals as the step needs.
-  if (magnitude >= 1e-3 && magnitude < 1e5) {
-    std::snprintf(text, sizeof text, "%.*f", std::max(0, -step_exponent), value);
-    return text;
-  }
+  if (magnitude >= 1e-3 && magnitude < 1e5) return fixed(value, std::max(0, -step_exponent));
   // Otherwise m×10^e with the axis' exponent e, m as precise as the step.
   if (value == 0) return "0";
   const int e = static_cast<int>(std::floor(std::log10(magnitude) + 1e-9));
-  std::snprintf(text, sizeof text, "%.*f×", std::max(0, e - step_exponent),
-                value / power_of_ten(e));
-  return text + format_power_of_ten(e);
+  return fixed(value / power_of_ten(e), std::max(0, e - step_exponent)) + "×" +
+         format_power_of_ten(e);
 }
 
 Ticks linear_ticks(double lo, double hi, int target, bool loose) {

@@ -2,8 +2,8 @@
 // horizontal bar from the running total before the step to the one after
 // it, a dotted connector to the next row, the value printed beside the bar.
 #include <algorithm>
-#include <cstdio>
 
+#include "engine/recording/number_text.hpp"
 #include "report/plot/canvas.hpp"
 
 namespace elbowsim::plot {
@@ -32,9 +32,7 @@ std::vector<std::pair<double, double>> spans(const Waterfall& chart) {
 }
 
 std::string value_text(const WaterfallStep& s, const std::string& unit, double running) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.3g", s.total ? running : s.value);
-  std::string out = text;
+  std::string out = significant(s.total ? running : s.value, 3);
   if (!unit.empty()) out += " " + unit;
   if (!s.text.empty()) out = s.text;
   return s.note.empty() ? out : out + "  " + s.note;
