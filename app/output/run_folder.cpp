@@ -9,6 +9,7 @@
 #include "app/output/run_manifest.hpp"
 #include "app/output/trajectory_csv.hpp"
 #include "app/scenario/scenario.hpp"
+#include "engine/step_grid.hpp"
 
 namespace elbowsim {
 
@@ -178,7 +179,7 @@ std::string inconsistency(const report::RunData& run) {
   // (or, for a run that stopped early, no later than it).
   const double final_time = run.summary.value("final_time", 0.0);
   const double last = run.trajectory.at(run.trajectory.rows() - 1, 0);
-  const double tolerance = 1e-9 * std::max(1.0, std::abs(final_time));
+  const double tolerance = step_grid::recorded_time_tolerance(final_time);
   const bool completed = run.summary.value("completed", false);
   if (last > final_time + tolerance || (completed && last < final_time - tolerance))
     return "trajectory.csv ends at t = " + number(last) + " s but summary.json says the run " +
