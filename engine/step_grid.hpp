@@ -6,25 +6,30 @@
 // grid's spacing (the step), never an absolute time: a 1 us step and a 10 ms
 // step round alike.
 //
-// Three shares, because they are three different quantities; each value is
-// the one the code used before this header, and changing any of them changes
-// results (tests/engine/test_step_grid.cpp, CHANGELOG issue 32):
-//   kRounding  1e-9  rounding of t: a step that ends this close to an instant
-//                    has reached it. t is a sum of steps since the last row it
-//                    was cut to, k T and k x interval are one product each:
-//                    their errors are ~1e-16 relative, far below 1e-9 of a step,
-//                    and a real remainder (a step cut short by an event, to
-//                    locate_tolerance) is far above it.
-//   kRow       1e-6  the recorded rows: two grids that coincide in exact
-//                    arithmetic (a sample instant k T and a row m x interval)
-//                    differ by rounding of their own, measured 1e-13 s: at a
-//                    1e-4 s step that is 1e-9 of it, on kRounding's edge, and the
-//                    row was recorded twice. Rows take the looser share so a step
-//                    ending on either instant records the row, once.
+// Three shares, because they bound three different errors. Each is the value
+// the code used before this header, and each unified with another changes
+// results (measured on the shipped scenes' golden outputs; and the tests,
+// tests/engine/test_step_grid.cpp):
+//   kRounding  1e-9  the rounding of one operation: an instant computed as k T
+//                    or k x interval, a step cut to end on it (h = instant - t),
+//                    a period 1 / rate. A few ulps: 1e-10 of a 1 ms step at
+//                    t = 1000 s. Used where t was just cut to the instant (sample
+//                    instants, an adaptive run's end and rows). At 1e-6 no shipped
+//                    scene changes, but a sample would be taken, and an adaptive
+//                    row recorded, up to 1e-6 of a step before its instant.
+//   kRow       1e-6  the rows: between rows a fixed step's t accumulates the
+//                    rounding of every step's sum (scenarios/hard/long_rest.yaml:
+//                    10^4 steps between rows end 2.4e-7 of a step short of
+//                    t = 1000 s), and a sample instant coincides with a row only
+//                    up to rounding (1e-13 s, 1e-9 of a 1e-4 s step, recorded the
+//                    row twice: commit 7fafad0). At 1e-9 scenarios/hard/long_chain
+//                    takes one sliver step more (10001 steps, not 10000).
 //   kFixedEnd  1e-3  the end of a fixed-step run: less than a thousandth of a
-//                    step left is not stepped (the run has ended). The duration
-//                    need not be a whole number of steps; an adaptive run ends
-//                    on the duration itself (adaptive_limit) and uses kRounding.
+//                    step left is not stepped. At 1e-9, long_rest's last 2.4e-7
+//                    of a step becomes a step and a row; at 1e-6 no shipped scene
+//                    changes but a duration 1e-4 of a step past a whole number of
+//                    steps takes a sliver step. (An adaptive run ends on the
+//                    duration itself, adaptive_limit, and uses kRounding.)
 #pragma once
 
 #include <algorithm>
@@ -75,9 +80,10 @@ inline bool on_row(double t, double k, double interval, double step) {
 
 // Two recorded times read back (trajectory.csv prints 12 significant digits,
 // summary.json 17; two runs reach a row by different sums of steps) name the
-// same instant when they differ by less than 1e-9 of max(1 s, |t|): the
-// printing's 5e-13 relative and the rows' rounding are far below it, a row
-// interval far above. Not a share of a step: a file does not say its step.
+// same instant when they differ by at most 1e-9 of max(1 s, |t|): the
+// printing's 5e-13 relative and the rows' rounding are far below it; rows are
+// 1 ms or more apart in the shipped scenes, 1000 times the tolerance at
+// t = 1000 s. Not a share of a step: a file does not say its step.
 inline constexpr double kRecordedTime = 1e-9;  // [relative to max(1 s, |t|)]
 
 inline double recorded_time_tolerance(double t) {

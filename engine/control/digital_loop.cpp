@@ -104,7 +104,8 @@ void sample_if_due(const Model& model, Data& data) {
   // Instants are k T, not sums of steps: no drift. A step that ends within
   // rounding of the instant (engine/step_grid.hpp) has reached it.
   const double instant = static_cast<double>(data.loop.next_sample) * spec->sample_period;
-  if (step_grid::not_earlier(data.t, instant, model.options.step)) sample(model, data, *spec, false);
+  if (step_grid::not_earlier(data.t, instant, model.options.step))
+    sample(model, data, *spec, false);
 }
 
 double time_to_sample(const Data& data) {

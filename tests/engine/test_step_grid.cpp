@@ -1,7 +1,5 @@
 // engine/step_grid.hpp: the tolerances of "on the step grid", each a share of
 // the grid's spacing, and the decisions made with them.
-#include "engine/step_grid.hpp"
-
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -10,6 +8,7 @@
 #include <cstdlib>
 
 #include "engine/run/simulator.hpp"
+#include "engine/step_grid.hpp"
 #include "support/scenes.hpp"
 
 using namespace elbowsim;
@@ -20,7 +19,7 @@ TEST_CASE("step grid: an instant is reached within rounding, a share of the step
   for (double step : {1e-6, 1e-4, 1e-2}) {
     CAPTURE(step);
     CHECK(reached(0, step));
-    CHECK(reached(0.5e-9 * step, step));    // rounding: reached
+    CHECK(reached(0.5e-9 * step, step));      // rounding: reached
     CHECK_FALSE(reached(1e-8 * step, step));  // a step cut short by 1e-8 of it: not yet
     CHECK_FALSE(reached(2e-9 * step, step));
     CHECK(reached(0.5e-3 * step, step, kFixedEnd));  // the end of a fixed-step run
