@@ -12,12 +12,14 @@
 // index, a ratio or a share); "state" is the integrated state's own units
 // (rad, rad/s, A, J: an absolute tolerance); "metric" is the unit of the
 // metric named after "metrics." (engine/recording/metrics.hpp); "" is not a
-// number (text, a flag, an object, a list of names). A list of numbers has
-// its unit at the list's path.
+// number (text, a flag, an object, a list of names). A list's elements are
+// "<list>.*" (saturation_share.*: per motor).
 #pragma once
 
 #include <string>
 #include <string_view>
+
+#include "engine/recording/metrics.hpp"
 
 // X(name, path, unit)
 #define ELBOWSIM_SUMMARY_KEYS(X)                                                               \
@@ -102,7 +104,8 @@
   X(body_sticks, "contact.bodies.*.sticks", "1")                                               \
   X(body_slips, "contact.bodies.*.slips", "1")                                                 \
   X(warnings, "warnings", "")                                                                  \
-  X(saturation_share, "saturation_share", "1")                                                 \
+  X(saturation_share, "saturation_share", "")                                                  \
+  X(saturation_share_motor, "saturation_share.*", "1")                                         \
   X(step_check, "step_check", "")                                                              \
   X(step_check_error, "step_check.error", "")                                                  \
   X(step_check_refinement, "step_check.refinement", "")                                        \
@@ -128,12 +131,7 @@ struct SummaryKey {
   // The key in its object ("max_abs_C"): what a writer or reader of that object indexes by.
   constexpr std::string_view name() const { return path.substr(path.rfind('.') + 1); }
   // The path as a JSON pointer ("/contact/max_abs_C").
-  std::string pointer() const {
-    std::string p = "/" + std::string(path);
-    for (char& c : p)
-      if (c == '.') c = '/';
-    return p;
-  }
+  std::string pointer() const;
 };
 
 namespace summary_key {
@@ -149,10 +147,36 @@ inline constexpr SummaryKey kAll[] = {
 #undef ELBOWSIM_SUMMARY_KEY
 };
 
+// A dotted path as a JSON pointer: "contact.max_abs_C" is "/contact/max_abs_C".
+inline std::string json_pointer(std::string_view path) {
+  std::string p(1, '/');
+  p.append(path);
+  for (char& c : p)
+    if (c == '.') c = '/';
+  return p;
+}
+
 // The path of a metric in summary.json: "metrics.hand_error_rms".
 inline std::string metric_path(std::string_view metric_name) {
   return std::string(metrics.path) + "." + std::string(metric_name);
 }
+
+// The metric a path of summary.json names ("metrics.current_rms.2": "current_rms"),
+// "" for a path outside "metrics".
+inline std::string_view metric_of(std::string_view path) {
+  const std::string_view prefix = metrics.path;
+  if (!(path.size() > prefix.size() && path.starts_with(prefix) && path[prefix.size()] == '.'))
+    return {};
+  const std::string_view rest = path.substr(prefix.size() + 1);
+  return rest.substr(0, rest.find('.'));
+}
+
+// The path of a metric's step check: "step_check.metrics.joule".
+inline std::string checked_metric_path(std::string_view metric_name) {
+  return std::string(step_check_metrics.path) + "." + std::string(metric_name);
+}
 }  // namespace summary_key
+
+inline std::string SummaryKey::pointer() const { return summary_key::json_pointer(path); }
 
 }  // namespace elbowsim

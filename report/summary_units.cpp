@@ -44,10 +44,6 @@ const SummaryKey* find_key(const std::vector<std::string_view>& parts) {
   return nullptr;
 }
 
-bool is_index(std::string_view part) {
-  return !part.empty() && part.find_first_not_of("0123456789") == std::string_view::npos;
-}
-
 void collect(const nlohmann::ordered_json& node, const std::string& path,
              nlohmann::ordered_json& units) {
   const bool numbers = node.is_array() && !node.empty() &&
@@ -68,13 +64,8 @@ void collect(const nlohmann::ordered_json& node, const std::string& path,
 }  // namespace
 
 std::string summary_unit(std::string_view path) {
-  std::vector<std::string_view> parts = split(path);
+  const std::vector<std::string_view> parts = split(path);
   const SummaryKey* key = find_key(parts);
-  // A list of numbers has its unit at the list's path: saturation_share.0.
-  if (!key && parts.size() > 1 && is_index(parts.back())) {
-    parts.pop_back();
-    key = find_key(parts);
-  }
   if (!key) return "";
   if (key->unit != summary_key::kMetricUnit) return std::string(key->unit);
   // "metric": the unit of the metric named after "metrics"
