@@ -269,7 +269,7 @@ std::string page(const std::vector<RunData>& runs, const Comparison& c, const Fi
   for (const std::string& label : c.labels) names += (names.empty() ? "" : " vs ") + label;
   std::string p = html::page_begin("elbowsim comparison: " + comparison_title(runs));
   const std::string scenario =
-      runs.front().has_summary() ? runs.front().summary.value("scenario", "") : "";
+      runs.front().has_summary() ? runs.front().summary.value(key::scenario.name(), "") : "";
   p += "<header>\n<h1>Comparison: " + html::escape(names) + "</h1>\n<p class=\"meta\">" +
        (scenario.empty() ? "" : "Scenario " + html::escape(scenario) + "; ") +
        std::to_string(runs.size()) + " recorded runs; differences are to " +

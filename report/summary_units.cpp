@@ -78,16 +78,18 @@ std::string summary_unit(std::string_view path) {
 nlohmann::ordered_json units_json(const nlohmann::ordered_json& summary) {
   nlohmann::ordered_json units = nlohmann::ordered_json::object();
   for (const auto& [key, value] : summary.items())
-    if (key != "units") collect(value, key, units);
+    if (key != summary_key::units.name()) collect(value, key, units);
   return units;
 }
 
 nlohmann::ordered_json with_units(const nlohmann::ordered_json& summary) {
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
-  if (summary.contains("provenance")) out["provenance"] = summary["provenance"];
-  out["units"] = units_json(summary);
+  const std::string_view provenance = summary_key::provenance.name(),
+                         units = summary_key::units.name();
+  if (summary.contains(provenance)) out[provenance] = summary[provenance];
+  out[units] = units_json(summary);
   for (const auto& [key, value] : summary.items())
-    if (key != "provenance" && key != "units") out[key] = value;
+    if (key != provenance && key != units) out[key] = value;
   return out;
 }
 
