@@ -38,17 +38,17 @@ std::string field(const RunData& run, const nlohmann::ordered_json::json_pointer
 std::string runs_table(const std::vector<RunData>& runs, const fs::path& out) {
   using P = nlohmann::ordered_json::json_pointer;
   const std::pair<const char*, SummaryKey> rows[] = {{"scenario", key::scenario},
-                                                    {"description", key::description},
-                                                    {"completed", key::completed},
-                                                    {"valid", key::valid},
-                                                    {"failure", key::failure},
-                                                    {"active effects", key::effects},
-                                                    {"integrator", key::settings_integrator},
-                                                    {"dynamics", key::settings_dynamics},
-                                                    {"step [s]", key::settings_step},
-                                                    {"duration [s]", key::settings_duration},
-                                                    {"steps", key::steps},
-                                                    {"wall time [s]", key::wall_seconds}};
+                                                     {"description", key::description},
+                                                     {"completed", key::completed},
+                                                     {"valid", key::valid},
+                                                     {"failure", key::failure},
+                                                     {"active effects", key::effects},
+                                                     {"integrator", key::settings_integrator},
+                                                     {"dynamics", key::settings_dynamics},
+                                                     {"step [s]", key::settings_step},
+                                                     {"duration [s]", key::settings_duration},
+                                                     {"steps", key::steps},
+                                                     {"wall time [s]", key::wall_seconds}};
   std::string t = "<table id=\"runs\">\n<tr><th>run</th>";
   for (const RunData& run : runs) {
     std::string name = html::escape(run.label);
@@ -196,7 +196,8 @@ std::string headline_table(const std::vector<RunData>& runs, const Comparison& c
       // whenever the elbows rest differently).
       const std::string text =
           item.path == key::contact_bodies.path
-              ? (headline_value(runs[r], item) == headline_value(runs[0], item) ? "same" : "differs")
+              ? (headline_value(runs[r], item) == headline_value(runs[0], item) ? "same"
+                                                                                : "differs")
               : headline_difference(c, item.path, r);
       t += cell(text, text.rfind("same", 0) == 0 ? "num same" : "num differs");
     }
@@ -220,16 +221,19 @@ std::string notices(const std::vector<RunData>& runs) {
     const RunData& run = runs[k];
     const std::string id = std::to_string(k);
     if (run.has_summary() && run.summary.value(key::completed.name(), true) && !is_valid(run))
-      out += html::notice("failure", run.label + " is not a valid run",
-                          {run.summary.value(key::failure.name(), std::string("(no reason recorded)"))},
-                          "failure-" + id);
+      out += html::notice(
+          "failure", run.label + " is not a valid run",
+          {run.summary.value(key::failure.name(), std::string("(no reason recorded)"))},
+          "failure-" + id);
     if (run.has_summary() && !run.summary.value(key::completed.name(), true))
-      out += html::notice("failure", run.label + " did not complete",
-                          {run.summary.value(key::failure.name(), std::string("(no reason recorded)"))},
-                          "failure-" + id);
+      out += html::notice(
+          "failure", run.label + " did not complete",
+          {run.summary.value(key::failure.name(), std::string("(no reason recorded)"))},
+          "failure-" + id);
     std::vector<std::string> warnings;
     if (run.has_summary() && run.summary.contains(key::warnings.name()))
-      for (const auto& w : run.summary[key::warnings.name()]) warnings.push_back(w.get<std::string>());
+      for (const auto& w : run.summary[key::warnings.name()])
+        warnings.push_back(w.get<std::string>());
     if (!warnings.empty())
       out += html::notice("warnings", run.label + ": warnings", warnings, "warnings-" + id);
     if (!run.problems.empty())

@@ -111,12 +111,13 @@ std::vector<std::string> failures(const std::vector<RunData>& runs) {
       continue;
     }
     if (!run.summary.value(key::completed.name(), true))
-      sentences.push_back(run.label + " did not complete (" + run.summary.value(key::failure.name(), "") +
+      sentences.push_back(run.label + " did not complete (" +
+                          run.summary.value(key::failure.name(), "") +
                           "): its totals cover t = 0 to " +
                           quantity(run.summary.value(key::final_time.name(), 0.0), "s") + " only.");
     else if (!is_valid(run))
-      sentences.push_back(run.label + " is not a valid run (" + run.summary.value(key::failure.name(), "") +
-                          ").");
+      sentences.push_back(run.label + " is not a valid run (" +
+                          run.summary.value(key::failure.name(), "") + ").");
   }
   return sentences;
 }
@@ -258,10 +259,12 @@ Comparison compare_runs(const std::vector<RunData>& runs) {
     c.folders.push_back(run.folder.generic_string());
     c.completed.push_back(run.has_summary() && run.summary.value(key::completed.name(), false));
     c.valid.push_back(is_valid(run));
-    c.failures.push_back(run.has_summary() ? run.summary.value(key::failure.name(), "") : "no summary.json");
+    c.failures.push_back(run.has_summary() ? run.summary.value(key::failure.name(), "")
+                                           : "no summary.json");
     // A run that stopped before its first step (its task could not be planned)
     // has no numbers to compare, only zeros in its summary.
-    const bool ran = c.completed.back() || (run.has_summary() && run.summary.value(key::steps.name(), 0L) > 0);
+    const bool ran =
+        c.completed.back() || (run.has_summary() && run.summary.value(key::steps.name(), 0L) > 0);
     per_run.push_back(ran ? run_metrics(run) : std::vector<Metric>());
   }
   add_rows(runs, per_run, c.metrics);

@@ -39,8 +39,7 @@ std::string floor_text(const RunData& run, const Json& m, const std::string& uni
   const Json* how = at(run, key::step_check_refinement.path);
   return "below the integration floor (" + quantity(m.value(key::checked_value.name(), 0.0), unit) +
          "; it moves by " + quantity(m.value(key::checked_floor.name(), 0.0), unit) + " at " +
-         (how && how->is_string() ? how->get<std::string>() : "half the step") +
-         "): not a result";
+         (how && how->is_string() ? how->get<std::string>() : "half the step") + "): not a result";
 }
 
 // A list (per joint) or object (per elbow) of numbers, each with its unit.
@@ -81,7 +80,8 @@ std::string force_text(const RunData& run) {
   if (never_rests(run)) return "— (no elbow rests)";
   return quantity(number(run, key::metric_path(metric::elbow_force_min)), "N") + " to " +
          quantity(number(run, key::metric_path(metric::elbow_force_max)), "N") + " (mean " +
-         quantity(number(run, key::metric_path(metric::elbow_force_mean)), "N") + ", while resting)";
+         quantity(number(run, key::metric_path(metric::elbow_force_mean)), "N") +
+         ", while resting)";
 }
 
 std::string unplanned_text(const RunData& run) {
@@ -136,9 +136,9 @@ std::string run_title(const RunData& run) {
 std::string comparison_title(const std::vector<RunData>& runs) {
   std::string names;
   for (const RunData& run : runs) names += (names.empty() ? "" : " vs ") + run.label;
-  const std::string scenario =
-      !runs.empty() && runs.front().has_summary() ? runs.front().summary.value(key::scenario.name(), "")
-                                                   : "";
+  const std::string scenario = !runs.empty() && runs.front().has_summary()
+                                   ? runs.front().summary.value(key::scenario.name(), "")
+                                   : "";
   return scenario.empty() ? names : scenario + " · " + names;
 }
 
@@ -206,10 +206,10 @@ std::string headline_sentence(const RunData& run) {
     parts.push_back("the hand error is below the integration floor (it measures the integrator, "
                     "not the arm; the report's accuracy check gives the numbers)");
   else if (has(run, key::metric_path(metric::hand_error_rms)))
-    parts.push_back("the hand kept to its path within " +
-                    quantity(number(run, key::metric_path(metric::hand_error_rms)), "m") + " RMS (" +
-                    quantity(number(run, key::metric_path(metric::hand_error_max)), "m") +
-                    " at most)");
+    parts.push_back(
+        "the hand kept to its path within " +
+        quantity(number(run, key::metric_path(metric::hand_error_rms)), "m") + " RMS (" +
+        quantity(number(run, key::metric_path(metric::hand_error_max)), "m") + " at most)");
   if (has(run, "energy_final.electrical_in") && number(run, "energy_final.drawn") > 0)
     parts.push_back("the motors took " + quantity(number(run, "energy_final.electrical_in"), "J") +
                     " of electrical energy and lost " +
@@ -241,8 +241,8 @@ std::string accuracy_check(const RunData& run) {
       check->contains(key::step_check_half_step.name())
           ? "at half the step (" +
                 quantity(check->value(key::step_check_half_step.name(), 0.0), "s") + ")"
-          : "at " + check->value(key::step_check_refinement.name(),
-                                 std::string("a refined setting"));
+          : "at " +
+                check->value(key::step_check_refinement.name(), std::string("a refined setting"));
   if (!check->value(key::step_check_valid_at_half_step.name(), true))
     return text + " the run is NOT VALID";
   const Json& m = check->value(key::step_check_metrics.name(), Json::object());

@@ -5,11 +5,11 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "engine/recording/metrics.hpp"
 #include "report/html.hpp"
 #include "report/plot/plot.hpp"
 #include "report/plots_aside.hpp"
 #include "report/quantity.hpp"
-#include "engine/recording/metrics.hpp"
 
 namespace elbowsim::report {
 

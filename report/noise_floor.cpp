@@ -65,8 +65,8 @@ double duration_scale(const std::vector<RunData>& runs) {
   double scale = 0;
   for (const RunData& run : runs)
     if (run.has_summary() && run.summary.contains(key::settings.name()))
-      scale = std::max(scale, run.summary[key::settings.name()].value(
-                                  key::settings_duration.name(), 0.0));
+      scale = std::max(scale,
+                       run.summary[key::settings.name()].value(key::settings_duration.name(), 0.0));
   return scale;
 }
 
@@ -89,7 +89,8 @@ double step_change(const std::string& path, const std::vector<RunData>& runs) {
     const Json::json_pointer at(key::json_pointer(key::checked_metric_path(name)));
     if (!run.has_summary() || !run.summary.contains(at)) return -1;
     const Json& m = run.summary[at];
-    const std::string_view value = key::checked_value.name(), half = key::checked_at_half_step.name();
+    const std::string_view value = key::checked_value.name(),
+                           half = key::checked_at_half_step.name();
     if (!m.value(value, Json()).is_number() || !m.value(half, Json()).is_number()) return -1;
     change = std::max(change, std::abs(m[value].get<double>() - m[half].get<double>()));
   }
@@ -136,8 +137,7 @@ MetricKind metric_kind(const std::string& path) {
   if (inside(path, key::step_check) || path == key::balance_residual.path ||
       path == key::max_abs_balance_residual.path || path == key::balance_residual_relative.path ||
       path == key::contact_max_abs_C.path || path == key::contact_max_abs_Jc_qd.path ||
-      path == key::contact_dependent_steps.path ||
-      key::metric_of(path) == metric::elbow_drift_max)
+      path == key::contact_dependent_steps.path || key::metric_of(path) == metric::elbow_drift_max)
     return MetricKind::numerics;
   return MetricKind::result;
 }
@@ -152,8 +152,7 @@ NoiseFloor noise_floor(const std::string& path, const std::vector<RunData>& runs
   if (path == key::contact_max_abs_Jc_qd.path) return {1e-9, "absolute (drift that should be 0)"};
   if (path == key::balance_residual_relative.path)
     return {1e-3, "absolute (a residual that should be 0)"};
-  if (key::metric_of(path) == metric::rest_fraction)
-    return {0.01, "absolute (a share of the run)"};
+  if (key::metric_of(path) == metric::rest_fraction) return {0.01, "absolute (a share of the run)"};
   if (const double change = step_change(path, runs); change >= 0)
     return {kStepFloorFactor * change, "twice the change at half the step (--check-step)"};
   if (is_energy(path)) {

@@ -46,7 +46,8 @@ std::string status(const nlohmann::ordered_json& s) {
   const std::string steps = std::to_string(s.value(key::steps.name(), 0L)) +
                             " steps to t = " + number(s.value(key::final_time.name(), 0.0), "s");
   if (!s.value(key::completed.name(), false)) return "STOPPED EARLY after " + steps;
-  return s.value(key::valid.name(), true) ? "completed: " + steps : "completed, NOT VALID: " + steps;
+  return s.value(key::valid.name(), true) ? "completed: " + steps
+                                          : "completed, NOT VALID: " + steps;
 }
 
 Rows run_rows(const RunData& run) {
@@ -58,20 +59,25 @@ Rows run_rows(const RunData& run) {
   const double wall = s.value(key::wall_seconds.name(), 0.0);
   rows.push_back({"status", status(s)});
   rows.push_back({"scenario file", s.value(key::file.name(), "")});
-  rows.push_back({"active effects", joined(s.value(key::effects.name(), nlohmann::ordered_json::array()))});
-  rows.push_back({"model", std::to_string(model.value(key::model_dof.name(), 0)) + " joints, total mass " +
-                               number(model.value(key::model_total_mass.name(), 0.0), "kg") + ", hand on link " +
+  rows.push_back(
+      {"active effects", joined(s.value(key::effects.name(), nlohmann::ordered_json::array()))});
+  rows.push_back({"model", std::to_string(model.value(key::model_dof.name(), 0)) +
+                               " joints, total mass " +
+                               number(model.value(key::model_total_mass.name(), 0.0), "kg") +
+                               ", hand on link " +
                                std::to_string(model.value(key::model_hand_link.name(), 0))});
   for (const auto& row : run.model_rows) rows.push_back(row);
   std::string integrator = settings.value(key::settings_integrator.name(), "");
-  if (settings.contains(key::settings_rtol.name()))  // adaptive: its tolerances; step is the recording interval
-    integrator += ", rtol " + number(settings.value(key::settings_rtol.name(), 0.0), "") + ", atol " +
-                  number(settings.value(key::settings_atol.name(), 0.0), "") + ", rows every " +
-                  number(settings.value(key::settings_step.name(), 0.0), "s");
+  if (settings.contains(
+          key::settings_rtol.name()))  // adaptive: its tolerances; step is the recording interval
+    integrator += ", rtol " + number(settings.value(key::settings_rtol.name(), 0.0), "") +
+                  ", atol " + number(settings.value(key::settings_atol.name(), 0.0), "") +
+                  ", rows every " + number(settings.value(key::settings_step.name(), 0.0), "s");
   else
     integrator += ", step " + number(settings.value(key::settings_step.name(), 0.0), "s");
   rows.push_back(
-      {"integrator", integrator + ", duration " + number(settings.value(key::settings_duration.name(), 0.0), "s")});
+      {"integrator", integrator + ", duration " +
+                         number(settings.value(key::settings_duration.name(), 0.0), "s")});
   rows.push_back({"dynamics", dynamics_name(settings.value(key::settings_dynamics.name(), ""))});
   if (s.contains(key::controller.name()) && s[key::controller.name()].is_string()) {
     std::string believes = "knows the plant exactly";
@@ -85,9 +91,11 @@ Rows run_rows(const RunData& run) {
   }
   if (s.contains(key::control_loop.name()) && s[key::control_loop.name()].is_object()) {
     const auto& loop = s[key::control_loop.name()];
-    std::string text = number(loop.value(key::control_loop_sample_rate.name(), 0.0), "Hz") + " sampling, delay " +
-                       std::to_string(loop.value(key::control_loop_delay_samples.name(), 0)) + " samples";
-    if (const long counts = loop.value(key::control_loop_encoder_counts_per_rev.name(), 0L); counts > 0)
+    std::string text =
+        number(loop.value(key::control_loop_sample_rate.name(), 0.0), "Hz") + " sampling, delay " +
+        std::to_string(loop.value(key::control_loop_delay_samples.name(), 0)) + " samples";
+    if (const long counts = loop.value(key::control_loop_encoder_counts_per_rev.name(), 0L);
+        counts > 0)
       text += ", encoder " + std::to_string(counts) + " counts/rev (" +
               loop.value(key::control_loop_encoder_side.name(), "") + " side)";
     if (const double noise = loop.value(key::control_loop_angle_noise.name(), 0.0); noise > 0)
@@ -100,10 +108,12 @@ Rows run_rows(const RunData& run) {
   }
   const auto& contact = s.value(key::contact.name(), nlohmann::ordered_json::object());
   if (contact.value(key::contact_enabled.name(), false))
-    rows.push_back({"contact", "events: " + contact.value(key::contact_events.name(), "") +
-                                   ", stabilization: " + contact.value(key::contact_stabilization.name(), "") + ", " +
-                                   std::to_string(contact.value(key::contact_landings.name(), 0)) + " landings, " +
-                                   std::to_string(contact.value(key::contact_releases.name(), 0)) + " releases"});
+    rows.push_back(
+        {"contact",
+         "events: " + contact.value(key::contact_events.name(), "") +
+             ", stabilization: " + contact.value(key::contact_stabilization.name(), "") + ", " +
+             std::to_string(contact.value(key::contact_landings.name(), 0)) + " landings, " +
+             std::to_string(contact.value(key::contact_releases.name(), 0)) + " releases"});
   const long steps_per_second = wall > 0 ? std::lround(s.value(key::steps.name(), 0L) / wall) : 0;
   rows.push_back(
       {"wall time", number(wall, "s") +
@@ -127,18 +137,20 @@ std::string header(const RunData& run) {
 std::string notices(const RunData& run) {
   std::string out;
   const nlohmann::ordered_json& s = run.summary;
-  if (run.has_summary() && s.value(key::completed.name(), true) && !s.value(key::valid.name(), true))
-    out += html::notice("failure", "This run is not valid: do not use its numbers.",
-                        {"Failure: " + s.value(key::failure.name(), std::string("(no reason recorded)")),
-                         "It ran to t = " + number(s.value(key::final_time.name(), 0.0), "s") +
-                             "; the plots show what it computed, for diagnosis."},
-                        "failure");
+  if (run.has_summary() && s.value(key::completed.name(), true) &&
+      !s.value(key::valid.name(), true))
+    out += html::notice(
+        "failure", "This run is not valid: do not use its numbers.",
+        {"Failure: " + s.value(key::failure.name(), std::string("(no reason recorded)")),
+         "It ran to t = " + number(s.value(key::final_time.name(), 0.0), "s") +
+             "; the plots show what it computed, for diagnosis."},
+        "failure");
   if (run.has_summary() && !s.value(key::completed.name(), true))
     out += html::notice(
         "failure", "This run did not complete.",
         {"Failure: " + s.value(key::failure.name(), std::string("(no reason recorded)")),
-         "What it recorded is kept: t = 0 to " + number(s.value(key::final_time.name(), 0.0), "s") + ", " +
-             std::to_string(run.trajectory.rows()) +
+         "What it recorded is kept: t = 0 to " + number(s.value(key::final_time.name(), 0.0), "s") +
+             ", " + std::to_string(run.trajectory.rows()) +
              " samples; the plots and totals cover that span only."},
         "failure");
   std::vector<std::string> warnings;

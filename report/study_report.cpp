@@ -5,12 +5,12 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "engine/recording/metrics.hpp"
 #include "report/html.hpp"
 #include "report/plot/plot.hpp"
 #include "report/plots_aside.hpp"
 #include "report/quantity.hpp"
 #include "report/run_plots.hpp"
-#include "engine/recording/metrics.hpp"
 
 namespace elbowsim::report {
 
@@ -119,10 +119,10 @@ std::string case_table(const Json& doc) {
         const Json x = c.value("metrics", Json::object())
                            .value(v.get<std::string>(), Json::object())
                            .value(m.metric, Json::object());
-        out +=
-            "<td class=\"num\">" +
-            html::escape(with_interval(x.value("mean", Json()), x.value("ci95", Json()), m.unit())) +
-            "</td>";
+        out += "<td class=\"num\">" +
+               html::escape(
+                   with_interval(x.value("mean", Json()), x.value("ci95", Json()), m.unit())) +
+               "</td>";
       }
       const Json r = pair.value(m.metric, Json::object());
       const std::string outcome = r.value("outcome", "no verdict");

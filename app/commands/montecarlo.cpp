@@ -52,13 +52,11 @@ struct StudiedMetric {
   const char* name;
   report::Scale scale;
 };
-const StudiedMetric kMetrics[] = {{metric::energy_in, report::Scale::linear},
-                                  {metric::energy_drawn, report::Scale::log},
-                                  {metric::energy_regenerated, report::Scale::log},
-                                  {metric::joule, report::Scale::log},
-                                  {metric::hand_error_rms, report::Scale::log},
-                                  {metric::hand_error_max, report::Scale::log},
-                                  {metric::hand_error_final, report::Scale::log}};
+const StudiedMetric kMetrics[] = {
+    {metric::energy_in, report::Scale::linear},       {metric::energy_drawn, report::Scale::log},
+    {metric::energy_regenerated, report::Scale::log}, {metric::joule, report::Scale::log},
+    {metric::hand_error_rms, report::Scale::log},     {metric::hand_error_max, report::Scale::log},
+    {metric::hand_error_final, report::Scale::log}};
 
 struct Sample {
   bool valid = false;
@@ -244,7 +242,8 @@ void write_samples_csv(const std::filesystem::path& path, const std::vector<Vari
     out << "draw,variant,valid,sensor_seed";
     for (const UncertainParameter& p : variants.front().nominal.uncertainty.parameters)
       out << "," << p.key;
-    for (const StudiedMetric& k : kMetrics) out << "," << k.name << " [" << metric_unit(k.name) << "]";
+    for (const StudiedMetric& k : kMetrics)
+      out << "," << k.name << " [" << metric_unit(k.name) << "]";
     out << ",unplanned_contact_share,unplanned_contact_body,failure\n";
     for (std::size_t d = 0; d < draws.size(); ++d)
       for (std::size_t v = 0; v < variants.size(); ++v) {

@@ -136,10 +136,11 @@ void add_step_check(const Scenario& scenario, const RunResult& result,
   for (const auto& name : c[key::step_check_below_floor.name()]) {
     const auto& m = metrics[name.get<std::string>()];
     const std::string unit = m[key::checked_unit.name()].get<std::string>();
-    std::printf("  %s %.3g %s is below the integration floor (it moves by %.3g %s when refined): "
-                "it measures the integrator, not the arm\n",
-                name.get<std::string>().c_str(), m[key::checked_value.name()].get<double>(),
-                unit.c_str(), m[key::checked_floor.name()].get<double>(), unit.c_str());
+    std::printf(
+        "  %s %.3g %s is below the integration floor (it moves by %.3g %s when refined): "
+        "it measures the integrator, not the arm\n",
+        name.get<std::string>().c_str(), m[key::checked_value.name()].get<double>(), unit.c_str(),
+        m[key::checked_floor.name()].get<double>(), unit.c_str());
   }
   std::fflush(stdout);
 }

@@ -117,8 +117,9 @@ nlohmann::ordered_json contact_json(const Scenario& s, const RunResult& r) {
       case ContactEvent::Kind::slip: ++slips; break;
     }
   }
-  nlohmann::ordered_json j = {{key::contact_enabled.name(), m.effects.contact},
-                              {key::contact_collision_worlds_built.name(), r.collision_worlds_built}};
+  nlohmann::ordered_json j = {
+      {key::contact_enabled.name(), m.effects.contact},
+      {key::contact_collision_worlds_built.name(), r.collision_worlds_built}};
   if (!m.effects.contact) return j;
   j[key::contact_elbows.name()] = m.elbows.size();
   j[key::contact_events.name()] = to_string(m.contact.events);
@@ -144,7 +145,8 @@ nlohmann::ordered_json settings_json(const Options& o) {
   if (is_adaptive(o.integrator)) {
     j[key::settings_rtol.name()] = o.rtol;
     j[key::settings_atol.name()] = o.atol;
-    j[key::settings_max_step.name()] = o.max_step;  // 0: the default (step with contact, else duration / 10)
+    j[key::settings_max_step.name()] =
+        o.max_step;  // 0: the default (step with contact, else duration / 10)
   }
   // simulation.integrator named by the scenario, or chosen by auto (and why).
   j[key::settings_integrator_choice.name()] = o.integrator_reason.empty() ? "scenario" : "auto";
@@ -161,7 +163,7 @@ static nlohmann::ordered_json control_loop_json(const DigitalLoopSpec& loop) {
   nlohmann::ordered_json j;
   j[key::control_loop_sample_rate.name()] = 1.0 / loop.sample_period;
   j[key::control_loop_delay_samples.name()] = loop.delay;
-  j[key::control_loop_pwm_bits.name()] = loop.pwm_bits;  // 0: exact voltage
+  j[key::control_loop_pwm_bits.name()] = loop.pwm_bits;                   // 0: exact voltage
   j[key::control_loop_encoder_counts_per_rev.name()] = s.counts_per_rev;  // 0: exact angles
   j[key::control_loop_encoder_side.name()] =
       s.side == SensorSpec::EncoderSide::motor ? "motor" : "joint";

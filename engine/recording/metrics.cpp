@@ -204,8 +204,7 @@ void body_metrics(const Series& s, Metrics& m) {
   add(m, metric::body_rest_fraction, fraction);
   add(m, metric::body_force_mean, mean);
   add(m, metric::body_force_peak, peak);
-  if (s.rec.layout.has_body_friction())
-    add(m, metric::body_friction_work, work);
+  if (s.rec.layout.has_body_friction()) add(m, metric::body_friction_work, work);
 }
 
 }  // namespace

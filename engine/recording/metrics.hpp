@@ -24,30 +24,30 @@
 #include "engine/recording/recording.hpp"
 
 // X(name, unit, shape, what): unit "" for a ratio or a count.
-#define ELBOWSIM_METRICS(X)                                                                     \
-  X(samples, "", one, "recorded rows")                                                          \
-  X(hand_error_rms, "m", one, "RMS distance hand - desired hand (a task)")                      \
-  X(hand_error_max, "m", one, "largest distance (a task)")                                      \
-  X(hand_error_final, "m", one, "distance at the last sample (a task)")                         \
-  X(hand_path_length, "m", one, "length of the hand's recorded path")                           \
-  X(energy_in, "J", one, "electrical energy in (E_in at the end)")                              \
-  X(joule, "J", one, "Joule loss (E_joule at the end)")                                         \
-  X(energy_drawn, "J", one, "drawn from the supply (E_drawn at the end; motors)")               \
-  X(energy_regenerated, "J", one, "fed back by braking motors (E_regenerated; motors)")         \
-  X(power_peak, "W", one, "largest sum_j v_j i_j (motors)")                                     \
-  X(energy_in_per_joint, "J", per_joint, "integral of v_j i_j (motors)")                        \
-  X(current_peak, "A", per_joint, "largest |i_j| (motors)")                                     \
-  X(current_rms, "A", per_joint, "RMS of i_j (motors)")                                         \
-  X(elbow_force_mean, "N", one, "mean normal force of all resting elbows' samples (contact)") \
-  X(elbow_force_min, "N", one, "smallest of them (0 when none rests)")                          \
-  X(elbow_force_max, "N", one, "largest of them")                                               \
-  X(time_in_contact, "s", one, "time some elbow rests (contact)")                               \
-  X(rest_fraction, "", per_elbow, "share of the run the elbow rests (contact)")                  \
-  X(elbow_force_peak, "N", per_elbow, "largest normal force on the elbow (contact)")            \
-  X(elbow_drift_max, "m", per_elbow, "largest |d| (signed distance) while it rests (contact)")   \
-  X(body_rest_fraction, "", per_body, "share of the run the body rests on the table (contact)") \
+#define ELBOWSIM_METRICS(X)                                                                       \
+  X(samples, "", one, "recorded rows")                                                            \
+  X(hand_error_rms, "m", one, "RMS distance hand - desired hand (a task)")                        \
+  X(hand_error_max, "m", one, "largest distance (a task)")                                        \
+  X(hand_error_final, "m", one, "distance at the last sample (a task)")                           \
+  X(hand_path_length, "m", one, "length of the hand's recorded path")                             \
+  X(energy_in, "J", one, "electrical energy in (E_in at the end)")                                \
+  X(joule, "J", one, "Joule loss (E_joule at the end)")                                           \
+  X(energy_drawn, "J", one, "drawn from the supply (E_drawn at the end; motors)")                 \
+  X(energy_regenerated, "J", one, "fed back by braking motors (E_regenerated; motors)")           \
+  X(power_peak, "W", one, "largest sum_j v_j i_j (motors)")                                       \
+  X(energy_in_per_joint, "J", per_joint, "integral of v_j i_j (motors)")                          \
+  X(current_peak, "A", per_joint, "largest |i_j| (motors)")                                       \
+  X(current_rms, "A", per_joint, "RMS of i_j (motors)")                                           \
+  X(elbow_force_mean, "N", one, "mean normal force of all resting elbows' samples (contact)")     \
+  X(elbow_force_min, "N", one, "smallest of them (0 when none rests)")                            \
+  X(elbow_force_max, "N", one, "largest of them")                                                 \
+  X(time_in_contact, "s", one, "time some elbow rests (contact)")                                 \
+  X(rest_fraction, "", per_elbow, "share of the run the elbow rests (contact)")                   \
+  X(elbow_force_peak, "N", per_elbow, "largest normal force on the elbow (contact)")              \
+  X(elbow_drift_max, "m", per_elbow, "largest |d| (signed distance) while it rests (contact)")    \
+  X(body_rest_fraction, "", per_body, "share of the run the body rests on the table (contact)")   \
   X(body_force_mean, "N", per_body, "its normal force averaged over its resting time (0: never)") \
-  X(body_force_peak, "N", per_body, "its largest normal force")                                 \
+  X(body_force_peak, "N", per_body, "its largest normal force")                                   \
   X(body_friction_work, "J", per_body, "friction's loss at it (E_friction_<body> at the end)")
 
 namespace elbowsim {
