@@ -7,9 +7,10 @@
 // step round alike.
 //
 // Three shares, because they bound three different errors. Each is the value
-// the code used before this header, and each unified with another changes
-// results (measured on the shipped scenes' golden outputs; and the tests,
-// tests/engine/test_step_grid.cpp):
+// the code used before this header. kRow or kFixedEnd set to kRounding changes
+// shipped scenes' outputs (golden hashes, measured); kRounding set to kRow
+// changes none of them but moves a sample off its instant (below). The tests,
+// tests/engine/test_step_grid.cpp, fail for each of these changes:
 //   kRounding  1e-9  the rounding of one operation: an instant computed as k T
 //                    or k x interval, a step cut to end on it (h = instant - t),
 //                    a period 1 / rate. A few ulps: 1e-10 of a 1 ms step at
