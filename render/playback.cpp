@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/step_grid.hpp"
+
 namespace elbowsim {
 
 namespace {
@@ -172,7 +174,7 @@ double Playback::max_force() const {
 }
 
 int frame_count(double duration, double fps) {
-  return static_cast<int>(std::floor(std::max(duration, 0.0) * fps + 1e-9)) + 1;
+  return static_cast<int>(step_grid::whole_spacings(std::max(duration, 0.0) * fps)) + 1;
 }
 
 }  // namespace elbowsim

@@ -7,12 +7,14 @@
 #include "report/headline.hpp"
 #include "report/html.hpp"
 #include "report/plots_aside.hpp"
+#include "report/summary_keys.hpp"
 
 namespace elbowsim::report {
 
 namespace {
 
 namespace fs = std::filesystem;
+namespace key = summary_key;
 
 std::string cell(const std::string& text, const char* css = "") {
   return std::string("<td") + (*css ? std::string(" class=\"") + css + "\"" : "") + ">" +
@@ -34,18 +36,18 @@ std::string field(const RunData& run, const nlohmann::ordered_json::json_pointer
 // One column per run: where each came from and how it ran.
 std::string runs_table(const std::vector<RunData>& runs, const fs::path& out) {
   using P = nlohmann::ordered_json::json_pointer;
-  const std::pair<const char*, const char*> rows[] = {{"scenario", "/scenario"},
-                                                      {"description", "/description"},
-                                                      {"completed", "/completed"},
-                                                      {"valid", "/valid"},
-                                                      {"failure", "/failure"},
-                                                      {"active effects", "/effects"},
-                                                      {"integrator", "/settings/integrator"},
-                                                      {"dynamics", "/settings/dynamics"},
-                                                      {"step [s]", "/settings/step"},
-                                                      {"duration [s]", "/settings/duration"},
-                                                      {"steps", "/steps"},
-                                                      {"wall time [s]", "/wall_seconds"}};
+  const std::pair<const char*, SummaryKey> rows[] = {{"scenario", key::scenario},
+                                                     {"description", key::description},
+                                                     {"completed", key::completed},
+                                                     {"valid", key::valid},
+                                                     {"failure", key::failure},
+                                                     {"active effects", key::effects},
+                                                     {"integrator", key::settings_integrator},
+                                                     {"dynamics", key::settings_dynamics},
+                                                     {"step [s]", key::settings_step},
+                                                     {"duration [s]", key::settings_duration},
+                                                     {"steps", key::steps},
+                                                     {"wall time [s]", key::wall_seconds}};
   std::string t = "<table id=\"runs\">\n<tr><th>run</th>";
   for (const RunData& run : runs) {
     std::string name = html::escape(run.label);
@@ -56,9 +58,9 @@ std::string runs_table(const std::vector<RunData>& runs, const fs::path& out) {
     t += "<th>" + name + "</th>";
   }
   t += "</tr>\n";
-  for (const auto& [label, pointer] : rows) {
+  for (const auto& [label, k] : rows) {
     t += "<tr><th scope=\"row\">" + std::string(label) + "</th>";
-    for (const RunData& run : runs) t += cell(field(run, P(pointer)));
+    for (const RunData& run : runs) t += cell(field(run, P(k.pointer())));
     t += "</tr>\n";
   }
   return t + "</table>\n";
@@ -78,7 +80,7 @@ std::string relative_text(const ComparedMetric& m, std::size_t run) {
     case MetricKind::setting:
       return same ? "same" : "differs";
     case MetricKind::timing:
-      if (same) return m.path == "wall_seconds" ? "same (timing noise)" : "same";
+      if (same) return m.path == key::wall_seconds.path ? "same (timing noise)" : "same";
       return a != 0 ? "×" + significant(b / a, 3) + " (timing)" : "differs (timing)";
     default:
       break;
@@ -95,7 +97,7 @@ std::string relative_text(const ComparedMetric& m, std::size_t run) {
 
 std::string floor_text(const ComparedMetric& m) {
   if (m.kind == MetricKind::setting || m.floor.basis == "exact") return "exact";
-  if (m.path == "wall_seconds") return m.floor.basis;
+  if (m.path == key::wall_seconds.path) return m.floor.basis;
   return quantity(m.floor.value, m.unit) + ": " + m.floor.basis;
 }
 
@@ -183,8 +185,9 @@ std::string headline_table(const std::vector<RunData>& runs, const Comparison& c
       // differently (every body's metrics, the planned elbows' too, would say "differs"
       // whenever the elbows rest differently).
       const std::string text =
-          item.path == "contact.bodies"
-              ? (headline_value(runs[r], item) == headline_value(runs[0], item) ? "same" : "differs")
+          item.path == key::contact_bodies.path
+              ? (headline_value(runs[r], item) == headline_value(runs[0], item) ? "same"
+                                                                                : "differs")
               : headline_difference(c, item.path, r);
       t += cell(text, text.rfind("same", 0) == 0 ? "num same" : "num differs");
     }
@@ -192,7 +195,7 @@ std::string headline_table(const std::vector<RunData>& runs, const Comparison& c
   }
   // The step-halving check, where any run has one: how far to trust the differences above.
   bool checked = false;
-  for (const RunData& run : runs) checked = checked || run.summary.contains("step_check");
+  for (const RunData& run : runs) checked = checked || run.summary.contains(key::step_check.name());
   if (checked) {
     t += "<tr data-metric=\"step_check\"><th scope=\"row\">accuracy check</th>";
     for (const RunData& run : runs) t += cell(accuracy_check(run));
@@ -207,17 +210,20 @@ std::string notices(const std::vector<RunData>& runs) {
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const RunData& run = runs[k];
     const std::string id = std::to_string(k);
-    if (run.has_summary() && run.summary.value("completed", true) && !is_valid(run))
-      out += html::notice("failure", run.label + " is not a valid run",
-                          {run.summary.value("failure", std::string("(no reason recorded)"))},
-                          "failure-" + id);
-    if (run.has_summary() && !run.summary.value("completed", true))
-      out += html::notice("failure", run.label + " did not complete",
-                          {run.summary.value("failure", std::string("(no reason recorded)"))},
-                          "failure-" + id);
+    if (run.has_summary() && run.summary.value(key::completed.name(), true) && !is_valid(run))
+      out += html::notice(
+          "failure", run.label + " is not a valid run",
+          {run.summary.value(key::failure.name(), std::string("(no reason recorded)"))},
+          "failure-" + id);
+    if (run.has_summary() && !run.summary.value(key::completed.name(), true))
+      out += html::notice(
+          "failure", run.label + " did not complete",
+          {run.summary.value(key::failure.name(), std::string("(no reason recorded)"))},
+          "failure-" + id);
     std::vector<std::string> warnings;
-    if (run.has_summary() && run.summary.contains("warnings"))
-      for (const auto& w : run.summary["warnings"]) warnings.push_back(w.get<std::string>());
+    if (run.has_summary() && run.summary.contains(key::warnings.name()))
+      for (const auto& w : run.summary[key::warnings.name()])
+        warnings.push_back(w.get<std::string>());
     if (!warnings.empty())
       out += html::notice("warnings", run.label + ": warnings", warnings, "warnings-" + id);
     if (!run.problems.empty())
@@ -257,7 +263,7 @@ std::string page(const std::vector<RunData>& runs, const Comparison& c, const Fi
   for (const std::string& label : c.labels) names += (names.empty() ? "" : " vs ") + label;
   std::string p = html::page_begin("elbowsim comparison: " + comparison_title(runs));
   const std::string scenario =
-      runs.front().has_summary() ? runs.front().summary.value("scenario", "") : "";
+      runs.front().has_summary() ? runs.front().summary.value(key::scenario.name(), "") : "";
   p += "<header>\n<h1>Comparison: " + html::escape(names) + "</h1>\n<p class=\"meta\">" +
        (scenario.empty() ? "" : "Scenario " + html::escape(scenario) + "; ") +
        std::to_string(runs.size()) + " recorded runs; differences are to " +

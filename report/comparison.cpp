@@ -8,10 +8,13 @@
 #include "report/headline.hpp"
 #include "report/metrics.hpp"
 #include "report/provenance.hpp"
+#include "report/summary_keys.hpp"
 
 namespace elbowsim::report {
 
 namespace {
+
+namespace key = summary_key;
 
 // The union of the runs' metric paths, in first-seen order.
 std::vector<Metric> union_of(const std::vector<std::vector<Metric>>& per_run) {
@@ -100,13 +103,14 @@ std::vector<std::string> failures(const std::vector<RunData>& runs) {
       sentences.push_back(run.label + " has no summary.json: its numbers are missing.");
       continue;
     }
-    if (!run.summary.value("completed", true))
-      sentences.push_back(run.label + " did not complete (" + run.summary.value("failure", "") +
+    if (!run.summary.value(key::completed.name(), true))
+      sentences.push_back(run.label + " did not complete (" +
+                          run.summary.value(key::failure.name(), "") +
                           "): its totals cover t = 0 to " +
-                          quantity(run.summary.value("final_time", 0.0), "s") + " only.");
+                          quantity(run.summary.value(key::final_time.name(), 0.0), "s") + " only.");
     else if (!is_valid(run))
-      sentences.push_back(run.label + " is not a valid run (" + run.summary.value("failure", "") +
-                          ").");
+      sentences.push_back(run.label + " is not a valid run (" +
+                          run.summary.value(key::failure.name(), "") + ").");
   }
   return sentences;
 }
@@ -115,8 +119,8 @@ std::vector<std::string> failures(const std::vector<RunData>& runs) {
 // on the true state (summaries from before these keys existed included).
 bool controller_knows_everything(const RunData& run) {
   const auto& s = run.summary;
-  const auto believes = s.find("controller_model");
-  const auto loop = s.find("control_loop");
+  const auto believes = s.find(key::controller_model.name());
+  const auto loop = s.find(key::control_loop.name());
   const bool exact_model = believes == s.end() || (believes->is_array() && believes->empty());
   const bool continuous = loop == s.end() || (loop->is_string() && *loop == "continuous");
   return exact_model && continuous;
@@ -176,7 +180,7 @@ std::vector<std::string> unique_labels(const std::vector<std::string>& folder_na
 bool is_valid(const RunData& run) {
   // Summaries written before validity was checked say only "completed".
   return run.has_summary() &&
-         run.summary.value("valid", run.summary.value("completed", false));
+         run.summary.value(key::valid.name(), run.summary.value(key::completed.name(), false));
 }
 
 std::vector<std::string> verdict(const std::vector<RunData>& runs, const Comparison& table) {
@@ -195,7 +199,8 @@ std::vector<std::string> verdict(const std::vector<RunData>& runs, const Compari
   // positive quantity, so a percentage); else the net energy in, which the
   // motors' feeding back can make negative. Below the integration floor: none.
   const bool drawn = all_positive(table, "energy_final.drawn");
-  if (const auto low = runs_below_floor(runs, drawn ? "energy_drawn" : "energy_in"); !low.empty())
+  if (const auto low = runs_below_floor(runs, drawn ? metric::energy_drawn : metric::energy_in);
+      !low.empty())
     sentences.push_back(no_verdict_below_floor("Electrical energy", low));
   else if (drawn)
     for (auto& s : smaller_is_better(table, "energy_final.drawn", "less",
@@ -208,14 +213,13 @@ std::vector<std::string> verdict(const std::vector<RunData>& runs, const Compari
          smaller_is_better(table, "energy_final.electrical_in", "less", "net electrical energy"))
       sentences.push_back(std::move(s));
   // Accuracy: the RMS hand error of the runs' metrics.
-  const char* accuracy = nullptr;
-  for (const ComparedMetric& m : table.metrics)
-    if (m.path == "metrics.hand_error_rms") accuracy = "metrics.hand_error_rms";
-  if (!accuracy) {
+  const std::string accuracy = key::metric_path(metric::hand_error_rms);
+  if (std::none_of(table.metrics.begin(), table.metrics.end(),
+                   [&](const ComparedMetric& m) { return m.path == accuracy; })) {
     sentences.push_back("Hand accuracy is not compared: no run recorded a hand_error column.");
     return sentences;
   }
-  if (const auto low = runs_below_floor(runs, "hand_error_rms"); !low.empty()) {
+  if (const auto low = runs_below_floor(runs, metric::hand_error_rms); !low.empty()) {
     sentences.push_back(no_verdict_below_floor("Hand accuracy", low));
     return sentences;
   }
@@ -246,12 +250,14 @@ Comparison compare_runs(const std::vector<RunData>& runs) {
   for (const RunData& run : runs) {
     c.labels.push_back(run.label);
     c.folders.push_back(run.folder.generic_string());
-    c.completed.push_back(run.has_summary() && run.summary.value("completed", false));
+    c.completed.push_back(run.has_summary() && run.summary.value(key::completed.name(), false));
     c.valid.push_back(is_valid(run));
-    c.failures.push_back(run.has_summary() ? run.summary.value("failure", "") : "no summary.json");
+    c.failures.push_back(run.has_summary() ? run.summary.value(key::failure.name(), "")
+                                           : "no summary.json");
     // A run that stopped before its first step (its task could not be planned)
     // has no numbers to compare, only zeros in its summary.
-    const bool ran = c.completed.back() || (run.has_summary() && run.summary.value("steps", 0L) > 0);
+    const bool ran =
+        c.completed.back() || (run.has_summary() && run.summary.value(key::steps.name(), 0L) > 0);
     per_run.push_back(ran ? run_metrics(run) : std::vector<Metric>());
   }
   add_rows(runs, per_run, c.metrics);

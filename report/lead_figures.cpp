@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/recording/metrics.hpp"
 #include "report/energy_flow.hpp"
 #include "report/hand_path.hpp"
 #include "report/headline.hpp"
@@ -34,7 +35,8 @@ void add_hand_path(const std::vector<const RunData*>& runs, const std::string& t
   add(f.path, folder, "hand_path", f.path_caption, "hand_path", f.path.height, set);
   std::string integrator_noise;  // runs whose hand error is below the integration floor
   for (const RunData* run : runs)
-    if (below_floor(*run, "hand_error_rms")) integrator_noise += (integrator_noise.empty() ? "" : ", ") + run->label;
+    if (below_floor(*run, metric::hand_error_rms))
+      integrator_noise += (integrator_noise.empty() ? "" : ", ") + run->label;
   if (f.magnified && !integrator_noise.empty())
     set.skipped.push_back("hand_path_error: the hand error of " + integrator_noise +
                           " is below the integration floor (step check): magnified, it would "

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "report/summary_keys.hpp"
 #include "report/summary_units.hpp"
 
 namespace elbowsim::report {
@@ -52,9 +53,10 @@ nlohmann::ordered_json metrics_json(const Metrics& metrics) {
 
 std::vector<Metric> run_metrics(const RunData& run) {
   std::vector<Metric> out = summary_metrics(run.summary);
-  const bool recorded = run.has_summary() && run.summary.contains("metrics");
+  const SummaryKey& metrics = summary_key::metrics;
+  const bool recorded = run.has_summary() && run.summary.contains(metrics.name());
   if (!recorded && run.has_trajectory())
-    flatten(metrics_json(compute_metrics(run.trajectory)), "metrics", out);
+    flatten(metrics_json(compute_metrics(run.trajectory)), std::string(metrics.path), out);
   return out;
 }
 

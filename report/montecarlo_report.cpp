@@ -5,6 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "engine/recording/metrics.hpp"
 #include "engine/recording/number_text.hpp"
 #include "report/html.hpp"
 #include "report/plot/plot.hpp"
@@ -59,9 +60,9 @@ struct EnergyShown {
 };
 EnergyShown energy_shown(const Json& doc) {
   for (const auto& [variant, per_metric] : doc["draws"].items())
-    if (per_metric.contains("energy_drawn"))
-      return {"energy_drawn", "electrical energy drawn from the supply"};
-  return {"energy_in", "net electrical energy in"};
+    if (per_metric.contains(metric::energy_drawn))
+      return {metric::energy_drawn, "electrical energy drawn from the supply"};
+  return {metric::energy_in, "net electrical energy in"};
 }
 
 // Energy against hand error, one marker per draw and variant.
@@ -74,7 +75,7 @@ plot::LinePlot scatter(const Json& doc) {
   int k = 0;
   for (const auto& [variant, per_metric] : doc["draws"].items()) {
     const std::vector<double> e = numbers(per_metric.value(energy.metric, Json::array()));
-    const std::vector<double> h = numbers(per_metric.value("hand_error_rms", Json::array()));
+    const std::vector<double> h = numbers(per_metric.value(metric::hand_error_rms, Json::array()));
     plot::Series s;
     s.label = variant;
     s.color = plot::palette(k++);
@@ -200,7 +201,7 @@ void write_montecarlo_report(const std::filesystem::path& folder) {
     plot::write_png(p, folder / "plots" / file);
     figures.push_back({"plots/" + file, p.title, caption, p.width, p.height});
   };
-  add(ecdf(doc, "hand_error_rms", "RMS hand error over the draws",
+  add(ecdf(doc, metric::hand_error_rms, "RMS hand error over the draws",
            plot::log_axis("RMS hand error", "m")),
       "ecdf_hand_error.png",
       "Empirical distribution of each variant's RMS hand error (valid draws).");

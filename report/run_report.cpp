@@ -8,12 +8,14 @@
 #include "report/html.hpp"
 #include "report/metrics.hpp"
 #include "report/plots_aside.hpp"
+#include "report/summary_keys.hpp"
 
 namespace elbowsim::report {
 
 namespace {
 
 namespace fs = std::filesystem;
+namespace key = summary_key;
 using Rows = std::vector<std::pair<std::string, std::string>>;
 
 constexpr std::size_t kMaxEventRows = 200;
@@ -35,68 +37,81 @@ std::string dynamics_name(const std::string& method) {
 }
 
 std::string status(const nlohmann::ordered_json& s) {
-  const std::string steps = std::to_string(s.value("steps", 0L)) +
-                            " steps to t = " + significant(s.value("final_time", 0.0)) + " s";
-  if (!s.value("completed", false)) return "STOPPED EARLY after " + steps;
-  return s.value("valid", true) ? "completed: " + steps : "completed, NOT VALID: " + steps;
+  const std::string steps = std::to_string(s.value(key::steps.name(), 0L)) +
+                            " steps to t = " + significant(s.value(key::final_time.name(), 0.0)) +
+                            " s";
+  if (!s.value(key::completed.name(), false)) return "STOPPED EARLY after " + steps;
+  return s.value(key::valid.name(), true) ? "completed: " + steps
+                                          : "completed, NOT VALID: " + steps;
 }
 
 Rows run_rows(const RunData& run) {
   const nlohmann::ordered_json& s = run.summary;
   Rows rows{{"run folder", run.label}};
   if (!run.has_summary()) return rows;
-  const auto& settings = s.value("settings", nlohmann::ordered_json::object());
-  const auto& model = s.value("model", nlohmann::ordered_json::object());
-  const double wall = s.value("wall_seconds", 0.0);
+  const auto& settings = s.value(key::settings.name(), nlohmann::ordered_json::object());
+  const auto& model = s.value(key::model.name(), nlohmann::ordered_json::object());
+  const double wall = s.value(key::wall_seconds.name(), 0.0);
   rows.push_back({"status", status(s)});
-  rows.push_back({"scenario file", s.value("file", "")});
-  rows.push_back({"active effects", joined(s.value("effects", nlohmann::ordered_json::array()))});
-  rows.push_back({"model", std::to_string(model.value("dof", 0)) + " joints, total mass " +
-                               significant(model.value("total_mass", 0.0)) + " kg, hand on link " +
-                               std::to_string(model.value("hand_link", 0))});
+  rows.push_back({"scenario file", s.value(key::file.name(), "")});
+  rows.push_back(
+      {"active effects", joined(s.value(key::effects.name(), nlohmann::ordered_json::array()))});
+  rows.push_back({"model", std::to_string(model.value(key::model_dof.name(), 0)) +
+                               " joints, total mass " +
+                               significant(model.value(key::model_total_mass.name(), 0.0)) + " kg" +
+                               ", hand on link " +
+                               std::to_string(model.value(key::model_hand_link.name(), 0))});
   for (const auto& row : run.model_rows) rows.push_back(row);
-  std::string integrator = settings.value("integrator", "");
-  if (settings.contains("rtol"))  // adaptive: its tolerances; step is the recording interval
-    integrator += ", rtol " + significant(settings.value("rtol", 0.0)) + ", atol " +
-                  significant(settings.value("atol", 0.0)) + ", rows every " +
-                  significant(settings.value("step", 0.0)) + " s";
+  std::string integrator = settings.value(key::settings_integrator.name(), "");
+  if (settings.contains(
+          key::settings_rtol.name()))  // adaptive: its tolerances; step is the recording interval
+    integrator += ", rtol " + significant(settings.value(key::settings_rtol.name(), 0.0)) +
+                  ", atol " + significant(settings.value(key::settings_atol.name(), 0.0)) +
+                  ", rows every " + significant(settings.value(key::settings_step.name(), 0.0)) +
+                  " s";
   else
-    integrator += ", step " + significant(settings.value("step", 0.0)) + " s";
-  rows.push_back({"integrator", integrator + ", duration " +
-                                    significant(settings.value("duration", 0.0)) + " s"});
-  rows.push_back({"dynamics", dynamics_name(settings.value("dynamics", ""))});
-  if (s.contains("controller") && s["controller"].is_string()) {
+    integrator += ", step " + significant(settings.value(key::settings_step.name(), 0.0)) + " s";
+  rows.push_back(
+      {"integrator", integrator + ", duration " +
+                         significant(settings.value(key::settings_duration.name(), 0.0)) + " s"});
+  rows.push_back({"dynamics", dynamics_name(settings.value(key::settings_dynamics.name(), ""))});
+  if (s.contains(key::controller.name()) && s[key::controller.name()].is_string()) {
     std::string believes = "knows the plant exactly";
-    if (s.contains("controller_model") && s["controller_model"].is_array() &&
-        !s["controller_model"].empty()) {
+    if (s.contains(key::controller_model.name()) && s[key::controller_model.name()].is_array() &&
+        !s[key::controller_model.name()].empty()) {
       believes = "believes";
-      for (const auto& o : s["controller_model"]) believes += " " + o.get<std::string>();
+      for (const auto& o : s[key::controller_model.name()]) believes += " " + o.get<std::string>();
       believes += " (the plant does not)";
     }
-    rows.push_back({"controller", s["controller"].get<std::string>() + "; " + believes});
+    rows.push_back({"controller", s[key::controller.name()].get<std::string>() + "; " + believes});
   }
-  if (s.contains("control_loop") && s["control_loop"].is_object()) {
-    const auto& loop = s["control_loop"];
-    std::string text = significant(loop.value("sample_rate", 0.0)) + " Hz sampling, delay " +
-                       std::to_string(loop.value("delay_samples", 0)) + " samples";
-    if (const long counts = loop.value("encoder_counts_per_rev", 0L); counts > 0)
+  if (s.contains(key::control_loop.name()) && s[key::control_loop.name()].is_object()) {
+    const auto& loop = s[key::control_loop.name()];
+    std::string text = significant(loop.value(key::control_loop_sample_rate.name(), 0.0)) + " Hz" +
+                       " sampling, delay " +
+                       std::to_string(loop.value(key::control_loop_delay_samples.name(), 0)) +
+                       " samples";
+    if (const long counts = loop.value(key::control_loop_encoder_counts_per_rev.name(), 0L);
+        counts > 0)
       text += ", encoder " + std::to_string(counts) + " counts/rev (" +
-              loop.value("encoder_side", "") + " side)";
-    if (const double noise = loop.value("angle_noise", 0.0); noise > 0)
+              loop.value(key::control_loop_encoder_side.name(), "") + " side)";
+    if (const double noise = loop.value(key::control_loop_angle_noise.name(), 0.0); noise > 0)
       text += ", angle noise σ " + significant(noise) + " rad";
-    if (const int bits = loop.value("pwm_bits", 0); bits > 0)
+    if (const int bits = loop.value(key::control_loop_pwm_bits.name(), 0); bits > 0)
       text += ", " + std::to_string(bits) + "-bit amplifier";
     rows.push_back({"control loop", text});
-  } else if (s.contains("control_loop")) {
+  } else if (s.contains(key::control_loop.name())) {
     rows.push_back({"control loop", "continuous (the control law on the true state)"});
   }
-  const auto& contact = s.value("contact", nlohmann::ordered_json::object());
-  if (contact.value("enabled", false))
-    rows.push_back({"contact", "events: " + contact.value("events", "") +
-                                   ", stabilization: " + contact.value("stabilization", "") + ", " +
-                                   std::to_string(contact.value("landings", 0)) + " landings, " +
-                                   std::to_string(contact.value("releases", 0)) + " releases"});
-  const long steps_per_second = wall > 0 ? std::lround(s.value("steps", 0L) / wall) : 0;
+  const auto& contact = s.value(key::contact.name(), nlohmann::ordered_json::object());
+  if (contact.value(key::contact_enabled.name(), false))
+    rows.push_back(
+        {"contact",
+         "events: " + contact.value(key::contact_events.name(), "") +
+             ", stabilization: " + contact.value(key::contact_stabilization.name(), "") + ", " +
+             std::to_string(contact.value(key::contact_landings.name(), 0)) + " landings, " +
+             std::to_string(contact.value(key::contact_releases.name(), 0)) + " releases"});
+  const long steps_per_second = wall > 0 ? std::lround(s.value(key::steps.name(), 0L) / wall) : 0;
   rows.push_back(
       {"wall time", significant(wall) + " s" +
                         (wall > 0 ? " (" + std::to_string(steps_per_second) + " steps/s)" : "")});
@@ -106,9 +121,9 @@ Rows run_rows(const RunData& run) {
 
 std::string header(const RunData& run) {
   std::string out = "<header>\n<h1>" + html::escape(run_title(run)) + "</h1>\n";
-  if (run.has_summary() && !run.summary.value("description", "").empty())
+  if (run.has_summary() && !run.summary.value(key::description.name(), "").empty())
     out += "<p class=\"description\">" +
-           html::escape(run.summary["description"].get<std::string>()) + "</p>\n";
+           html::escape(run.summary[key::description.name()].get<std::string>()) + "</p>\n";
   return out +
          "<p class=\"meta\">elbowsim run report, rebuilt from the files in run folder <code>" +
          html::escape(run.label) + "</code> (<code>elbowsim report " + html::escape(run.label) +
@@ -119,23 +134,25 @@ std::string header(const RunData& run) {
 std::string notices(const RunData& run) {
   std::string out;
   const nlohmann::ordered_json& s = run.summary;
-  if (run.has_summary() && s.value("completed", true) && !s.value("valid", true))
-    out += html::notice("failure", "This run is not valid: do not use its numbers.",
-                        {"Failure: " + s.value("failure", std::string("(no reason recorded)")),
-                         "It ran to t = " + significant(s.value("final_time", 0.0)) + " s" +
-                             "; the plots show what it computed, for diagnosis."},
-                        "failure");
-  if (run.has_summary() && !s.value("completed", true))
+  if (run.has_summary() && s.value(key::completed.name(), true) &&
+      !s.value(key::valid.name(), true))
+    out += html::notice(
+        "failure", "This run is not valid: do not use its numbers.",
+        {"Failure: " + s.value(key::failure.name(), std::string("(no reason recorded)")),
+         "It ran to t = " + significant(s.value(key::final_time.name(), 0.0)) + " s" +
+             "; the plots show what it computed, for diagnosis."},
+        "failure");
+  if (run.has_summary() && !s.value(key::completed.name(), true))
     out += html::notice(
         "failure", "This run did not complete.",
-        {"Failure: " + s.value("failure", std::string("(no reason recorded)")),
-         "What it recorded is kept: t = 0 to " + significant(s.value("final_time", 0.0)) + " s, " +
-             std::to_string(run.trajectory.rows()) +
+        {"Failure: " + s.value(key::failure.name(), std::string("(no reason recorded)")),
+         "What it recorded is kept: t = 0 to " + significant(s.value(key::final_time.name(), 0.0)) +
+             " s" + ", " + std::to_string(run.trajectory.rows()) +
              " samples; the plots and totals cover that span only."},
         "failure");
   std::vector<std::string> warnings;
-  if (run.has_summary() && s.contains("warnings"))
-    for (const auto& w : s["warnings"]) warnings.push_back(w.get<std::string>());
+  if (run.has_summary() && s.contains(key::warnings.name()))
+    for (const auto& w : s[key::warnings.name()]) warnings.push_back(w.get<std::string>());
   if (!warnings.empty())
     out += html::notice(
         "warnings", std::to_string(warnings.size()) + " warning(s): read them before the numbers",

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "engine/recording/metrics.hpp"
 #include "engine/recording/number_text.hpp"
 #include "report/html.hpp"
 #include "report/plot/plot.hpp"
@@ -22,12 +23,12 @@ using Json = nlohmann::ordered_json;
 struct Compared {
   const char* metric;
   const char* label;
-  const char* unit;
   bool ratio;
+  std::string unit() const { return elbowsim::metric_unit(metric); }  // the vocabulary's
 };
-constexpr Compared kCompared[] = {{"energy_drawn", "energy drawn", "J", true},
-                                  {"energy_in", "net energy", "J", false},
-                                  {"hand_error_rms", "RMS hand error", "m", true}};
+constexpr Compared kCompared[] = {{metric::energy_drawn, "energy drawn", true},
+                                  {metric::energy_in, "net energy", false},
+                                  {metric::hand_error_rms, "RMS hand error", true}};
 
 std::string fmt(const Json& x, const std::string& unit) {
   return x.is_number() ? quantity(x.get<double>(), unit) : "—";
@@ -118,17 +119,17 @@ std::string case_table(const Json& doc) {
         const Json x = c.value("metrics", Json::object())
                            .value(v.get<std::string>(), Json::object())
                            .value(m.metric, Json::object());
-        out +=
-            "<td class=\"num\">" +
-            html::escape(with_interval(x.value("mean", Json()), x.value("ci95", Json()), m.unit)) +
-            "</td>";
+        out += "<td class=\"num\">" +
+               html::escape(
+                   with_interval(x.value("mean", Json()), x.value("ci95", Json()), m.unit())) +
+               "</td>";
       }
       const Json r = pair.value(m.metric, Json::object());
       const std::string outcome = r.value("outcome", "no verdict");
       const std::string reason = r.value("reason", "");
       const Json value = r.value(m.ratio ? "ratio" : "difference", Json());
       out += "<td class=\"num\">" +
-             html::escape(with_interval(value, r.value("ci95", Json()), m.ratio ? "" : m.unit)) +
+             html::escape(with_interval(value, r.value("ci95", Json()), m.ratio ? "" : m.unit())) +
              "</td><td class=\"outcome\" data-outcome=\"" + html::escape(outcome) + "\">" +
              html::escape(outcome + (reason.empty() ? "" : ": " + reason)) + "</td>";
     }

@@ -1,7 +1,8 @@
-// The unit of every number summary.json holds: one table of key patterns
-// (summary_units.cpp), the only place a summary key's unit is written down.
-// summary.json carries the units of its own numbers (its "units" object, made by
-// units_json); the reports label their values from the same table.
+// The unit of every number summary.json holds, from its schema
+// (report/summary_keys.hpp: each key once, with its unit; the metrics' units
+// from engine/recording/metrics.hpp). summary.json carries the units of its own
+// numbers (its "units" object, made by units_json); the reports label their
+// values from the same rows.
 //
 // Units are SI symbols ("m", "J", "N", "s", "A", "W", "kg", "Hz", "rad", "m/s");
 // "1" is a pure number: a count, an index, a ratio or a share; "state" is the
@@ -15,13 +16,13 @@
 namespace elbowsim::report {
 
 // The unit of the number at `path` ("metrics.hand_error_rms", "contact.bodies.elbow.force_mean",
-// "metrics.current_peak.0": a list's element by its index); "" when no pattern of the
-// table covers it.
+// "metrics.current_peak.0": a list's element by its index); "" when no key of the
+// schema covers it or it is not a number.
 std::string summary_unit(std::string_view path);
 
 // {path: unit} for every number in `summary`, in the order they appear; a list of
 // numbers is one entry, under the list's path. Throws std::logic_error naming the
-// first number the table gives no unit (a key added without its unit).
+// first number the schema gives no unit (a key added without its unit).
 nlohmann::ordered_json units_json(const nlohmann::ordered_json& summary);
 
 // `summary` with its "units" object placed second, after "provenance" (or first

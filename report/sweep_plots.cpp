@@ -4,13 +4,14 @@
 #include <map>
 
 #include "report/plot/plot.hpp"
+#include "report/summary_keys.hpp"
 
 namespace elbowsim::report {
 
 namespace {
 
-double metric(const nlohmann::ordered_json& summary, const char* name) {
-  const auto m = summary.find("metrics");
+double metric_value(const nlohmann::ordered_json& summary, const char* name) {
+  const auto m = summary.find(summary_key::metrics.name());
   if (m == summary.end() || !m->contains(name) || !(*m)[name].is_number()) return NAN;
   return (*m)[name].get<double>();
 }
@@ -25,7 +26,7 @@ std::vector<plot::Series> series_of(const std::vector<SweepPoint>& points, const
     plot::Series& s = by_variant[p.variant];
     s.label = (p.variant.empty() ? std::string("run") : p.variant) + suffix;
     s.x.push_back(p.value);
-    s.y.push_back(metric(p.summary, name));
+    s.y.push_back(metric_value(p.summary, name));
     s.markers = true;
     s.dash = dash;
   }
@@ -54,8 +55,8 @@ std::vector<std::filesystem::path> write_sweep_plots(const std::string& key,
   error.title = "Hand error against " + key;
   error.x = plot::linear_axis(key, "");
   error.y = plot::log_axis("hand error", "m");
-  error.series = series_of(points, "hand_error_rms", " RMS", plot::Dash::solid);
-  for (plot::Series& s : series_of(points, "hand_error_max", " max", plot::Dash::dashed))
+  error.series = series_of(points, metric::hand_error_rms, " RMS", plot::Dash::solid);
+  for (plot::Series& s : series_of(points, metric::hand_error_max, " max", plot::Dash::dashed))
     error.series.push_back(std::move(s));
   if (any_finite(error.series)) {
     written.push_back(folder / "sweep_hand_error.png");
@@ -65,8 +66,8 @@ std::vector<std::filesystem::path> write_sweep_plots(const std::string& key,
   energy.title = "Energy against " + key;
   energy.x = plot::linear_axis(key, "");
   energy.y = plot::log_axis("energy", "J");
-  energy.series = series_of(points, "energy_in", " E_in", plot::Dash::solid);
-  for (plot::Series& s : series_of(points, "joule", " Joule", plot::Dash::dashed))
+  energy.series = series_of(points, metric::energy_in, " E_in", plot::Dash::solid);
+  for (plot::Series& s : series_of(points, metric::joule, " Joule", plot::Dash::dashed))
     energy.series.push_back(std::move(s));
   written.push_back(folder / "sweep_energy.png");
   plot::write_png(energy, written.back());

@@ -14,6 +14,7 @@
 #include "report/comparison.hpp"
 #include "report/metrics.hpp"
 #include "report/plots_aside.hpp"
+#include "report/summary_keys.hpp"
 #include "report/summary_units.hpp"
 #include "report_test_helpers.hpp"
 #include "support/approx.hpp"
@@ -396,6 +397,99 @@ TEST_CASE(
     aside.keep();
   }
   CHECK(listing() == std::set<std::string>{"plots", "plots/new.png", "report.html"});
+}
+
+TEST_CASE("summary_keys: each key once, with a unit of the fixed set; name and pointer") {
+  namespace key = elbowsim::summary_key;
+  const std::set<std::string> units{"",   "1", "state", "metric", "s", "m",  "m/s",
+                                    "kg", "J", "N",     "A",      "W", "Hz", "rad"};
+  std::set<std::string> paths;
+  for (const elbowsim::SummaryKey& k : key::kAll) {
+    CAPTURE(k.path);
+    CHECK(paths.insert(std::string(k.path)).second);  // no path twice
+    CHECK(units.count(std::string(k.unit)) == 1);
+  }
+  CHECK(key::contact_max_abs_C.name() == "max_abs_C");
+  CHECK(key::final_time.name() == "final_time");
+  CHECK(key::contact_max_abs_C.pointer() == "/contact/max_abs_C");
+  CHECK(key::metric_path(elbowsim::metric::joule) == "metrics.joule");
+  CHECK(key::metric_of("metrics.current_rms.2") == "current_rms");
+  CHECK(key::metric_of("metrics").empty());
+  CHECK(key::metric_of("metricsx.joule").empty());
+  CHECK(key::checked_metric_path("joule") == "step_check.metrics.joule");
+}
+
+TEST_CASE("summary_keys: the units of the pattern table the schema replaced, path by path") {
+  // Independent of the schema: the table report/summary_units.cpp held before
+  // it (one path per pattern, "*" filled in), and the metrics' paths.
+  const std::pair<const char*, const char*> before[] = {
+      {"model.dof", "1"},
+      {"model.total_mass", "kg"},
+      {"model.hand_link", "1"},
+      {"settings.step", "s"},
+      {"settings.duration", "s"},
+      {"settings.rtol", "1"},
+      {"settings.atol", "state"},
+      {"settings.max_step", "s"},
+      {"steps", "1"},
+      {"integrator_work.evaluations", "1"},
+      {"integrator_work.rejected_steps", "1"},
+      {"integrator_work.jacobians", "1"},
+      {"integrator_work.factorisations", "1"},
+      {"final_time", "s"},
+      {"wall_seconds", "s"},
+      {"energy_initial.potential", "J"},
+      {"energy_final.joule", "J"},
+      {"balance_residual", "J"},
+      {"max_abs_balance_residual", "J"},
+      {"balance_residual_relative", "1"},
+      {"control_loop.sample_rate", "Hz"},
+      {"control_loop.delay_samples", "1"},
+      {"control_loop.pwm_bits", "1"},
+      {"control_loop.encoder_counts_per_rev", "1"},
+      {"control_loop.angle_noise", "rad"},
+      {"control_loop.velocity_cutoff", "Hz"},
+      {"control_loop.noise_seed", "1"},
+      {"contact.collision_worlds_built", "1"},
+      {"contact.elbows", "1"},
+      {"contact.landings", "1"},
+      {"contact.releases", "1"},
+      {"contact.sticks", "1"},
+      {"contact.slips", "1"},
+      {"contact.max_abs_C", "m"},
+      {"contact.max_abs_Jc_qd", "m/s"},
+      {"contact.dependent_steps", "1"},
+      {"contact.bodies.left.link", "1"},
+      {"contact.bodies.left.rest_fraction", "1"},
+      {"contact.bodies.left.force_mean", "N"},
+      {"contact.bodies.link2.force_peak", "N"},
+      {"contact.bodies.left.friction_work", "J"},
+      {"contact.bodies.left.landings", "1"},
+      {"contact.bodies.left.releases", "1"},
+      {"contact.bodies.left.sticks", "1"},
+      {"contact.bodies.left.slips", "1"},
+      {"saturation_share.0", "1"},
+      {"saturation_share.3", "1"},
+      {"step_check.step", "s"},
+      {"step_check.half_step", "s"},
+      {"step_check.metrics.joule.relative_change", "1"},
+      {"step_check.metrics.hand_error_rms.value", "m"},
+      {"step_check.metrics.current_rms.at_half_step", "A"},
+      {"step_check.metrics.power_peak.floor", "W"},
+      {"metrics.time_in_contact", "s"},
+      {"metrics.energy_in_per_joint.1", "J"},
+      {"metrics.elbow_drift_max.left", "m"},
+      {"metrics.samples", "1"}};
+  for (const auto& [path, unit] : before) {
+    CAPTURE(path);
+    CHECK(r::summary_unit(path) == unit);
+  }
+  // Not numbers, or not keys: no unit.
+  for (const char* path : {"scenario", "settings.integrator", "contact.bodies.left.kind",
+                           "step_check.metrics.joule.unit", "step_check.metrics.joule.below_floor",
+                           "control_loop", "contact", "metrics.no_such_metric", "steps.0",
+                           "step_check.metrics.joule.colour", "contact.max_abs_C.0.1"})
+    CHECK_MESSAGE(r::summary_unit(path).empty(), path);
 }
 
 TEST_CASE("summary_units: every number's unit from one table; a key without one is an error") {

@@ -13,6 +13,7 @@
 #include "engine/recording/number_text.hpp"
 #include "report/merged_study.hpp"
 #include "report/noise_floor.hpp"
+#include "report/summary_keys.hpp"
 
 namespace elbowsim {
 
@@ -56,7 +57,7 @@ void add_case(report::MergedStudy& s, const Json& c, const std::vector<fs::path>
     if (record && fs::exists(run / "summary.json")) {
       row.run = run;
       const Json summary = read_json(run / "summary.json");
-      row.valid = summary.value("valid", false);
+      row.valid = summary.value(summary_key::valid.name(), false);
       for (report::Metric& m : report::summary_metrics(summary))
         if (report::metric_kind(m.path) != report::MetricKind::timing) row.metrics.push_back(std::move(m));
     }

@@ -42,20 +42,20 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// The metrics a study summarises, with their units and scales: the net
-// energy in can be negative (the motors feed back more than they draw), the
-// others never are (their BCa interval, within the bootstrap means' range,
-// never is either; its acceleration is taken on a log scale).
+// The metrics a study summarises, with their scales (their units are the
+// vocabulary's): the net energy in can be negative (the motors feed back more
+// than they draw), the others never are (their BCa interval, within the
+// bootstrap means' range, never is either; its acceleration is taken on a log
+// scale).
 struct StudiedMetric {
   const char* name;
-  const char* unit;
   report::Scale scale;
 };
 const StudiedMetric kMetrics[] = {
-    {"energy_in", "J", report::Scale::linear},       {"energy_drawn", "J", report::Scale::log},
-    {"energy_regenerated", "J", report::Scale::log}, {"joule", "J", report::Scale::log},
-    {"hand_error_rms", "m", report::Scale::log},     {"hand_error_max", "m", report::Scale::log},
-    {"hand_error_final", "m", report::Scale::log}};
+    {metric::energy_in, report::Scale::linear},       {metric::energy_drawn, report::Scale::log},
+    {metric::energy_regenerated, report::Scale::log}, {metric::joule, report::Scale::log},
+    {metric::hand_error_rms, report::Scale::log},     {metric::hand_error_max, report::Scale::log},
+    {metric::hand_error_final, report::Scale::log}};
 
 struct Sample {
   bool valid = false;
@@ -190,7 +190,7 @@ CaseRuns run_case_runs(const MonteCarloArguments& args, const CasePlan& plan,
 // step and at half of it.
 Json accuracy_floors(const std::vector<Variant>& variants, const CaseRuns& runs) {
   const auto rms = [](const Sample& s) {
-    const auto it = s.metrics.find("hand_error_rms");
+    const auto it = s.metrics.find(metric::hand_error_rms);
     return s.valid && it != s.metrics.end() ? it->second : std::nan("");
   };
   Json floors;
@@ -241,7 +241,8 @@ void write_samples_csv(const std::filesystem::path& path, const std::vector<Vari
     out << "draw,variant,valid,sensor_seed";
     for (const UncertainParameter& p : variants.front().nominal.uncertainty.parameters)
       out << "," << p.key;
-    for (const StudiedMetric& k : kMetrics) out << "," << k.name << " [" << k.unit << "]";
+    for (const StudiedMetric& k : kMetrics)
+      out << "," << k.name << " [" << metric_unit(k.name) << "]";
     out << ",unplanned_contact_share,unplanned_contact_body,failure\n";
     for (std::size_t d = 0; d < draws.size(); ++d)
       for (std::size_t v = 0; v < variants.size(); ++v) {
@@ -306,7 +307,7 @@ Json metric_json(const StudiedMetric& k, const std::vector<double>& x,
                  const std::vector<long>& from, std::uint64_t seed) {
   const report::Estimate e =
       report::estimate_mean(x, k.scale, study::kConfidenceLevel, study::kBootstrapResamples, seed);
-  Json m{{"unit", k.unit},
+  Json m{{"unit", metric_unit(k.name)},
          {"scale", k.scale == report::Scale::log ? "log" : "linear"},
          {"valid", e.n},
          {"mean", e.mean},

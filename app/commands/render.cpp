@@ -18,6 +18,7 @@
 #include "engine/recording/number_text.hpp"
 #include "render/playback.hpp"
 #include "render/render_job.hpp"
+#include "report/summary_keys.hpp"
 
 namespace elbowsim {
 
@@ -103,8 +104,9 @@ std::string load_run(const fs::path& folder, Scenario& scenario, Recording& reco
     const report::RunData run = load_run_folder(folder);  // refuses cut or mismatched files
     scenario = load_scenario(yaml.string());
     // scenario.yaml is the variant as run, without its name: summary.json keeps it.
-    if (run.summary.is_object() && run.summary.contains("variant"))
-      scenario.variant = run.summary["variant"].get<std::string>();
+    const std::string_view variant = summary_key::variant.name();
+    if (run.summary.is_object() && run.summary.contains(variant))
+      scenario.variant = run.summary[variant].get<std::string>();
     std::ifstream in(csv, std::ios::binary);
     recording = read_trajectory_csv(in, csv.string());
   } catch (const std::exception& e) {

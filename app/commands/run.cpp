@@ -24,8 +24,11 @@
 #include "engine/run/recorder.hpp"
 #include "engine/run/simulator.hpp"
 #include "report/compare_report.hpp"
+#include "report/summary_keys.hpp"
 
 namespace elbowsim {
+
+namespace key = summary_key;
 
 namespace {
 
@@ -73,9 +76,10 @@ struct RunOutcome {
 void set_interrupted(nlohmann::ordered_json& summary, const std::string& stage) {
   nlohmann::ordered_json marked;
   for (const auto& [key, value] : summary.items()) {
-    if (key == "interrupted_stage") continue;
-    marked[key] = key == "interrupted" ? nlohmann::ordered_json(true) : value;
-    if (key == "interrupted") marked["interrupted_stage"] = stage;
+    if (key == summary_key::interrupted_stage.name()) continue;
+    const bool interrupted = key == summary_key::interrupted.name();
+    marked[key] = interrupted ? nlohmann::ordered_json(true) : value;
+    if (interrupted) marked[summary_key::interrupted_stage.name()] = stage;
   }
   summary = std::move(marked);
 }
@@ -102,34 +106,41 @@ void add_step_check(const Scenario& scenario, const RunResult& result,
   try {
     nlohmann::ordered_json check = check_step(scenario, result);
     if (interrupt_exit_code()) return set_interrupted(summary, "step_check");
-    summary["step_check"] = std::move(check);
+    summary[key::step_check.name()] = std::move(check);
   } catch (const std::exception& e) {
-    summary["step_check"] = {{"error", e.what()}};
+    summary[key::step_check.name()] = {{key::step_check_error.name(), e.what()}};
     std::cerr << "warning: step check: " << e.what() << '\n';
     return;
   }
-  const auto& c = summary["step_check"];
+  const auto& c = summary[key::step_check.name()];
+  const auto& metrics = c[key::step_check_metrics.name()];
   const std::string label = scenario.variant.empty() ? scenario.model.name : scenario.variant;
-  std::cout << label << ": accuracy at " << c["refinement"].get<std::string>();
-  if (!c["valid_at_half_step"].get<bool>()) {
-    std::cout << ": the refined run is NOT VALID (" << c.value("failure_at_half_step", "")
+  std::cout << label << ": accuracy at " << c[key::step_check_refinement.name()].get<std::string>();
+  if (!c[key::step_check_valid_at_half_step.name()].get<bool>()) {
+    std::cout << ": the refined run is NOT VALID ("
+              << c.value(key::step_check_failure_at_half_step.name(), "")
               << "); the numbers' accuracy is unknown\n";
     return;
   }
   std::string largest;
   double change = 0;
-  for (const char* name : {"hand_error_rms", "hand_error_max", "energy_in", "joule"})
-    if (c["metrics"].contains(name) && c["metrics"][name]["relative_change"].get<double>() >= change)
-      change = c["metrics"][name]["relative_change"].get<double>(), largest = name;
+  const auto relative_change = [&](const char* name) {
+    return metrics[name][key::checked_relative_change.name()].get<double>();
+  };
+  for (const char* name :
+       {metric::hand_error_rms, metric::hand_error_max, metric::energy_in, metric::joule})
+    if (metrics.contains(name) && relative_change(name) >= change)
+      change = relative_change(name), largest = name;
   if (!largest.empty()) std::printf(": %s moves by %.2g %%", largest.c_str(), 100 * change);
   std::cout << '\n';
-  for (const auto& name : c["below_floor"]) {
-    const auto& m = c["metrics"][name.get<std::string>()];
-    std::printf("  %s %.3g %s is below the integration floor (it moves by %.3g %s when refined): "
-                "it measures the integrator, not the arm\n",
-                name.get<std::string>().c_str(), m["value"].get<double>(),
-                m["unit"].get<std::string>().c_str(), m["floor"].get<double>(),
-                m["unit"].get<std::string>().c_str());
+  for (const auto& name : c[key::step_check_below_floor.name()]) {
+    const auto& m = metrics[name.get<std::string>()];
+    const std::string unit = m[key::checked_unit.name()].get<std::string>();
+    std::printf(
+        "  %s %.3g %s is below the integration floor (it moves by %.3g %s when refined): "
+        "it measures the integrator, not the arm\n",
+        name.get<std::string>().c_str(), m[key::checked_value.name()].get<double>(), unit.c_str(),
+        m[key::checked_floor.name()].get<double>(), unit.c_str());
   }
   std::fflush(stdout);
 }
@@ -203,8 +214,8 @@ int record_render(const Scenario& scenario, const std::filesystem::path& folder,
 // comparison comes after the run's own stages.
 std::string pending_stage(const Scenario& scenario, const RunOutcome& outcome,
                           const RunArguments& args, bool compared) {
-  if (outcome.summary.contains("interrupted_stage"))  // simulation, step_check
-    return outcome.summary["interrupted_stage"].get<std::string>();
+  if (outcome.summary.contains(key::interrupted_stage.name()))  // simulation, step_check
+    return outcome.summary[key::interrupted_stage.name()].get<std::string>();
   if (wants_render(scenario, outcome, args) && !outcome.rendered) return "rendering";
   if (outcome.recorded() && args.report && !outcome.reported) return "report";
   return compared ? "comparison" : "";
@@ -247,7 +258,7 @@ int stop_runs(const std::vector<const Scenario*>& scenarios,
     if (stage.empty()) continue;  // every stage of this run was done
     stopped = true;
     outcome.code = interrupt_exit_code();
-    if (!outcome.summary.contains("interrupted_stage")) {
+    if (!outcome.summary.contains(key::interrupted_stage.name())) {
       set_interrupted(outcome.summary, stage);
       try {
         if (scenarios[k]->output.summary)

@@ -6,8 +6,11 @@
 #include "app/study/draws.hpp"
 #include "engine/recording/number_text.hpp"
 #include "engine/run/simulator.hpp"
+#include "report/summary_keys.hpp"
 
 namespace elbowsim {
+
+namespace key = summary_key;
 
 Scenario at_half_step(const Scenario& scenario) {
   const Options& o = scenario.model.options;
@@ -38,11 +41,11 @@ nlohmann::ordered_json check_step(const Scenario& scenario, const RunResult& res
   const RunResult half = simulate(halved.model, halved.experiment,
                                   RunOptions{halved.output.every, {}, &interrupt_flag()});
   nlohmann::ordered_json j;
-  j["refinement"] = refinement_text(scenario);
-  j["step"] = h;
-  if (!is_adaptive(scenario.model.options.integrator)) j["half_step"] = h / 2;
-  j["valid_at_half_step"] = half.valid;
-  if (!half.valid) j["failure_at_half_step"] = half.failure;
+  j[key::step_check_refinement.name()] = refinement_text(scenario);
+  j[key::step_check_step.name()] = h;
+  if (!is_adaptive(scenario.model.options.integrator)) j[key::step_check_half_step.name()] = h / 2;
+  j[key::step_check_valid_at_half_step.name()] = half.valid;
+  if (!half.valid) j[key::step_check_failure_at_half_step.name()] = half.failure;
   nlohmann::ordered_json metrics = nlohmann::ordered_json::object();
   nlohmann::ordered_json below = nlohmann::ordered_json::array();
   for (const Metric& m : result.metrics.list) {
@@ -53,16 +56,16 @@ nlohmann::ordered_json check_step(const Scenario& scenario, const RunResult& res
     const double scale = std::max(std::abs(a), std::abs(b));
     const double floor = std::abs(a - b);
     const bool below_floor = half.valid && std::abs(a) < kFloorFactor * floor;
-    metrics[m.name] = {{"unit", m.unit},
-                       {"value", a},
-                       {"at_half_step", b},
-                       {"relative_change", scale > 0 ? floor / scale : 0.0},
-                       {"floor", floor},
-                       {"below_floor", below_floor}};
+    metrics[m.name] = {{key::checked_unit.name(), m.unit},
+                       {key::checked_value.name(), a},
+                       {key::checked_at_half_step.name(), b},
+                       {key::checked_relative_change.name(), scale > 0 ? floor / scale : 0.0},
+                       {key::checked_floor.name(), floor},
+                       {key::checked_below_floor.name(), below_floor}};
     if (below_floor) below.push_back(m.name);
   }
-  j["metrics"] = metrics;
-  j["below_floor"] = below;
+  j[key::step_check_metrics.name()] = metrics;
+  j[key::step_check_below_floor.name()] = below;
   return j;
 }
 

@@ -12,6 +12,7 @@
 #include "app/scenario/scenario.hpp"
 #include "app/study/case_record.hpp"
 #include "app/study/draws.hpp"
+#include "report/summary_keys.hpp"
 
 namespace elbowsim {
 
@@ -22,7 +23,7 @@ std::string failure_of(const std::filesystem::path& folder) {
   try {
     std::ifstream in(folder / "summary.json");
     const auto summary = nlohmann::ordered_json::parse(in);
-    const std::string failure = summary.value("failure", "");
+    const std::string failure = summary.value(summary_key::failure.name(), "");
     return failure.empty() ? "the run is invalid (summary.json)" : failure;
   } catch (const std::exception&) {
     return "the run failed (no readable summary.json)";

@@ -9,6 +9,8 @@
 #include "app/output/trajectory_csv.hpp"
 #include "app/scenario/scenario.hpp"
 #include "engine/recording/number_text.hpp"
+#include "engine/step_grid.hpp"
+#include "report/summary_keys.hpp"
 
 namespace elbowsim {
 
@@ -171,10 +173,10 @@ std::string inconsistency(const report::RunData& run) {
   if (!run.has_summary() || !run.has_trajectory()) return "";
   // The same run wrote both: the last recorded row is the run's last state
   // (or, for a run that stopped early, no later than it).
-  const double final_time = run.summary.value("final_time", 0.0);
+  const double final_time = run.summary.value(summary_key::final_time.name(), 0.0);
   const double last = run.trajectory.at(run.trajectory.rows() - 1, 0);
-  const double tolerance = 1e-9 * std::max(1.0, std::abs(final_time));
-  const bool completed = run.summary.value("completed", false);
+  const double tolerance = step_grid::recorded_time_tolerance(final_time);
+  const bool completed = run.summary.value(summary_key::completed.name(), false);
   if (last > final_time + tolerance || (completed && last < final_time - tolerance))
     return "trajectory.csv ends at t = " + significant(last, 4) +
            " s but summary.json says the run " + (completed ? "completed at" : "stopped at") +

@@ -8,9 +8,12 @@
 #include "engine/run/recorder.hpp"
 #include "report/metrics.hpp"
 #include "report/provenance.hpp"
+#include "report/summary_keys.hpp"
 #include "report/summary_units.hpp"
 
 namespace elbowsim {
+
+namespace key = summary_key;
 
 namespace {
 
@@ -25,7 +28,9 @@ nlohmann::ordered_json energy_json(const EnergyTerms& e) {
 nlohmann::ordered_json model_json(const Model& m) {
   double total_mass = 0;
   for (const Link& link : m.links) total_mass += link.mass;
-  return {{"dof", m.dof}, {"total_mass", total_mass}, {"hand_link", m.hand_link}};
+  return {{key::model_dof.name(), m.dof},
+          {key::model_total_mass.name(), total_mass},
+          {key::model_hand_link.name(), m.hand_link}};
 }
 
 // The event counts of each contact body (metrics' order: elbows, then links)
@@ -80,18 +85,19 @@ nlohmann::ordered_json bodies_json(const Scenario& s, const RunResult& r) {
   for (std::size_t b = 0; b < metrics.bodies.size(); ++b) {
     nlohmann::ordered_json body;
     const int link = metrics.body_links[b];
-    body["kind"] = link < 0 ? "elbow" : "link";
-    body["link"] = link < 0 ? s.model.elbows[b].link : link;
-    body["planned"] = planned(s, metrics, b);
-    body["rest_fraction"] = value("body_rest_fraction", b);
-    body["force_mean"] = value("body_force_mean", b);
-    body["force_peak"] = value("body_force_peak", b);
-    if (s.model.effects.friction) body["friction_work"] = value("body_friction_work", b);
-    body["landings"] = events[b].landings;
-    body["releases"] = events[b].releases;
+    body[key::body_kind.name()] = link < 0 ? "elbow" : "link";
+    body[key::body_link.name()] = link < 0 ? s.model.elbows[b].link : link;
+    body[key::body_planned.name()] = planned(s, metrics, b);
+    body[key::body_rest_fraction.name()] = value(metric::body_rest_fraction, b);
+    body[key::body_force_mean.name()] = value(metric::body_force_mean, b);
+    body[key::body_force_peak.name()] = value(metric::body_force_peak, b);
+    if (s.model.effects.friction)
+      body[key::body_friction_work.name()] = value(metric::body_friction_work, b);
+    body[key::body_landings.name()] = events[b].landings;
+    body[key::body_releases.name()] = events[b].releases;
     if (s.model.has_coulomb_friction()) {
-      body["sticks"] = events[b].sticks;
-      body["slips"] = events[b].slips;
+      body[key::body_sticks.name()] = events[b].sticks;
+      body[key::body_slips.name()] = events[b].slips;
     }
     j[metrics.bodies[b]] = body;
   }
@@ -109,36 +115,40 @@ nlohmann::ordered_json contact_json(const Scenario& s, const RunResult& r) {
       case ContactEvent::Kind::slip: ++slips; break;
     }
   }
-  nlohmann::ordered_json j = {{"enabled", m.effects.contact},
-                              {"collision_worlds_built", r.collision_worlds_built}};
+  nlohmann::ordered_json j = {
+      {key::contact_enabled.name(), m.effects.contact},
+      {key::contact_collision_worlds_built.name(), r.collision_worlds_built}};
   if (!m.effects.contact) return j;
-  j["elbows"] = m.elbows.size();
-  j["events"] = to_string(m.contact.events);
-  j["stabilization"] = to_string(m.effects.stabilization);
-  j["landings"] = landings;
-  j["releases"] = releases;
+  j[key::contact_elbows.name()] = m.elbows.size();
+  j[key::contact_events.name()] = to_string(m.contact.events);
+  j[key::contact_stabilization.name()] = to_string(m.effects.stabilization);
+  j[key::contact_landings.name()] = landings;
+  j[key::contact_releases.name()] = releases;
   if (m.has_coulomb_friction()) {
-    j["sticks"] = sticks;
-    j["slips"] = slips;
+    j[key::contact_sticks.name()] = sticks;
+    j[key::contact_slips.name()] = slips;
   }
-  j["max_abs_C"] = r.contact.max_abs_C;
-  j["max_abs_Jc_qd"] = r.contact.max_abs_Cd;
-  j["dependent_steps"] = r.contact.dependent_steps;
-  j["bodies"] = bodies_json(s, r);
+  j[key::contact_max_abs_C.name()] = r.contact.max_abs_C;
+  j[key::contact_max_abs_Jc_qd.name()] = r.contact.max_abs_Cd;
+  j[key::contact_dependent_steps.name()] = r.contact.dependent_steps;
+  j[key::contact_bodies.name()] = bodies_json(s, r);
   return j;
 }
 
 nlohmann::ordered_json settings_json(const Options& o) {
-  nlohmann::ordered_json j = {{"integrator", to_string(o.integrator)}, {"dynamics", to_string(o.dynamics)},
-                              {"step", o.step}, {"duration", o.duration}};
+  nlohmann::ordered_json j = {{key::settings_integrator.name(), to_string(o.integrator)},
+                              {key::settings_dynamics.name(), to_string(o.dynamics)},
+                              {key::settings_step.name(), o.step},
+                              {key::settings_duration.name(), o.duration}};
   if (is_adaptive(o.integrator)) {
-    j["rtol"] = o.rtol;
-    j["atol"] = o.atol;
-    j["max_step"] = o.max_step;  // 0: the default (step with contact, else duration / 10)
+    j[key::settings_rtol.name()] = o.rtol;
+    j[key::settings_atol.name()] = o.atol;
+    j[key::settings_max_step.name()] =
+        o.max_step;  // 0: the default (step with contact, else duration / 10)
   }
   // simulation.integrator named by the scenario, or chosen by auto (and why).
-  j["integrator_choice"] = o.integrator_reason.empty() ? "scenario" : "auto";
-  if (!o.integrator_reason.empty()) j["integrator_reason"] = o.integrator_reason;
+  j[key::settings_integrator_choice.name()] = o.integrator_reason.empty() ? "scenario" : "auto";
+  if (!o.integrator_reason.empty()) j[key::settings_integrator_reason.name()] = o.integrator_reason;
   return j;
 }
 
@@ -149,14 +159,15 @@ static nlohmann::ordered_json control_loop_json(const DigitalLoopSpec& loop) {
   if (!loop.sampled()) return "continuous";
   const SensorSpec& s = loop.sensors;
   nlohmann::ordered_json j;
-  j["sample_rate"] = 1.0 / loop.sample_period;
-  j["delay_samples"] = loop.delay;
-  j["pwm_bits"] = loop.pwm_bits;  // 0: exact voltage
-  j["encoder_counts_per_rev"] = s.counts_per_rev;  // 0: exact angles
-  j["encoder_side"] = s.side == SensorSpec::EncoderSide::motor ? "motor" : "joint";
-  j["angle_noise"] = s.noise;
-  j["velocity_cutoff"] = s.velocity_cutoff;  // 0: raw backward difference
-  j["noise_seed"] = s.seed;
+  j[key::control_loop_sample_rate.name()] = 1.0 / loop.sample_period;
+  j[key::control_loop_delay_samples.name()] = loop.delay;
+  j[key::control_loop_pwm_bits.name()] = loop.pwm_bits;                   // 0: exact voltage
+  j[key::control_loop_encoder_counts_per_rev.name()] = s.counts_per_rev;  // 0: exact angles
+  j[key::control_loop_encoder_side.name()] =
+      s.side == SensorSpec::EncoderSide::motor ? "motor" : "joint";
+  j[key::control_loop_angle_noise.name()] = s.noise;
+  j[key::control_loop_velocity_cutoff.name()] = s.velocity_cutoff;  // 0: raw backward difference
+  j[key::control_loop_noise_seed.name()] = s.seed;
   return j;
 }
 
@@ -164,40 +175,47 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   const Model& m = scenario.model;
   const double e_in = result.energy_final.electrical_in;
   nlohmann::ordered_json j;
-  j["provenance"] = report::provenance_json();  // first: tests/golden/golden.sh drops this block
-  j["scenario"] = m.name;
-  if (!scenario.variant.empty()) j["variant"] = scenario.variant;  // `render` titles frames by it
-  j["description"] = scenario.description;
-  j["file"] = scenario.file;
-  j["effects"] = m.active_effects();
-  j["model"] = model_json(m);
-  j["settings"] = settings_json(m.options);
-  j["completed"] = result.completed;
-  j["valid"] = result.valid;  // completed and every check of engine/run/validity.hpp held
-  j["failure"] = result.failure;
-  j["interrupted"] = result.interrupted;  // by a signal (exit 128 + signal), not by the physics
-  j["steps"] = result.steps;
+  // first: tests/golden/golden.sh drops this block
+  j[key::provenance.name()] = report::provenance_json();
+  j[key::scenario.name()] = m.name;
+  if (!scenario.variant.empty())
+    j[key::variant.name()] = scenario.variant;  // `render` titles frames by it
+  j[key::description.name()] = scenario.description;
+  j[key::file.name()] = scenario.file;
+  j[key::effects.name()] = m.active_effects();
+  j[key::model.name()] = model_json(m);
+  j[key::settings.name()] = settings_json(m.options);
+  j[key::completed.name()] = result.completed;
+  j[key::valid.name()] = result.valid;  // completed and every check of engine/run/validity.hpp held
+  j[key::failure.name()] = result.failure;
+  // by a signal (exit 128 + signal), not by the physics
+  j[key::interrupted.name()] = result.interrupted;
+  j[key::steps.name()] = result.steps;
   // What the integration cost: derivative evaluations (recording and events
   // included), rejected adaptive steps, Jacobians and LU factorisations.
-  j["integrator_work"] = {{"evaluations", result.work.evaluations},
-                          {"rejected_steps", result.work.rejected},
-                          {"jacobians", result.work.jacobians},
-                          {"factorisations", result.work.factorisations}};
-  j["final_time"] = result.final_time;
-  j["wall_seconds"] = result.wall_seconds;
-  j["energy_initial"] = energy_json(result.energy_initial);
-  j["energy_final"] = energy_json(result.energy_final);
-  j["balance_residual"] = result.balance_residual;
-  j["max_abs_balance_residual"] = result.max_abs_balance_residual;
-  j["balance_residual_relative"] = e_in != 0 ? std::abs(result.balance_residual / e_in) : 0.0;
-  j["metrics"] = report::metrics_json(result.metrics);  // the vocabulary of engine/recording/metrics.hpp
-  j["controller"] = to_string(scenario.experiment.controller.kind);
+  j[key::integrator_work.name()] = {
+      {key::integrator_work_evaluations.name(), result.work.evaluations},
+      {key::integrator_work_rejected_steps.name(), result.work.rejected},
+      {key::integrator_work_jacobians.name(), result.work.jacobians},
+      {key::integrator_work_factorisations.name(), result.work.factorisations}};
+  j[key::final_time.name()] = result.final_time;
+  j[key::wall_seconds.name()] = result.wall_seconds;
+  j[key::energy_initial.name()] = energy_json(result.energy_initial);
+  j[key::energy_final.name()] = energy_json(result.energy_final);
+  j[key::balance_residual.name()] = result.balance_residual;
+  j[key::max_abs_balance_residual.name()] = result.max_abs_balance_residual;
+  j[key::balance_residual_relative.name()] =
+      e_in != 0 ? std::abs(result.balance_residual / e_in) : 0.0;
+  // the vocabulary of engine/recording/metrics.hpp
+  j[key::metrics.name()] = report::metrics_json(result.metrics);
+  j[key::controller.name()] = to_string(scenario.experiment.controller.kind);
   // Where the controller's model differs from the plant ([] when it knows it exactly).
-  j["controller_model"] = scenario.controller_model_overrides;
-  j["control_loop"] = control_loop_json(scenario.experiment.controller.loop);
-  j["contact"] = contact_json(scenario, result);
-  j["warnings"] = result.warnings;
-  if (!result.saturation.empty()) j["saturation_share"] = result.saturation;  // per motor, warnings.hpp
+  j[key::controller_model.name()] = scenario.controller_model_overrides;
+  j[key::control_loop.name()] = control_loop_json(scenario.experiment.controller.loop);
+  j[key::contact.name()] = contact_json(scenario, result);
+  j[key::warnings.name()] = result.warnings;
+  if (!result.saturation.empty())  // per motor, warnings.hpp
+    j[key::saturation_share.name()] = result.saturation;
   return j;
 }
 
@@ -223,7 +241,7 @@ nlohmann::ordered_json summary_shape(const Scenario& scenario, bool step_check) 
   placeholder.metrics = compute_metrics(placeholder.trajectory);
   if (model.has_motor()) placeholder.saturation.assign(static_cast<std::size_t>(model.dof), 0.0);
   nlohmann::ordered_json shape = run_summary(scenario, placeholder);
-  if (step_check) shape["step_check"] = nullptr;
+  if (step_check) shape[key::step_check.name()] = nullptr;
   return shape;
 }
 

@@ -5,7 +5,7 @@
 
 #include "app/scenario/checks.hpp"
 #include "app/scenario/sections.hpp"
-#include "engine/recording/number_text.hpp"
+#include "engine/step_grid.hpp"
 
 namespace elbowsim::loader {
 
@@ -56,7 +56,7 @@ DigitalLoopSpec read_digital_loop(const Value& controller, double step) {
   out.sample_period = 1.0 / hz;
   // The integrator steps to each instant; a period shorter than the step
   // would make every step a fraction of the scene's.
-  if (out.sample_period < step * (1 - 1e-9))
+  if (step_grid::shorter_than_step(out.sample_period, step))
     rate.fail("a sample period of " + significant(out.sample_period) +
               " s is shorter than simulation.step (" + significant(step) +
               " s): lower the rate or the step");

@@ -24,7 +24,7 @@ std::string draw_list(const std::vector<long>& draws) {
 // difference's "−14.1 J to −13.0 J" (a dash between negatives misreads).
 std::string interval(const ComparedQuantity& q, const report::Interval& ci) {
   return q.ratio ? quantity(ci.low, "") + "–" + quantity(ci.high, "")
-                 : quantity(ci.low, q.unit) + " to " + quantity(ci.high, q.unit);
+                 : quantity(ci.low, q.unit()) + " to " + quantity(ci.high, q.unit());
 }
 
 // A difference, or its absence, with the interval behind it.
@@ -39,7 +39,7 @@ std::string difference(const std::string& a, const std::string& b, const Compare
            ci + ", contains " + (q.ratio ? "1" : "0") + ")";
   const bool lower = r.value < none;
   const std::string size =
-      q.ratio ? percent(std::abs(r.value - 1)) : quantity(std::abs(r.value), q.unit);
+      q.ratio ? percent(std::abs(r.value - 1)) : quantity(std::abs(r.value), q.unit());
   return std::string(q.what) + ": " + a + " " + size + (lower ? " lower" : " higher") + " than " +
          b + " (" + ci + "; " + a + " lower in " + percent(r.win_rate) + " of draws)";
 }
@@ -54,7 +54,7 @@ std::vector<long> draws_of(const std::vector<std::size_t>& positions,
 // The statistic of one quantity as montecarlo.json holds it.
 Json statistic_json(const ComparedQuantity& q, const report::PairedStatistic& r) {
   Json j{{"statistic", q.ratio ? "ratio" : "difference"}};
-  if (!q.ratio) j["unit"] = q.unit;
+  if (!q.ratio) j["unit"] = q.unit();
   j["pairs"] = r.pairs;
   if (r.computed()) j[q.ratio ? "ratio" : "difference"] = r.value;
   if (r.ci) j["ci95"] = {r.ci->low, r.ci->high};
@@ -109,7 +109,7 @@ nlohmann::ordered_json paired_verdict(const PairedSamples& s, std::uint64_t seed
                  {});
       continue;
     }
-    if (m == "hand_error_rms") {
+    if (m == metric::hand_error_rms) {
       const double ma = report::median(ia->second), mb = report::median(ib->second);
       if (!(ma > kFloorFactor * s.floor_a && mb > kFloorFactor * s.floor_b)) {
         no_verdict("the medians (" + quantity(ma, "m") + ", " + quantity(mb, "m") +

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/recording/metrics.hpp"
+
 namespace elbowsim::study {
 
 constexpr double kConfidenceLevel = 0.95;
@@ -30,13 +32,13 @@ constexpr double kMaxInvalidShare = 0.10;  // more draws with an invalid run: no
 struct ComparedQuantity {
   const char* metric;  // its name in the run's metrics
   const char* what;    // in a sentence
-  const char* unit;
   bool ratio;  // a ratio of positive values, else a difference
+  std::string unit() const { return metric_unit(metric); }  // the metric vocabulary's
 };
 inline constexpr ComparedQuantity kCompared[] = {
-    {"energy_drawn", "electrical energy drawn from the supply", "J", true},
-    {"energy_in", "net electrical energy (drawn − regenerated)", "J", false},
-    {"hand_error_rms", "RMS hand error", "m", true}};
+    {metric::energy_drawn, "electrical energy drawn from the supply", true},
+    {metric::energy_in, "net electrical energy (drawn − regenerated)", false},
+    {metric::hand_error_rms, "RMS hand error", true}};
 
 struct PairedSamples {
   std::string a, b;  // variant names

@@ -137,7 +137,7 @@ void write_study_csv(const std::filesystem::path& path, const Json& study) {
     for (const Json& a : study["axes"]) out << "," << a.value("name", "");
     out << ",a,b,invalid_runs";
     for (const ComparedQuantity& q : kCompared) {
-      const std::string m = q.metric, unit = std::string(" [") + q.unit + "]";
+      const std::string m = q.metric, unit = std::string(" [") + q.unit() + "]";
       if (q.ratio)
         out << "," << m << " ratio a/b," << m << " ratio low," << m << " ratio high";
       else

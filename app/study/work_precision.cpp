@@ -8,6 +8,7 @@
 #include "engine/contact/constrained_dynamics.hpp"
 #include "engine/recording/number_text.hpp"
 #include "engine/run/simulator.hpp"
+#include "engine/step_grid.hpp"
 
 namespace elbowsim::study {
 
@@ -145,7 +146,7 @@ RunErrors compare_runs(const RunResult& run, const RunResult& reference) {
   double hand_sq = 0;
   e.force_max = forces.empty() ? std::nan("") : 0.0;
   for (std::size_t row = 0; row < rows; ++row) {
-    const bool same_time = std::abs(a.at(row, 0) - b.at(row, 0)) <= 1e-9 * std::max(1.0, std::abs(b.at(row, 0)));
+    const bool same_time = step_grid::same_recorded_time(a.at(row, 0), b.at(row, 0));
     // A run that stopped early ends on a row at its stopping time: compare up to it.
     if (!same_time && row + 1 == rows && (!run.completed || !reference.completed)) {
       e.rows = static_cast<long>(row);

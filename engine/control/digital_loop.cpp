@@ -8,6 +8,7 @@
 #include "engine/data.hpp"
 #include "engine/model.hpp"
 #include "engine/state_layout.hpp"
+#include "engine/step_grid.hpp"
 
 namespace elbowsim {
 
@@ -100,10 +101,11 @@ void start_digital_loop(const Model& model, Data& data) {
 void sample_if_due(const Model& model, Data& data) {
   const DigitalLoopSpec* spec = sampled_loop(data);
   if (!spec) return;
-  // Instants are k T, not sums of steps: no drift. A step that ends within a
-  // billionth of a step of the instant has reached it.
+  // Instants are k T, not sums of steps: no drift. A step that ends within
+  // rounding of the instant (engine/step_grid.hpp) has reached it.
   const double instant = static_cast<double>(data.loop.next_sample) * spec->sample_period;
-  if (data.t >= instant - 1e-9 * model.options.step) sample(model, data, *spec, false);
+  if (step_grid::not_earlier(data.t, instant, model.options.step))
+    sample(model, data, *spec, false);
 }
 
 double time_to_sample(const Data& data) {

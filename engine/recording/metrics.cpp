@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string_view>
 
 namespace elbowsim {
 
@@ -11,18 +12,20 @@ namespace {
 struct Vocabulary {
   const char* name;
   const char* unit;
+  Metric::Shape shape;
 };
 
 constexpr Vocabulary kVocabulary[] = {
-    {"samples", ""},          {"hand_error_rms", "m"},      {"hand_error_max", "m"},
-    {"hand_error_final", "m"}, {"hand_path_length", "m"},    {"energy_in", "J"},
-    {"joule", "J"},            {"energy_drawn", "J"},        {"energy_regenerated", "J"},
-    {"power_peak", "W"},          {"energy_in_per_joint", "J"},
-    {"current_peak", "A"},     {"current_rms", "A"},         {"elbow_force_mean", "N"},
-    {"elbow_force_min", "N"},  {"elbow_force_max", "N"},     {"time_in_contact", "s"},
-    {"rest_fraction", ""},    {"elbow_force_peak", "N"},    {"elbow_drift_max", "m"},
-    {"body_rest_fraction", ""}, {"body_force_mean", "N"},   {"body_force_peak", "N"},
-    {"body_friction_work", "J"}};
+#define ELBOWSIM_METRIC_ENTRY(name, unit, shape, what) {#name, unit, Metric::Shape::shape},
+    ELBOWSIM_METRICS(ELBOWSIM_METRIC_ENTRY)
+#undef ELBOWSIM_METRIC_ENTRY
+};
+
+const Vocabulary& vocabulary(const char* name) {
+  for (const Vocabulary& v : kVocabulary)
+    if (std::string_view(name) == v.name) return v;
+  throw std::logic_error(std::string("no metric ") + name + " in ELBOWSIM_METRICS");
+}
 
 // Sampled series of one recording, with the integrals metrics need.
 struct Series {
@@ -60,36 +63,38 @@ struct Series {
   }
 };
 
-void add(Metrics& m, const char* name, Metric::Shape shape, std::vector<double> values) {
-  m.list.push_back({name, metric_unit(name), shape, std::move(values)});
+// The metric `name` with its values (its unit and shape from the vocabulary).
+void add(Metrics& m, const char* name, std::vector<double> values) {
+  const Vocabulary& v = vocabulary(name);
+  m.list.push_back({name, v.unit, v.shape, std::move(values)});
 }
 
-void add(Metrics& m, const char* name, double value) { add(m, name, Metric::Shape::one, {value}); }
+void add(Metrics& m, const char* name, double value) { add(m, name, std::vector<double>{value}); }
 
 void hand_metrics(const Series& s, Metrics& m) {
   const TrajectoryLayout& L = s.rec.layout;
   const int e = L.hand_error();
   if (e >= 0) {
-    add(m, "hand_error_rms", s.rms(e));
-    add(m, "hand_error_max", s.max_abs(e));
-    add(m, "hand_error_final", s.at(s.rows() - 1, e));
+    add(m, metric::hand_error_rms, s.rms(e));
+    add(m, metric::hand_error_max, s.max_abs(e));
+    add(m, metric::hand_error_final, s.at(s.rows() - 1, e));
   }
   double length = 0;
   for (std::size_t r = 1; r < s.rows(); ++r)
     length += std::hypot(s.at(r, L.hand(0)) - s.at(r - 1, L.hand(0)),
                          s.at(r, L.hand(1)) - s.at(r - 1, L.hand(1)),
                          s.at(r, L.hand(2)) - s.at(r - 1, L.hand(2)));
-  add(m, "hand_path_length", length);
+  add(m, metric::hand_path_length, length);
 }
 
 void energy_metrics(const Series& s, Metrics& m) {
   const TrajectoryLayout& L = s.rec.layout;
   const std::size_t last = s.rows() - 1;
-  add(m, "energy_in", s.at(last, L.energy(Energy::electrical_in)));
-  add(m, "joule", s.at(last, L.energy(Energy::joule)));
+  add(m, metric::energy_in, s.at(last, L.energy(Energy::electrical_in)));
+  add(m, metric::joule, s.at(last, L.energy(Energy::joule)));
   if (L.energy(Energy::drawn) < 0) return;
-  add(m, "energy_drawn", s.at(last, L.energy(Energy::drawn)));
-  add(m, "energy_regenerated", s.at(last, L.energy(Energy::regenerated)));
+  add(m, metric::energy_drawn, s.at(last, L.energy(Energy::drawn)));
+  add(m, metric::energy_regenerated, s.at(last, L.energy(Energy::regenerated)));
 }
 
 void motor_metrics(const Series& s, Metrics& m) {
@@ -103,7 +108,7 @@ void motor_metrics(const Series& s, Metrics& m) {
   };
   double peak = -INFINITY;
   for (std::size_t r = 0; r < s.rows(); ++r) peak = std::max(peak, power(r));
-  add(m, "power_peak", peak);
+  add(m, metric::power_peak, peak);
   std::vector<double> energy(n), current_peak(n), current_rms(n);
   for (int j = 0; j < n; ++j) {
     const int i = L.current(j), v = L.voltage(j);
@@ -111,9 +116,9 @@ void motor_metrics(const Series& s, Metrics& m) {
     current_peak[j] = s.max_abs(i);
     current_rms[j] = s.rms(i);
   }
-  add(m, "energy_in_per_joint", Metric::Shape::per_joint, energy);
-  add(m, "current_peak", Metric::Shape::per_joint, current_peak);
-  add(m, "current_rms", Metric::Shape::per_joint, current_rms);
+  add(m, metric::energy_in_per_joint, energy);
+  add(m, metric::current_peak, current_peak);
+  add(m, metric::current_rms, current_rms);
 }
 
 void contact_metrics(const Series& s, Metrics& m) {
@@ -135,17 +140,17 @@ void contact_metrics(const Series& s, Metrics& m) {
     const double held = s.held([&](std::size_t r) { return resting(r, k); });
     fraction[k] = T > 0 ? held / T : (resting(0, k) ? 1.0 : 0.0);
   }
-  add(m, "elbow_force_mean", count > 0 ? sum / count : 0.0);
-  add(m, "elbow_force_min", count > 0 ? low : 0.0);
-  add(m, "elbow_force_max", high);
-  add(m, "time_in_contact", s.held([&](std::size_t r) {
+  add(m, metric::elbow_force_mean, count > 0 ? sum / count : 0.0);
+  add(m, metric::elbow_force_min, count > 0 ? low : 0.0);
+  add(m, metric::elbow_force_max, high);
+  add(m, metric::time_in_contact, s.held([&](std::size_t r) {
     for (int k = 0; k < elbows; ++k)
       if (resting(r, k)) return true;
     return false;
   }));
-  add(m, "rest_fraction", Metric::Shape::per_elbow, fraction);
-  add(m, "elbow_force_peak", Metric::Shape::per_elbow, peak);
-  add(m, "elbow_drift_max", Metric::Shape::per_elbow, drift);
+  add(m, metric::rest_fraction, fraction);
+  add(m, metric::elbow_force_peak, peak);
+  add(m, metric::elbow_drift_max, drift);
 }
 
 // The columns of one contact body: its force, its resting flag and, with
@@ -196,11 +201,10 @@ void body_metrics(const Series& s, Metrics& m) {
     mean[b] = held > 0 ? impulse / held : (resting(0) ? s.at(0, c.force) : 0.0);
     if (c.friction >= 0) work[b] = s.at(s.rows() - 1, c.friction);
   }
-  add(m, "body_rest_fraction", Metric::Shape::per_body, fraction);
-  add(m, "body_force_mean", Metric::Shape::per_body, mean);
-  add(m, "body_force_peak", Metric::Shape::per_body, peak);
-  if (s.rec.layout.has_body_friction())
-    add(m, "body_friction_work", Metric::Shape::per_body, work);
+  add(m, metric::body_rest_fraction, fraction);
+  add(m, metric::body_force_mean, mean);
+  add(m, metric::body_force_peak, peak);
+  if (s.rec.layout.has_body_friction()) add(m, metric::body_friction_work, work);
 }
 
 }  // namespace
@@ -234,7 +238,7 @@ Metrics compute_metrics(const Recording& recording) {
   if (recording.rows() == 0) return m;
   m.elbows = recording.layout.groups().elbows;
   const Series s(recording);
-  add(m, "samples", double(s.rows()));
+  add(m, metric::samples, double(s.rows()));
   hand_metrics(s, m);
   energy_metrics(s, m);
   motor_metrics(s, m);

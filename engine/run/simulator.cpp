@@ -13,6 +13,7 @@
 #include "engine/run/step.hpp"
 #include "engine/run/validity.hpp"
 #include "engine/run/warnings.hpp"
+#include "engine/step_grid.hpp"
 
 namespace elbowsim {
 
@@ -56,12 +57,13 @@ void record(const Model& model, Data& data, RunResult& result) {
 }
 
 // Whether a fixed step ended on a row time k * data.record_interval not yet
-// recorded (within row_tolerance: t accumulates rounding; step.cpp cuts steps
-// with the same; a step that reaches a sample instant 1e-13 s later would
-// otherwise record the row twice). Remembers k.
+// recorded (within step_grid's row tolerance: t accumulates rounding; step.cpp
+// cuts steps with the same; a step that reaches a sample instant 1e-13 s later
+// would otherwise record the row twice). Remembers k.
 bool at_new_row(const Model& model, const Data& data, long& last_row) {
   const double k = std::round(data.t / data.record_interval);
-  if (!(k > last_row && std::abs(data.t - k * data.record_interval) <= row_tolerance(model))) return false;
+  if (!(k > last_row && step_grid::on_row(data.t, k, data.record_interval, model.options.step)))
+    return false;
   last_row = static_cast<long>(k);
   return true;
 }
@@ -72,11 +74,11 @@ bool at_new_row(const Model& model, const Data& data, long& last_row) {
 // state itself.
 void record_rows_in_step(const Model& model, Data& data, RunResult& result, double t0,
                          double interval, long& next_row) {
-  const double tiny = 1e-9 * model.options.step;
-  const double t_end = data.t;
+  const double step = model.options.step, t_end = data.t;
   bool end_recorded = false;
-  for (double tr = next_row * interval; tr <= t_end + tiny; tr = ++next_row * interval) {
-    if (tr >= t_end - tiny) {
+  for (double tr = next_row * interval; step_grid::not_later(tr, t_end, step);
+       tr = ++next_row * interval) {
+    if (step_grid::not_earlier(tr, t_end, step)) {
       record(model, data, result);
       end_recorded = true;
       continue;

@@ -20,6 +20,7 @@
 #include "engine/run/joint_stick_slip.hpp"
 #include "engine/run/validity.hpp"
 #include "engine/state_layout.hpp"
+#include "engine/step_grid.hpp"
 
 namespace elbowsim {
 
@@ -32,7 +33,7 @@ Eigen::VectorXd or_zeros(const Eigen::VectorXd& v, int n) {
 // Time to the next recorded row after data.t (infinity without rows).
 double time_to_row(const Model& model, const Data& data) {
   if (data.record_interval <= 0) return std::numeric_limits<double>::infinity();
-  const double k = std::floor((data.t + row_tolerance(model)) / data.record_interval) + 1;
+  const double k = step_grid::next_row(data.t, data.record_interval, model.options.step);
   return k * data.record_interval - data.t;
 }
 
@@ -41,12 +42,13 @@ double time_to_row(const Model& model, const Data& data) {
 // or before the next recorded row.
 double step_length(const Model& model, const Data& data) {
   const double left = model.options.duration - data.t;
-  double h = left > 1e-3 * model.options.step ? std::min(model.options.step, left) : model.options.step;
+  const double step = model.options.step;
+  double h = step_grid::reached(left, step, step_grid::kFixedEnd) ? step : std::min(step, left);
   const double to_sample = time_to_sample(data);
-  if (to_sample > 1e-9 * model.options.step) h = std::min(h, to_sample);
+  if (!step_grid::reached(to_sample, step)) h = std::min(h, to_sample);
   const double to_row = time_to_row(model, data);
   // Only a real cut: t's rounding must not turn a whole step into a 1e-18 shorter one.
-  if (to_row < h - row_tolerance(model)) h = to_row;
+  if (to_row < h - step_grid::row_tolerance(step)) h = to_row;
   return h;
 }
 
@@ -60,7 +62,7 @@ double adaptive_limit(const Model& model, const Data& data) {
   const double longest = o.max_step > 0 ? o.max_step : model.effects.contact ? o.step : 0.1 * o.duration;
   double h = std::min(o.duration - data.t, longest);
   const double to_sample = time_to_sample(data);
-  if (to_sample > 1e-9 * o.step) h = std::min(h, to_sample);
+  if (!step_grid::reached(to_sample, o.step)) h = std::min(h, to_sample);
   return h;
 }
 
@@ -131,12 +133,11 @@ void reset(const Model& model, Data& data) {
   data.energy_initial = data.energy;
 }
 
-double row_tolerance(const Model& model) { return 1e-6 * model.options.step; }
-
 bool finished(const Model& model, const Data& data) {
   // Adaptive steps end on the duration itself (adaptive_limit), so only rounding is left.
-  const double share = is_adaptive(model.options.integrator) ? 1e-9 : 1e-3;
-  return model.options.duration - data.t <= share * model.options.step;
+  const double share =
+      is_adaptive(model.options.integrator) ? step_grid::kRounding : step_grid::kFixedEnd;
+  return step_grid::reached(model.options.duration - data.t, model.options.step, share);
 }
 
 void step(const Model& model, Data& data) {

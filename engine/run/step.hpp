@@ -78,13 +78,9 @@ void reset(const Model& model, Data& data);
 // where it stopped. Allocates nothing (but when it fails).
 void step(const Model& model, Data& data);
 
-// Whether the run has reached model.options.duration (within a thousandth
-// of a step: t accumulates rounding).
+// Whether the run has reached model.options.duration: a fixed-step run within a
+// thousandth of a step, an adaptive one within rounding (engine/step_grid.hpp).
 bool finished(const Model& model, const Data& data);
-
-// How close [s] a fixed step's end must come to a row time k x interval to be
-// on it (Data::record_interval): far above t's accumulated rounding, far below a step.
-double row_tolerance(const Model& model);
 
 // Evaluates the stage outputs (qdd, voltage, current, actuation, contact
 // forces, energy) at the state in data.x without advancing it.

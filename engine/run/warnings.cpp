@@ -124,7 +124,7 @@ bool unplanned(const Metrics& metrics, std::size_t b, const std::vector<int>& he
 
 UnplannedContact longest_unplanned_contact(const Metrics& metrics, const std::vector<int>& held) {
   UnplannedContact out;
-  const Metric* share = metrics.find("body_rest_fraction");
+  const Metric* share = metrics.find(metric::body_rest_fraction);
   if (!share) return out;
   for (std::size_t b = 0; b < metrics.bodies.size(); ++b)
     if (unplanned(metrics, b, held) && share->values[b] > out.share)
@@ -134,9 +134,9 @@ UnplannedContact longest_unplanned_contact(const Metrics& metrics, const std::ve
 
 std::vector<std::string> unplanned_contact_warnings(const Model& model, const Metrics& metrics,
                                                     const std::vector<int>& held) {
-  const Metric* share = metrics.find("body_rest_fraction");
-  const Metric* mean = metrics.find("body_force_mean");
-  const Metric* peak = metrics.find("body_force_peak");
+  const Metric* share = metrics.find(metric::body_rest_fraction);
+  const Metric* mean = metrics.find(metric::body_force_mean);
+  const Metric* peak = metrics.find(metric::body_force_peak);
   if (!share || !mean || !peak) return {};
   std::vector<std::string> out;
   for (std::size_t b = 0; b < metrics.bodies.size(); ++b) {
@@ -178,7 +178,7 @@ std::vector<std::string> hand_error_warnings(const Model& model, const Recording
 
 std::vector<std::string> motor_rating_warnings(const Model& model, const Metrics& metrics) {
   std::vector<std::string> out;
-  const Metric* rms = metrics.find("current_rms");
+  const Metric* rms = metrics.find(metric::current_rms);
   if (!model.has_motor() || !rms) return out;
   for (int j = 0; j < model.dof; ++j) {
     const double rated = model.motors[static_cast<std::size_t>(j)].rated_current;

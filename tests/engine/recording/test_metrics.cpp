@@ -139,6 +139,20 @@ TEST_CASE("metrics: hand path length, energy in and Joule loss of a recording") 
   CHECK_THROWS_AS(m["current_rms"], std::out_of_range);
 }
 
+TEST_CASE("metrics: a run with everything has the whole vocabulary, in its order, by its names") {
+  Recording rec = timed({2, true, true, true, {"elbow"}, true}, 4, 0.1);
+  const Metrics m = compute_metrics(rec);
+  std::vector<std::string> vocabulary;
+#define NAME(name, unit, shape, what) vocabulary.push_back(#name);
+  ELBOWSIM_METRICS(NAME)
+#undef NAME
+  std::vector<std::string> names;
+  for (const Metric& metric : m.list) names.push_back(metric.name);
+  CHECK(names == vocabulary);
+  CHECK(std::string(metric::hand_error_rms) == "hand_error_rms");  // the constants are the names
+  CHECK(std::string(metric::body_friction_work) == "body_friction_work");
+}
+
 TEST_CASE("metrics: every metric's unit is the vocabulary's; only samples and rest shares have none") {
   Recording rec = timed({2, true, true, true, {"elbow"}, true}, 4, 0.1);
   const Metrics m = compute_metrics(rec);

@@ -15,6 +15,7 @@
 #include "support/allocations.hpp"
 #include "engine/control/plan.hpp"
 #include "engine/state_layout.hpp"
+#include "engine/step_grid.hpp"
 #include "support/contact_scenes.hpp"
 #include "support/experiment_scenes.hpp"
 #include "support/scenes.hpp"
@@ -123,7 +124,7 @@ TEST_CASE("step() driven by hand reproduces simulate() bit for bit on a contact 
     REQUIRE_FALSE(data.failure);
     events.insert(events.end(), data.log.events.begin(), data.log.events.end());
     const double k = std::round(data.t / m.options.step);
-    const bool row = k > last_row && std::abs(data.t - k * m.options.step) <= row_tolerance(m);
+    const bool row = k > last_row && step_grid::on_row(data.t, k, m.options.step, m.options.step);
     if (!row && !finished(m, data)) continue;
     if (row) last_row = k;
     evaluate_outputs(m, data);
