@@ -5,6 +5,7 @@
 
 #include "app/scenario/checks.hpp"
 #include "app/scenario/sections.hpp"
+#include "engine/recording/number_text.hpp"
 #include "engine/step_grid.hpp"
 
 namespace elbowsim::loader {
