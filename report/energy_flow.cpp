@@ -48,12 +48,11 @@ void book(EnergyFlow& flow, const std::string& key, double amount, bool supplied
       .push_back({key, into ? l.in : l.out, std::abs(amount), into ? l.short_in : l.short_out});
 }
 
-// A loss: out of the arm; a negative loss (rounding) is booked in, and says so.
-void loss(EnergyFlow& flow, const std::string& key, double value) { book(flow, key, value, false); }
-
-// A stored energy: its increase is a destination, its decrease a source.
-void stored(EnergyFlow& flow, const std::string& key, double change) {
-  book(flow, key, change, false);
+// A loss, or the increase of a stored energy: out of the arm. A negative one
+// (a stored energy given up, a loss negative by rounding) is booked in, and
+// its label says so.
+void outgoing(EnergyFlow& flow, const std::string& key, double amount) {
+  book(flow, key, amount, false);
 }
 
 double sum(const std::vector<EnergyTerm>& terms) {
@@ -110,9 +109,9 @@ std::optional<EnergyFlow> energy_flow(const Json& summary) {
   } else if (flow.electrical_in != 0) {
     book(flow, "electrical_in", flow.electrical_in, true);
   }
-  stored(flow, "potential", delta("potential"));
-  stored(flow, "kinetic", delta("kinetic_links") + delta("kinetic_rotors"));
-  if (flow.motors) stored(flow, "magnetic", delta("magnetic"));
+  outgoing(flow, "potential", delta("potential"));
+  outgoing(flow, "kinetic", delta("kinetic_links") + delta("kinetic_rotors"));
+  if (flow.motors) outgoing(flow, "magnetic", delta("magnetic"));
   // The losses in list order: those every run has, those of contact in a
   // contact run, the others where they are not 0.
   const bool contact = summary.contains("contact") && summary["contact"].is_object() &&
@@ -123,7 +122,7 @@ std::optional<EnergyFlow> energy_flow(const Json& summary) {
     const bool shown = t.group == EnergyGroup::always     ? true
                        : t.group == EnergyGroup::contact ? contact
                                                          : value != 0;
-    if (shown) loss(flow, t.summary_key, value);
+    if (shown) outgoing(flow, t.summary_key, value);
   }
   flow.residual = summary.value("balance_residual", 0.0);
   const double scale = std::max(sum(flow.in), sum(flow.out));
