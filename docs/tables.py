@@ -46,7 +46,11 @@ CLAIM_ROWS = [
            "the held-up arm's last link lies on the table (below)"),
     ("jointfriction", "joint friction 0.1 N m Coulomb, 0.15 N m breakaway at every joint"),
     ("motors20", "the 20 W motors at every joint (3 times over their rating held out)"),
-    ("continuous", "continuous control (no sampling, exact sensors)"),
+    ("continuous", "continuous control (no sampling, exact sensors; the rule without integral action)"),
+    ("samegains", "the gains both arms once shared: Kp 50 V/rad, Kd 2 V s/rad, no integral "
+                  "(`controller.tuning=null`)"),
+    ("tunedpd", "the rule without integral action (`controller.tuning.integral=0`)"),
+    ("tuned20", "the rule at 20 Hz (`controller.tuning.bandwidth=20`, step 0.25 ms)"),
     ("nogravity", "no gravity (`effects.gravity=false`)"),
 ]
 

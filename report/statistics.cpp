@@ -147,6 +147,33 @@ Estimate estimate_mean(const std::vector<double>& x, Scale scale, double level, 
   return e;
 }
 
+double sign_test_p(std::size_t lower, std::size_t n) {
+  if (n == 0) return 1.0;
+  const std::size_t tail = std::min(lower, n - lower);
+  // 2 x P(X <= tail), X ~ Binomial(n, 1/2), term by term in logs (n may be large).
+  const double nd = static_cast<double>(n);
+  double sum = 0;
+  for (std::size_t i = 0; i <= tail; ++i) {
+    const double id = static_cast<double>(i);
+    sum += std::exp(std::lgamma(nd + 1) - std::lgamma(id + 1) - std::lgamma(nd - id + 1) -
+                    nd * std::log(2.0));
+  }
+  return std::min(1.0, 2 * sum);
+}
+
+std::vector<bool> holm_rejects(const std::vector<double>& p, double alpha) {
+  std::vector<std::size_t> order(p.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return p[x] < p[y]; });
+  std::vector<bool> rejected(p.size(), false);
+  const double m = static_cast<double>(p.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    if (!(p[order[k]] <= alpha / (m - static_cast<double>(k)))) break;
+    rejected[order[k]] = true;
+  }
+  return rejected;
+}
+
 namespace {
 
 // A paired statistic of per-pair values y_i (log ratios, or differences),
@@ -161,10 +188,13 @@ PairedStatistic paired(const std::vector<double>& y, const std::vector<double>& 
     out.problem = "no pairs of valid runs";
     return out;
   }
-  std::size_t wins = 0;
-  for (std::size_t i = 0; i < y.size(); ++i) wins += a[i] < b[i];
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    out.a_lower += a[i] < b[i];
+    out.b_lower += b[i] < a[i];
+  }
   out.value = back(mean(y));
-  out.win_rate = static_cast<double>(wins) / static_cast<double>(y.size());
+  out.win_rate = static_cast<double>(out.a_lower) / static_cast<double>(y.size());
+  out.sign_test_p = sign_test_p(out.a_lower, out.a_lower + out.b_lower);
   out.problem = too_few(y.size(), "pair", "pairs");
   if (!out.problem.empty()) return out;
   const Interval l = bca(y, level, resamples, seed, Scale::linear);

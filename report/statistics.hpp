@@ -85,10 +85,23 @@ struct PairedStatistic {
   double value = NAN;
   std::optional<Interval> ci;
   double win_rate = NAN;
+  std::size_t a_lower = 0, b_lower = 0;  // pairs with a_i < b_i, with b_i < a_i (ties in neither)
+  double sign_test_p = NAN;              // sign_test_p(a_lower, a_lower + b_lower)
   std::string problem;
   std::vector<std::size_t> involved;
   bool computed() const { return std::isfinite(value); }
 };
+// The exact two-sided sign test: the probability, were a and b equally
+// likely to be the lower in each pair, of a split at least as uneven as
+// `lower` of `n` (ties left out). 1 when n is 0. It needs no assumption on
+// the values' distribution, only independent pairs.
+double sign_test_p(std::size_t lower, std::size_t n);
+
+// Holm's step-down correction for a family of tests with p-values `p`: which
+// are rejected with the family-wise error kept at `alpha` (the smallest p at
+// alpha / m, the next at alpha / (m - 1), ..., stopping at the first kept).
+std::vector<bool> holm_rejects(const std::vector<double>& p, double alpha);
+
 PairedStatistic paired_ratio(const std::vector<double>& a, const std::vector<double>& b,
                              double level, int resamples, std::uint64_t seed);
 PairedStatistic paired_difference(const std::vector<double>& a, const std::vector<double>& b,

@@ -8,7 +8,8 @@
 //
 // Paths are dotted; "*" stands for any one key or list index (a contact
 // body's name, a metric's name). Units are SI symbols ("m", "J", "N", "s",
-// "A", "W", "kg", "Hz", "rad", "m/s"); "1" is a pure number (a count, an
+// "A", "W", "kg", "Hz", "rad", "m/s"; the gains' "V/rad", "V s/rad", "V/(rad s)",
+// "kg m^2"); "1" is a pure number (a count, an
 // index, a ratio or a share); "state" is the integrated state's own units
 // (rad, rad/s, A, J: an absolute tolerance); "metric" is the unit of the
 // metric named after "metrics." (engine/recording/metrics.hpp); "" is not a
@@ -79,6 +80,19 @@
   X(control_loop_angle_noise, "control_loop.angle_noise", "rad")                     \
   X(control_loop_velocity_cutoff, "control_loop.velocity_cutoff", "Hz")              \
   X(control_loop_noise_seed, "control_loop.noise_seed", "1")                         \
+  X(controller_gains, "controller_gains", "")                                        \
+  X(controller_gains_kp, "controller_gains.kp", "")                                  \
+  X(controller_gains_kp_joint, "controller_gains.kp.*", "V/rad")                     \
+  X(controller_gains_kd, "controller_gains.kd", "")                                  \
+  X(controller_gains_kd_joint, "controller_gains.kd.*", "V s/rad")                   \
+  X(controller_gains_ki, "controller_gains.ki", "")                                  \
+  X(controller_gains_ki_joint, "controller_gains.ki.*", "V/(rad s)")                 \
+  X(controller_gains_rule, "controller_gains.rule", "")                              \
+  X(controller_gains_rule_bandwidth, "controller_gains.rule.bandwidth", "Hz")        \
+  X(controller_gains_rule_damping, "controller_gains.rule.damping", "1")             \
+  X(controller_gains_rule_integral, "controller_gains.rule.integral", "1")           \
+  X(controller_gains_inertia, "controller_gains.inertia", "")                        \
+  X(controller_gains_inertia_joint, "controller_gains.inertia.*", "kg m^2")          \
   X(contact, "contact", "")                                                          \
   X(contact_enabled, "contact.enabled", "")                                          \
   X(contact_collision_worlds_built, "contact.collision_worlds_built", "1")           \

@@ -664,7 +664,7 @@ TEST_CASE("cli: summary.json names its program and gives every number its unit")
     REQUIRE(r.exit_code == 0);
   }
   const nlohmann::ordered_json expected = binary_provenance().json;
-  const std::set<std::string> units{"1", "state", "s", "m", "m/s", "kg", "J", "N", "A", "W", "Hz", "rad"};
+  const std::set<std::string> units{"1", "state", "s", "m", "m/s", "kg", "J", "N", "A", "W", "Hz", "rad", "V/rad", "V s/rad", "V/(rad s)", "kg m^2"};
   std::set<std::string> seen_keys;
   int files = 0;
   for (const auto& entry : fs::recursive_directory_iterator(dir)) {

@@ -402,7 +402,7 @@ TEST_CASE(
 TEST_CASE("summary_keys: each key once, with a unit of the fixed set; name and pointer") {
   namespace key = elbowsim::summary_key;
   const std::set<std::string> units{"",   "1", "state", "metric", "s", "m",  "m/s",
-                                    "kg", "J", "N",     "A",      "W", "Hz", "rad"};
+                                    "kg", "J", "N",     "A",      "W", "Hz", "rad", "V/rad", "V s/rad", "V/(rad s)", "kg m^2"};
   std::set<std::string> paths;
   for (const elbowsim::SummaryKey& k : key::kAll) {
     CAPTURE(k.path);

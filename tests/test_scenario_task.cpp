@@ -357,6 +357,47 @@ controller: {type: pd, sample_rate: 100, sensors: {encoder: {counts_per_rev: 10,
               "x.yaml:13:", "controller.sensors.noise", "must be >= 0");
 }
 
+// ---------------------------------------------------------------------------
+// controller.tuning and ki (engine/control/tuning.hpp)
+
+TEST_CASE("controller: a tuning rule and hand-given integral gains") {
+  const Scenario tuned = load(scene_with(
+      "task: {path: hold}\ncontroller: {type: pd, sample_rate: 1000, tuning: {bandwidth: 10, "
+      "damping: 0.7, integral: 0.5}}\n"));
+  const elbowsim::TuningRule& rule = tuned.experiment.controller.tuning;
+  CHECK(rule.given());
+  CHECK(rule.bandwidth == 10);
+  CHECK(rule.damping == 0.7);
+  CHECK(rule.integral == 0.5);
+  const Scenario defaults =
+      load(scene_with("task: {path: hold}\ncontroller: {type: pd, tuning: {bandwidth: 5}}\n"));
+  CHECK(defaults.experiment.controller.tuning.damping == 1.0);  // critically damped, PD
+  CHECK(defaults.experiment.controller.tuning.integral == 0.0);
+  CHECK_FALSE(defaults.experiment.controller.integral());
+  const Scenario given = load(scene_with(
+      "task: {path: hold}\ncontroller: {type: pd, sample_rate: 1000, ki: [3, 4]}\n"));
+  CHECK_FALSE(given.experiment.controller.tuning.given());
+  CHECK(given.experiment.controller.integral());
+  CHECK(given.experiment.controller.ki == Eigen::Vector2d(3, 4));
+}
+
+TEST_CASE("controller error: tuning and ki") {
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, kp: 5, tuning: {bandwidth: 10}}\n"),
+              "x.yaml:13:", "controller.tuning", "give the rule or the gains (controller.kp)");
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, tuning: {damping: 1}}\n"),
+              "x.yaml:13:", "controller.tuning.bandwidth", "required key is missing");
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, tuning: {bandwidth: 10, zeta: 1}}\n"),
+              "x.yaml:13:", "controller.tuning.zeta", "unknown key");
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, tuning: {bandwidth: 10, integral: 0.5}}\n"),
+              "x.yaml:13:", "controller.tuning.integral", "needs controller.sample_rate");
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, ki: 2}\n"), "x.yaml:13:",
+              "controller.ki", "needs controller.sample_rate");
+  CHECK_ERROR(scene_with("controller: {tuning: {bandwidth: 10}}\n"), "x.yaml:12:",
+              "controller.tuning", "an open-loop scene has no gains to tune");
+  CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, tuning: {bandwidth: 0}}\n"),
+              "x.yaml:13:", "controller.tuning.bandwidth", "must be > 0");
+}
+
 TEST_CASE("controller.model: a table believed where the initial pose would be inside it loads (the plant's is checked)") {
   // The arm lies along z = 0 at q = 0 with no elbow sphere radius given:
   // a table believed with its top at z = 0.01 would hold the elbow 1 cm deep.
@@ -402,7 +443,8 @@ TEST_CASE("the experiment's plan has continuous joint accelerations (q̈ changes
   const std::string file = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_experiment.yaml";
   for (const char* variant : {"elbow_on", "elbow_off"}) {
     CAPTURE(variant);
-    const Scenario s = elbowsim::load_scenario_variant(file, variant);
+    // The plan is sampled on the step; the bound and the measured jumps are per 1 ms.
+    const Scenario s = elbowsim::load_scenario_variant(file, variant, {"simulation.step=1e-3"});
     const auto plan = elbowsim::make_plan(s.model, s.experiment);
     REQUIRE(plan->qdd.size() > 100);
     REQUIRE(plan->dt == doctest::Approx(1e-3));

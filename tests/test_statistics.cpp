@@ -326,3 +326,37 @@ TEST_CASE("paired difference: any signs; identical variants give [0, 0]; a shift
   CHECK(bad.involved == std::vector<std::size_t>{1});
   CHECK(paired_difference({}, {}, 0.95, 100, 1).problem == "no pairs of valid runs");
 }
+
+TEST_CASE("sign test: exact binomial tails, two-sided; Holm's step-down correction") {
+  // 0 of 10: 2 x 2^-10. 2 of 30: 2 (1 + 30 + 435) / 2^30. 5 of 10: 1 (capped).
+  CHECK(sign_test_p(0, 10) == doctest::Approx(2.0 / 1024).epsilon(1e-12));
+  CHECK(sign_test_p(10, 10) == doctest::Approx(2.0 / 1024).epsilon(1e-12));
+  CHECK(sign_test_p(2, 30) == doctest::Approx(2.0 * 466 / std::ldexp(1.0, 30)).epsilon(1e-12));
+  CHECK(sign_test_p(5, 10) == 1.0);
+  CHECK(sign_test_p(0, 0) == 1.0);
+  // 3 of 10: 2 (1 + 10 + 45 + 120) / 1024 = 0.34375.
+  CHECK(sign_test_p(3, 10) == doctest::Approx(0.34375).epsilon(1e-12));
+  // Large n stays finite: 0 of 2000 underflows to 0, 1000 of 2000 is 1.
+  CHECK(sign_test_p(0, 2000) == 0.0);
+  CHECK(sign_test_p(1000, 2000) == 1.0);
+  // Holm at 0.05 over 4: sorted 0.005 <= 0.0125, 0.01 <= 0.0167, 0.03 > 0.025: stop.
+  CHECK(holm_rejects({0.01, 0.04, 0.03, 0.005}, 0.05) == std::vector<bool>{true, false, false, true});
+  // Bonferroni would keep 0.02 (> 0.05 / 2); Holm's second step rejects it (<= 0.05 / 1).
+  CHECK(holm_rejects({0.001, 0.04}, 0.05) == std::vector<bool>{true, true});
+  CHECK(holm_rejects({0.2, 0.001}, 0.05) == std::vector<bool>{false, true});
+  CHECK(holm_rejects({}, 0.05).empty());
+}
+
+TEST_CASE("paired statistics count the draws each side wins, and their sign test") {
+  const std::vector<double> a{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+  std::vector<double> b = a;
+  for (std::size_t i = 0; i < b.size(); ++i) b[i] += i < 12 ? 1.0 : -0.5;  // a lower in 12 of 16
+  const PairedStatistic r = paired_difference(a, b, 0.95, 2000, 1);
+  CHECK(r.a_lower == 12);
+  CHECK(r.b_lower == 4);
+  CHECK(r.sign_test_p == doctest::Approx(sign_test_p(12, 16)));
+  b[0] = a[0];  // a tie counts for neither side
+  const PairedStatistic t = paired_difference(a, b, 0.95, 2000, 1);
+  CHECK(t.a_lower == 11);
+  CHECK(t.b_lower == 4);
+}

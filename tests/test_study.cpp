@@ -7,9 +7,11 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 
 #include "app/study/cases.hpp"
+#include "app/study/draws.hpp"
 #include "support/process.hpp"
 #include "support/scratch.hpp"
 #include "test_scenario_helpers.hpp"
@@ -181,7 +183,7 @@ TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same by
   CHECK(doc["cases"][2]["case"] == "high-short");
   CHECK(doc["cases"][2]["levels"]["pose"] == "high");
   CHECK(doc["axes"][1]["levels"][0] == "short");
-  // Every case counted once per metric in the tally.
+  // Every case counted once per metric in the tally (alone; "corrected" below).
   for (const char* metric : {"energy_drawn", "energy_in", "hand_error_rms"}) {
     std::size_t counted = 0;
     for (const auto& [outcome, cases] : doc["tally"][0][metric].items()) counted += cases.size();
@@ -202,16 +204,56 @@ TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same by
   CHECK(contains(html, "href=\"high-long/report.html\""));
   CHECK(fs::file_size(dir / "one" / "plots" / "ratios.png") > 1000);
 
-  // Each draw has its own sensor noise: seed 5 + draw.
+  // Each draw has its own sensor noise: seed 5 + draw, mixed with the case's name.
+  using elbowsim::study::case_seed;
   const std::string samples = elbowsim::testing::slurp(dir / "one" / "low-long" / "samples.csv");
   CHECK(contains(samples, "draw,variant,valid,sensor_seed,"));
-  CHECK(contains(samples, "\n0,light,true,5,"));
-  CHECK(contains(samples, "\n5,heavy,true,10,"));
-  // study.csv: per compared quantity its statistic, outcome and reason.
+  CHECK(contains(samples, "\n0,light,true," + std::to_string(case_seed(5, "low-long")) + ","));
+  CHECK(contains(samples, "\n5,heavy,true," + std::to_string(case_seed(10, "low-long")) + ","));
+  // Each case draws plants of its own: draw 0's link masses differ between two
+  // cases (they were the same plant in every case before), and each case's
+  // folder records its seed.
+  const auto draw_row = [&](const char* c) {
+    const std::string text = elbowsim::testing::slurp(dir / "one" / c / "samples.csv");
+    const std::size_t at = text.find("\n0,light,");
+    return text.substr(at + 1, text.find('\n', at + 1) - at - 1);
+  };
+  const auto masses = [](const std::string& row) {  // the two drawn masses after draw,variant,valid,seed
+    std::vector<std::string> fields;
+    std::stringstream in(row);
+    for (std::string f; std::getline(in, f, ',');) fields.push_back(f);
+    return std::vector<std::string>(fields.begin() + 4, fields.begin() + 6);
+  };
+  CAPTURE(draw_row("low-short"));
+  CAPTURE(draw_row("low-long"));
+  CHECK(masses(draw_row("low-short")) != masses(draw_row("low-long")));
+  CHECK(masses(draw_row("high-long")) != masses(draw_row("low-long")));
+  const auto case_doc =
+      nlohmann::json::parse(elbowsim::testing::slurp(dir / "one" / "high-long" / "montecarlo.json"));
+  CHECK(case_doc["seed"] == 3);
+  CHECK(case_doc["case_seed"] == case_seed(3, "high-long"));
+  CHECK(case_seed(3, "") == 3);  // a scenario without a study draws from its seed
+  // The verdict over the cases: Holm's correction of each case's sign test,
+  // and the draws that favour each side (15 draws in each of the 4 cases).
+  const auto& holm = doc["tally"][0]["corrected"]["energy_drawn"];
+  CHECK(holm["tests"] == 4);
+  CHECK(holm["lower"].size() + holm["higher"].size() + holm["not significant"].size() == 4);
+  CHECK(holm["lower"].size() == 4);  // 15 of 15 draws each: p = 2^-14 per case
+  const auto& draws = holm["draws"];
+  CHECK(draws["a_lower"].get<int>() + draws["b_lower"].get<int>() == 60);
+  CHECK(contains(doc["verdict"][0].get<std::string>(),
+                 "with Holm's correction over the 4 cases with a verdict (exact sign test on each "
+                 "case's draws, family-wise error 5 %): lower in 4, higher in 0, not significant in "
+                 "0; light lower in 60 of 60 draws, heavy lower in 0"));
+  CHECK(doc["cases"][0]["pairs"][0]["energy_drawn"]["holm"] == "lower");
+  CHECK(doc["cases"][0]["pairs"][0]["energy_drawn"]["sign_test_p"].get<double>() ==
+        doctest::Approx(std::ldexp(1.0, -14)));
+  // study.csv: per compared quantity its statistic, outcome (alone and corrected) and reason.
   const std::string csv = elbowsim::testing::slurp(dir / "one" / "study.csv");
   CHECK(contains(csv,
                  "energy_drawn ratio a/b,energy_drawn ratio low,energy_drawn ratio high,"
-                 "energy_drawn a lower share,energy_drawn outcome,energy_drawn reason,"));
+                 "energy_drawn a lower share,energy_drawn outcome,energy_drawn outcome (Holm),"
+                 "energy_drawn sign test p,energy_drawn reason,"));
   CHECK(contains(
       csv,
       "energy_in difference a-b [J],energy_in difference low [J],energy_in difference high [J],"));

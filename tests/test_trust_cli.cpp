@@ -25,6 +25,10 @@ nlohmann::json summary_of(const fs::path& folder) {
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+// The experiment's controller before issue 34: the same gains for both arms, a 1 ms step.
+const std::string kSharedGains =
+    "--set controller.tuning=null --set simulation.step=1e-3 --set output.every=10";
+
 }  // namespace
 
 TEST_CASE("cli: the PD experiment's held-up arm rests its last link: reported, warned, headlined") {
@@ -32,7 +36,9 @@ TEST_CASE("cli: the PD experiment's held-up arm rests its last link: reported, w
   // the run; nothing in the scenario declares it. Before contact.bodies the run said only
   // "no elbow rested".
   const fs::path dir = elbowsim::testing::scratch("cli", "pd_bodies");
-  const auto out = run_elbowsim("run " + kExperiment + " --set controller.type=pd --no-render " +
+  // The gains both arms once shared (Kp 50, Kd 2, no integral) at 1 ms: tuned, PID holds the arm up.
+  const auto out = run_elbowsim("run " + kExperiment + " --set controller.type=pd " + kSharedGains +
+                                " --no-render " +
                                 "--no-check-step --out " + dir.string() +
                                 " --expect 'elbow_off.contact.bodies.link3.rest_fraction > 0.5'");
   INFO(out.output);
@@ -186,8 +192,8 @@ TEST_CASE("cli: a Monte Carlo study names the draws in which a link rested on th
   // held-up arm's for almost the whole run).
   const fs::path dir = elbowsim::testing::scratch("cli", "mc_bodies");
   const auto out = run_elbowsim("montecarlo " + kExperiment +
-                                " --case task=loops,speed=nominal,elbow=mid --set controller.type=pd"
-                                " --samples 3 --no-report --out " + dir.string());
+                                " --case task=loops,speed=nominal,elbow=mid --set controller.type=pd " +
+                                kSharedGains + " --samples 3 --no-report --out " + dir.string());
   INFO(out.output);
   REQUIRE(out.exit_code == 0);
   CHECK(has(out.output, "elbow_off: in 3 of 3 draws a part the scene does not plan to rest lay on the table"));

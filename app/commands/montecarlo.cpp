@@ -3,8 +3,9 @@
 // paired comparison) while the controller keeps the nominal model; then
 // samples.csv, montecarlo.json and a report with the verdict. With a study:
 // section, the same for every case (one level of each axis) in its own
-// folder, and study.csv, study.json and a report over the cases. The same
-// seed gives the same bytes, whatever --jobs.
+// folder, each case with plants drawn of its own (study::case_seed), and
+// study.csv, study.json and a report over the cases. The same seed gives the
+// same bytes, whatever --jobs.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -115,8 +116,16 @@ Sample run_one(const Scenario& scenario, const std::shared_ptr<const Model>& bel
   return s;
 }
 
+// The seed of draw `d`'s sensor noise: sensors.seed + d, and for a study
+// case mixed with the case's name as its plants are (study::case_seed).
+std::uint64_t sensor_seed(const Scenario& nominal, const std::string& case_name, long d) {
+  const std::uint64_t seed =
+      nominal.experiment.controller.loop.sensors.seed + static_cast<std::uint64_t>(d);
+  return study::case_seed(seed, case_name);
+}
+
 // Draw `d` of variant `v`: its drawn plant under the nominal controller. The
-// sensors' noise differs from draw to draw too (seed sensors.seed + d).
+// sensors' noise differs from draw to draw too (sensor_seed).
 Sample run_draw(const MonteCarloArguments& args, const study::StudyCase& c, const Variant& v,
                 const study::Draw& d) {
   Scenario drawn;
@@ -127,7 +136,7 @@ Sample run_draw(const MonteCarloArguments& args, const study::StudyCase& c, cons
     s.failure = std::string("the drawn values are not a valid scenario: ") + e.what();
     return s;
   }
-  drawn.experiment.controller.loop.sensors.seed += static_cast<std::uint64_t>(d.index);
+  drawn.experiment.controller.loop.sensors.seed = sensor_seed(v.nominal, c.name, d.index);
   return run_one(drawn, v.believed);
 }
 
@@ -234,8 +243,8 @@ Json pair_json(const std::vector<Variant>& variants, std::size_t ia, std::size_t
   return study::paired_verdict(pair, seed);
 }
 
-void write_samples_csv(const std::filesystem::path& path, const std::vector<Variant>& variants,
-                       const std::vector<study::Draw>& draws,
+void write_samples_csv(const std::filesystem::path& path, const std::string& case_name,
+                       const std::vector<Variant>& variants, const std::vector<study::Draw>& draws,
                        const std::vector<std::vector<Sample>>& samples) {
   write_atomically(path, [&](std::ostream& out) {
     out << "draw,variant,valid,sensor_seed";
@@ -247,10 +256,8 @@ void write_samples_csv(const std::filesystem::path& path, const std::vector<Vari
     for (std::size_t d = 0; d < draws.size(); ++d)
       for (std::size_t v = 0; v < variants.size(); ++v) {
         const Sample& s = samples[d][v];
-        const std::uint64_t sensor_seed = variants[v].nominal.experiment.controller.loop.sensors.seed +
-                                          static_cast<std::uint64_t>(draws[d].index);
         out << draws[d].index << "," << variants[v].name << "," << (s.valid ? "true" : "false")
-            << "," << sensor_seed;
+            << "," << sensor_seed(variants[v].nominal, case_name, draws[d].index);
         const auto& params = variants[v].nominal.uncertainty.parameters;
         for (std::size_t j = 0; j < params.size(); ++j)
           out << "," << round_trip(study::drawn_value(params[j], draws[d].u[j]));
@@ -370,7 +377,7 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
   const auto& samples = runs.draws;
   // The samples first: whatever the statistics make of them, they are kept.
   std::filesystem::create_directories(plan.folder);
-  write_samples_csv(plan.folder / "samples.csv", variants, draws, samples);
+  write_samples_csv(plan.folder / "samples.csv", plan.study_case.name, variants, draws, samples);
 
   Json doc;
   doc["provenance"] = report::provenance_json();
@@ -382,6 +389,7 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
       doc["levels"][base.study[a].name] = plan.study_case.levels[a];
   }
   doc["seed"] = seed;
+  doc["case_seed"] = study::case_seed(seed, plan.study_case.name);  // of this case's draws
   doc["samples"] = args.samples;
   doc["confidence_level"] = study::kConfidenceLevel;
   doc["bootstrap_resamples"] = study::kBootstrapResamples;
@@ -466,9 +474,14 @@ int montecarlo_command(const MonteCarloArguments& args) {
     return usage_error(e.what());
   }
   const std::uint64_t seed = args.seed.value_or(base.uncertainty.seed);
-  std::vector<study::Draw> draws;
-  for (long i = 0; i < args.samples; ++i)
-    draws.push_back(study::draw_parameters(base.uncertainty, seed, i));
+  // Each case draws its own plants (study::case_seed).
+  const auto draws_of = [&](const CasePlan& plan) {
+    const std::uint64_t s = study::case_seed(seed, plan.study_case.name);
+    std::vector<study::Draw> draws;
+    for (long i = 0; i < args.samples; ++i)
+      draws.push_back(study::draw_parameters(base.uncertainty, s, i));
+    return draws;
+  };
 
   std::vector<Json> docs;
   try {
@@ -476,7 +489,7 @@ int montecarlo_command(const MonteCarloArguments& args) {
     install_interrupt_handlers();
     for (std::size_t k = 0; k < plans.size(); ++k) {
       const auto started = std::chrono::steady_clock::now();
-      Json doc = run_case(args, base, plans[k], draws, seed);
+      Json doc = run_case(args, base, plans[k], draws_of(plans[k]), seed);
       if (interrupt_exit_code()) {
         // A case whose files were begun is whole (the signal came while they were written).
         const std::size_t complete = k + (doc.is_null() ? 0 : 1);

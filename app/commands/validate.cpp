@@ -168,16 +168,40 @@ void print_elbows(const Scenario& s, const std::string& label) {
 // (the start state, the active set of resting elbows and its forces: a
 // Painleve configuration or no contact solution stops a run there). Empty
 // when all pass, else why the run would stop before it starts.
-std::string start_of_run(const Scenario& s) {
+std::string start_of_run(const Scenario& s, std::shared_ptr<const Controller>& controller) {
   try {
     Data data(s.model);
-    data.controller = make_controller(s.model, s.experiment);
+    data.controller = controller = make_controller(s.model, s.experiment);
     reset(s.model, data);
     if (data.failure) return describe(s.model, data.failure);
   } catch (const PlanError& e) {
     return std::string("the hand task cannot be followed: ") + e.what();
   }
   return "";
+}
+
+// "(50, 50, 2.5)"
+std::string vector_text(const Eigen::VectorXd& v) {
+  std::string out = "(";
+  for (int j = 0; j < v.size(); ++j) out += (j ? ", " : "") + significant(v[j], 4);
+  return out + ")";
+}
+
+// The gains a tracking controller will run with, as given or as its tuning
+// rule placed them (engine/control/tuning.hpp), and the rule's warnings.
+void print_gains(const std::string& label, const Controller& c) {
+  const ControllerSpec& spec = c.spec;
+  if (spec.kind == ControllerSpec::Kind::open_loop) return;
+  std::cout << "gains      " << label;
+  if (spec.tuning.given())
+    std::cout << "tuned at " << significant(spec.tuning.bandwidth) << " Hz, damping "
+              << significant(spec.tuning.damping) << ", integral pole "
+              << significant(spec.tuning.integral) << " x bandwidth, on I "
+              << vector_text(c.tuning_inertia) << " kg m^2: ";
+  std::cout << "Kp " << vector_text(spec.kp) << " V/rad, Kd " << vector_text(spec.kd) << " V s/rad";
+  if (spec.integral()) std::cout << ", Ki " << vector_text(spec.ki) << " V/(rad s)";
+  std::cout << (spec.tuning.given() ? "\n" : " (as given)\n");
+  for (const std::string& w : c.warnings) std::cout << "note       " << label << w << '\n';
 }
 
 // One line per run the scenario makes (each variant): its start passed, or the
@@ -189,8 +213,10 @@ bool check_starts(const std::string& file, const Scenario& s, const std::vector<
     runs.emplace_back(variant + ": ", load_scenario_variant(file, variant, sets));
   bool ok = true;
   for (const auto& [label, run] : runs) {
-    const std::string why = start_of_run(run);
+    std::shared_ptr<const Controller> controller;
+    const std::string why = start_of_run(run, controller);
     if (why.empty()) {
+      if (controller) print_gains(label, *controller);
       std::cout << "start      " << label << "planned and reset at t = 0 as the run does: passes\n";
       continue;
     }

@@ -171,6 +171,29 @@ static nlohmann::ordered_json control_loop_json(const DigitalLoopSpec& loop) {
   return j;
 }
 
+static std::vector<double> listed_values(const Eigen::VectorXd& v) {
+  return std::vector<double>(v.data(), v.data() + v.size());
+}
+
+// The gains a tracking controller ran with, per joint, and the rule that
+// placed them with the inertias it used (engine/control/tuning.hpp).
+static nlohmann::ordered_json gains_json(const ControllerSpec& spec, const ControllerGains& g) {
+  nlohmann::ordered_json j;
+  j[key::controller_gains_kp.name()] = listed_values(g.kp);
+  j[key::controller_gains_kd.name()] = listed_values(g.kd);
+  j[key::controller_gains_ki.name()] = listed_values(g.ki);
+  if (!spec.tuning.given()) {
+    j[key::controller_gains_rule.name()] = "given";
+    return j;
+  }
+  j[key::controller_gains_rule.name()] = {
+      {key::controller_gains_rule_bandwidth.name(), spec.tuning.bandwidth},
+      {key::controller_gains_rule_damping.name(), spec.tuning.damping},
+      {key::controller_gains_rule_integral.name(), spec.tuning.integral}};
+  j[key::controller_gains_inertia.name()] = listed_values(g.inertia);
+  return j;
+}
+
 nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& result) {
   const Model& m = scenario.model;
   const double e_in = result.energy_final.electrical_in;
@@ -212,6 +235,8 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
   // Where the controller's model differs from the plant ([] when it knows it exactly).
   j[key::controller_model.name()] = scenario.controller_model_overrides;
   j[key::control_loop.name()] = control_loop_json(scenario.experiment.controller.loop);
+  if (scenario.experiment.controller.kind != ControllerSpec::Kind::open_loop)
+    j[key::controller_gains.name()] = gains_json(scenario.experiment.controller, result.gains);
   j[key::contact.name()] = contact_json(scenario, result);
   j[key::warnings.name()] = result.warnings;
   if (!result.saturation.empty())  // per motor, warnings.hpp
@@ -232,6 +257,9 @@ nlohmann::ordered_json summary_shape(const Scenario& scenario, bool step_check) 
   placeholder.trajectory.values.assign(2 * columns, 0.0);
   placeholder.trajectory.values[columns] = model.options.duration;  // row 1's time
   // A link without a solid has no finite distance: it is no contact body.
+  const Eigen::VectorXd zeros = Eigen::VectorXd::Zero(model.dof);
+  placeholder.gains = {zeros, zeros, zeros,
+                       scenario.experiment.controller.tuning.given() ? zeros : Eigen::VectorXd()};
   const TrajectoryLayout& layout = placeholder.trajectory.layout;
   if (layout.has_contact())
     for (int j = 0; j < model.dof; ++j)

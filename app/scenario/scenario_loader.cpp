@@ -11,6 +11,7 @@
 #include "app/scenario/scenario.hpp"
 #include "app/scenario/sections.hpp"
 #include "app/scenario/start_checks.hpp"
+#include "engine/control/plan.hpp"
 #include "engine/run/integrator_choice.hpp"
 
 namespace elbowsim {
@@ -84,7 +85,19 @@ void finalize_model(Model& model, const Source& source) {
 // max_step are checked against the choice.
 void choose_auto_integrator(const Value& simulation, Scenario& s) {
   if (!auto_integrator(simulation)) return;
-  const IntegratorChoice choice = choose_integrator(s.model, &s.experiment.controller);
+  // Continuous feedback enters the step's stability: with a tuning rule, its
+  // gains at the task's first pose (on the plant: the controller's model is
+  // read later and differs from it by a belief's small offsets). A task that
+  // cannot start keeps the given gains here; the run names its plan error.
+  ControllerSpec controller = s.experiment.controller;
+  if (controller.tuning.given() && !controller.loop.sampled()) try {
+      const TunedGains gains =
+          tune_gains(s.model, start_pose(s.model, s.experiment), controller.tuning);
+      controller.kp = gains.kp;
+      controller.kd = gains.kd;
+    } catch (const PlanError&) {
+    }
+  const IntegratorChoice choice = choose_integrator(s.model, &controller);
   s.model.options.integrator = choice.kind;
   s.model.options.integrator_reason = choice.reason;
   check_error_control(simulation, s.model.options);

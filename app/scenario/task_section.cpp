@@ -137,6 +137,17 @@ Eigen::VectorXd read_gains(const Value& v, double fallback, int dof) {
   return out;
 }
 
+// controller.tuning: {bandwidth: Hz, damping: zeta, integral: alpha}
+// (engine/control/tuning.hpp).
+TuningRule read_tuning(const Value& tuning) {
+  TuningRule out;
+  tuning.allow_keys({"bandwidth", "damping", "integral"});
+  out.bandwidth = positive(tuning.require("bandwidth"));
+  out.damping = value_or(tuning.get("damping"), out.damping, positive);
+  out.integral = value_or(tuning.get("integral"), out.integral, non_negative);
+  return out;
+}
+
 }  // namespace
 
 HandTask read_task(const Value& task, const Model& model) {
@@ -182,8 +193,8 @@ ControllerSpec read_controller(const Value& controller, const Model& model, cons
   out.kp = Eigen::VectorXd::Constant(dof, kDefaultKp);
   out.kd = Eigen::VectorXd::Constant(dof, kDefaultKd);
   if (!controller.present()) return out;
-  controller.allow_keys({"type", "kp", "kd", "desired_force", "model", "sample_rate", "delay",
-                         "pwm_bits", "sensors"});
+  controller.allow_keys({"type", "kp", "kd", "ki", "tuning", "desired_force", "model",
+                         "sample_rate", "delay", "pwm_bits", "sensors"});
   const Value type = controller.get("type");
   if (type.present())
     out.kind = choose(type, std::vector<std::pair<Kind, std::string_view>>{
@@ -193,13 +204,31 @@ ControllerSpec read_controller(const Value& controller, const Model& model, cons
                                 {Kind::force, "force"}});
   out.kp = read_gains(controller.get("kp"), kDefaultKp, dof);
   out.kd = read_gains(controller.get("kd"), kDefaultKd, dof);
+  out.ki = read_gains(controller.get("ki"), 0.0, dof);
+  const Value tuning = controller.get("tuning");
+  if (tuning.present()) {
+    for (const char* key : {"kp", "kd", "ki"})
+      if (controller.get(key).present())
+        tuning.fail(std::string("places kp, kd and ki by its rule: give the rule or the gains "
+                                "(controller.") + key + "), not both");
+    out.tuning = read_tuning(tuning);
+  }
   out.desired_force = value_or(controller.get("desired_force"), out.desired_force, positive);
   out.loop = read_digital_loop(controller, model.options.step);
   if (out.kind == Kind::open_loop) {
+    if (tuning.present())
+      tuning.fail("an open-loop scene has no gains to tune (give controller.type pd, "
+                  "pd_feedforward or force)");
     if (out.loop.sampled())
       controller.get("sample_rate").fail("an open-loop scene has no control loop to sample (give "
                                          "controller.type pd, pd_feedforward or force)");
     return out;
+  }
+  // Integral action is the sampled loop's state: continuous control has none.
+  const bool integral = out.integral() || out.tuning.integral > 0;
+  if (integral && !out.loop.sampled()) {
+    const Value where = out.integral() ? controller.get("ki") : tuning.get("integral");
+    where.fail("integral action runs in the digital loop: needs controller.sample_rate");
   }
   // A closed-loop controller tracks the task through the motors.
   const std::string kind = type.text();

@@ -41,6 +41,16 @@ Draw draw_parameters(const Uncertainty& uncertainty, std::uint64_t seed, long in
   return d;
 }
 
+std::uint64_t case_seed(std::uint64_t seed, const std::string& case_name) {
+  if (case_name.empty()) return seed;
+  std::uint64_t h = 14695981039346656037ULL;  // FNV-1a of the name
+  for (unsigned char ch : case_name) h = (h ^ ch) * 1099511628211ULL;
+  std::uint64_t z = seed ^ h;  // then SplitMix64's finaliser: every bit of both moves the result
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
 double drawn_value(const UncertainParameter& p, double u) {
   return p.law == UncertainParameter::Law::range ? u : p.nominal * (1 + u);
 }

@@ -59,6 +59,11 @@ Json statistic_json(const ComparedQuantity& q, const report::PairedStatistic& r)
   if (r.computed()) j[q.ratio ? "ratio" : "difference"] = r.value;
   if (r.ci) j["ci95"] = {r.ci->low, r.ci->high};
   if (std::isfinite(r.win_rate)) j["win_rate"] = r.win_rate;
+  if (std::isfinite(r.sign_test_p)) {  // the exact sign test on the draws (report/statistics.hpp)
+    j["a_lower_draws"] = r.a_lower;
+    j["b_lower_draws"] = r.b_lower;
+    j["sign_test_p"] = r.sign_test_p;
+  }
   j["outcome"] = "no verdict";
   return j;
 }

@@ -8,6 +8,7 @@
 #include "app/study/draws.hpp"
 #include "app/study/paired_verdict.hpp"
 #include "engine/recording/number_text.hpp"
+#include "report/statistics.hpp"
 #include "report/provenance.hpp"
 
 namespace elbowsim::study {
@@ -42,9 +43,56 @@ Json tally(const Json& cases) {
   return out;
 }
 
+// The family-wise error of the study's corrected verdict, over its cases.
+constexpr double kFamilyError = 0.05;
+constexpr const char* kCorrected[] = {"lower", "higher", "not significant"};
+
+// Holm's correction over the cases, per pair "a/b" and metric: each case's
+// exact sign test on its draws (paired_verdict's sign_test_p) is one test of
+// the family; a case without a verdict (too many invalid runs, below the
+// accuracy floor) is none. Writes "holm" into each case's pair metric and,
+// per pair and metric, "corrected": the cases by corrected outcome and the
+// draws of the tested cases that favour each side.
+void correct_over_cases(Json& rows, Json& tallies) {
+  for (Json& t : tallies)
+    for (const ComparedQuantity& q : kCompared) {
+      const char* m = q.metric;
+      std::vector<Json*> tested;
+      std::vector<std::string> names;  // the case of each test
+      std::vector<double> p;
+      std::size_t a_lower = 0, b_lower = 0;
+      for (Json& c : rows)
+        for (Json& pair : c["pairs"]) {
+          if (pair.value("a", "") != t.value("a", "") || pair.value("b", "") != t.value("b", ""))
+            continue;
+          if (!pair.contains(m) || !pair[m].contains("sign_test_p")) continue;
+          if (pair[m].value("outcome", "no verdict") == "no verdict") continue;
+          a_lower += pair[m].value("a_lower_draws", std::size_t{0});
+          b_lower += pair[m].value("b_lower_draws", std::size_t{0});
+          tested.push_back(&pair[m]);
+          names.push_back(c.value("case", ""));
+          p.push_back(pair[m]["sign_test_p"].get<double>());
+        }
+      const std::vector<bool> rejected = report::holm_rejects(p, kFamilyError);
+      Json by_outcome;
+      for (const char* o : kCorrected) by_outcome[o] = Json::array();
+      for (std::size_t k = 0; k < tested.size(); ++k) {
+        Json& x = *tested[k];
+        const bool a_side = x.value("a_lower_draws", 0L) > x.value("b_lower_draws", 0L);
+        x["holm"] = rejected[k] ? (a_side ? "lower" : "higher") : "not significant";
+        by_outcome[x["holm"].get<std::string>()].push_back(names[k]);
+      }
+      Json& c = t["corrected"][m];
+      c = {{"tests", tested.size()}, {"family_error", kFamilyError}};
+      for (const char* o : kCorrected) c[o] = by_outcome[o];
+      c["draws"] = {{"a_lower", a_lower}, {"b_lower", b_lower}};
+    }
+}
+
 std::string count_sentence(const Json& t, const char* metric, std::string what, std::size_t n) {
   if (!what.empty()) what[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(what[0])));
-  std::string s = what + ", " + t.value("a", "") + " against " + t.value("b", "") + ":";
+  const std::string a = t.value("a", ""), b = t.value("b", "");
+  std::string s = what + ", " + a + " against " + b + ":";
   bool first = true;
   for (const char* o : kOutcomes) {
     const std::size_t k = t[metric][o].size();
@@ -53,6 +101,22 @@ std::string count_sentence(const Json& t, const char* metric, std::string what, 
          " cases";
     first = false;
   }
+  // Each case's interval at 95 % alone: over many cases some fall by chance.
+  // The corrected count keeps the chance of any false "lower" or "higher" at 5 %.
+  const Json& h = t["corrected"][metric];
+  const std::size_t tests = h.value("tests", std::size_t{0});
+  if (tests > 1) {
+    s += " (each case's 95 % interval alone); with Holm's correction over the " +
+         std::to_string(tests) + " cases with a verdict (exact sign test on each case's draws, " +
+         "family-wise error 5 %): lower in " + std::to_string(h["lower"].size()) + ", higher in " +
+         std::to_string(h["higher"].size()) + ", not significant in " +
+         std::to_string(h["not significant"].size());
+  }
+  const Json& d = h["draws"];
+  const std::size_t al = d.value("a_lower", std::size_t{0}), bl = d.value("b_lower", std::size_t{0});
+  if (al + bl > 0)
+    s += "; " + a + " lower in " + std::to_string(al) + " of " + std::to_string(al + bl) +
+         " draws, " + b + " lower in " + std::to_string(bl);
   return s;
 }
 
@@ -121,8 +185,10 @@ Json study_document(const Scenario& base, const std::string& file, const std::ve
     c["pairs"] = pairs;
     rows.push_back(c);
   }
+  Json tallies = tally(rows);
+  correct_over_cases(rows, tallies);
   doc["cases"] = rows;
-  doc["tally"] = tally(rows);
+  doc["tally"] = tallies;
   Json verdict = Json::array();
   for (const Json& t : doc["tally"])
     for (const ComparedQuantity& q : kCompared)
@@ -143,7 +209,8 @@ void write_study_csv(const std::filesystem::path& path, const Json& study) {
       else
         out << "," << m << " difference a-b" << unit << "," << m << " difference low" << unit << ","
             << m << " difference high" << unit;
-      out << "," << m << " a lower share," << m << " outcome," << m << " reason," << m << " mean a"
+      out << "," << m << " a lower share," << m << " outcome," << m << " outcome (Holm)," << m
+          << " sign test p," << m << " reason," << m << " mean a"
           << unit << "," << m << " mean b" << unit;
     }
     out << ",hand_error_rms floor a [m],hand_error_rms floor b [m]\n";
@@ -164,7 +231,8 @@ void write_study_csv(const std::filesystem::path& path, const Json& study) {
           out << "," << number(r.value(q.ratio ? "ratio" : "difference", Json())) << ","
               << (ci.size() == 2 ? number(ci[0]) : "") << ","
               << (ci.size() == 2 ? number(ci[1]) : "") << "," << number(r.value("win_rate", Json()))
-              << "," << r.value("outcome", "no verdict") << ","
+              << "," << r.value("outcome", "no verdict") << "," << r.value("holm", "")
+              << "," << number(r.value("sign_test_p", Json())) << ","
               << csv_text(r.value("reason", "") + draw_list(r.value("draws", Json::array())));
           for (const std::string& v : {a, b}) {
             const Json mv = c.value("metrics", Json::object()).value(v, Json::object()).value(m, Json::object());

@@ -21,7 +21,7 @@ double input_at(const Model& model, int joint, double t) {
   return profiles.empty() ? 0.0 : profiles[static_cast<std::size_t>(joint)].at(t);
 }
 
-// PD on the joint errors along the plan, in volts, plus the plan's
+// PD (PID in a sampled loop) on the joint errors along the plan, in volts, plus the plan's
 // feed-forward voltage for pd_feedforward and force control.
 void track(const Controller& controller, Data& data, double t, ConstVec q, ConstVec qd) {
   const ControllerSpec& c = controller.spec;
@@ -29,6 +29,9 @@ void track(const Controller& controller, Data& data, double t, ConstVec q, Const
   plan.at(plan.q, t, data.q_desired);
   plan.at(plan.qd, t, data.qd_desired);
   data.voltage = c.kp.cwiseProduct(data.q_desired - q) + c.kd.cwiseProduct(data.qd_desired - qd);
+  // The integral is the sampled loop's state (sample() in digital_loop.cpp updates it).
+  if (c.integral() && data.loop.integral.size() == q.size())
+    data.voltage += c.ki.cwiseProduct(data.loop.integral);
   if (c.kind == ControllerSpec::Kind::pd) return;
   plan.at(plan.v_ff, t, data.v_feedforward);
   data.voltage += data.v_feedforward;

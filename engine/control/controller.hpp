@@ -7,8 +7,11 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "engine/control/digital_loop.hpp"
+#include "engine/control/tuning.hpp"
 #include "engine/data.hpp"
 
 namespace elbowsim {
@@ -16,7 +19,7 @@ namespace elbowsim {
 struct ControllerSpec {
   enum class Kind {
     open_loop,      // the scene's input profiles (no plan needed)
-    pd,             // v = Kp (q_d - q) + Kd (qd_d - qd)
+    pd,             // v = Kp (q_d - q) + Kd (qd_d - qd) [+ Ki int(q_d - q), sampled loops]
     pd_feedforward, // + v_ff: inverse dynamics of the plan through the motor model,
                     //   with the table carrying the support force that minimises |tau|
     force,          // + v_ff with the elbow force commanded: tau = M qdd_d + B - Jc^T f_d
@@ -24,8 +27,16 @@ struct ControllerSpec {
   Kind kind = Kind::open_loop;
   Eigen::VectorXd kp;             // [V/rad] per joint
   Eigen::VectorXd kd;             // [V s/rad] per joint
+  // [V/(rad s)] per joint, or empty: integral action, in a sampled loop only
+  // (the integral is the loop's state, digital_loop.hpp); 0 or empty: none.
+  Eigen::VectorXd ki;
+  // When given, make_controller places kp, kd and ki by this rule on the
+  // controller's model at the task's first pose (tuning.hpp).
+  TuningRule tuning;
   double desired_force = 5.0;     // [N] per resting elbow (force control)
   DigitalLoopSpec loop;           // sampling, sensors, amplifier (digital_loop.hpp); default: continuous
+
+  bool integral() const { return ki.size() > 0 && (ki.array() != 0).any(); }
 };
 
 const char* to_string(ControllerSpec::Kind k);
@@ -40,6 +51,10 @@ struct Controller {
   // Where the plant starts (q): the task's first pose on the plant's own
   // model; empty: the plan's first pose (the controller knows the plant).
   Eigen::VectorXd plant_start;
+  // With spec.tuning: the joint inertias I_j the rule placed the gains on
+  // [kg m^2], and what the run should know about them (a Kd clamped at 0).
+  Eigen::VectorXd tuning_inertia;
+  std::vector<std::string> warnings;
 };
 
 // The command at time t for the state (q [n], qd [n]): with a motor, the

@@ -30,6 +30,21 @@ void quantise_voltage(const Model& model, int bits, Eigen::Ref<Eigen::VectorXd> 
   }
 }
 
+// Integral action's state after the command v computed at this sample:
+// each joint adds T e, unless its command is already at the voltage limit
+// and e would push it further (conditional integration: the integral does
+// not wind up while the motor cannot follow). So the command at sample k
+// uses the errors of samples 0 .. k-1.
+void integrate_error(const Model& model, Data& data, double T) {
+  DigitalLoopState& s = data.loop;
+  for (int j = 0; j < s.integral.size(); ++j) {
+    const double e = data.q_desired[j] - s.q_measured[j];
+    const bool saturated = std::abs(data.voltage[j]) >= model.voltage_limit[j];
+    if (saturated && e * data.voltage[j] > 0) continue;
+    s.integral[j] += T * e;
+  }
+}
+
 // One sample at data.t: measure, estimate the velocity, run the control law,
 // and pass the command through the delay line to the amplifier.
 void sample(const Model& model, Data& data, const DigitalLoopSpec& spec, bool first) {
@@ -47,6 +62,7 @@ void sample(const Model& model, Data& data, const DigitalLoopSpec& spec, bool fi
   }
   control_law(model, data, data.t, s.q_measured, s.velocity);
   quantise_voltage(model, spec.pwm_bits, data.voltage);
+  integrate_error(model, data, spec.sample_period);
   if (first) s.pending.assign(static_cast<std::size_t>(spec.delay), data.voltage);
   if (s.pending.empty()) {
     s.held = data.voltage;
@@ -88,12 +104,15 @@ void start_digital_loop(const Model& model, Data& data) {
   const DigitalLoopSpec* spec = sampled_loop(data);
   data.loop.next_sample = 0;
   data.loop.pending.clear();
+  data.loop.integral.resize(0);
   if (!spec) return;
   data.loop.noise.seed(spec->sensors.seed);
   data.loop.q_measured.setZero(model.dof);
   data.loop.q_previous.setZero(model.dof);
   data.loop.velocity.setZero(model.dof);
   data.loop.held.setZero(model.dof);
+  // Integral action keeps a state; a PD loop keeps none (an empty vector).
+  if (data.controller->spec.integral()) data.loop.integral.setZero(model.dof);
   data.loop.oldest = 0;
   sample(model, data, *spec, true);
 }

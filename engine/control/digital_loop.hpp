@@ -43,6 +43,7 @@ struct DigitalLoopState {
   Eigen::VectorXd q_previous;         // [n] the ones before [rad]
   Eigen::VectorXd velocity;           // [n] the velocity estimate [rad/s]
   Eigen::VectorXd held;               // [n] the voltage the amplifier holds [V]
+  Eigen::VectorXd integral;           // [n] sum of T (q_d - q_measured) over past samples [rad s]
   std::vector<Eigen::VectorXd> pending;  // [delay] computed, not yet applied (a ring)
   std::size_t oldest = 0;             // the ring's oldest entry (the next to apply)
   std::mt19937_64 noise;

@@ -287,6 +287,15 @@ std::shared_ptr<const Controller> make_controller(const Model& plant,
   auto controller = std::make_shared<Controller>();
   controller->spec = experiment.controller;
   controller->plan = make_plan(experiment.believed(plant), experiment);
+  const TuningRule& rule = experiment.controller.tuning;
+  if (rule.given()) {  // on what the controller believes, at the plan's first pose
+    TunedGains gains = tune_gains(experiment.believed(plant), controller->plan->q.front(), rule);
+    controller->spec.kp = std::move(gains.kp);
+    controller->spec.kd = std::move(gains.kd);
+    controller->spec.ki = std::move(gains.ki);
+    controller->tuning_inertia = std::move(gains.inertia);
+    controller->warnings = std::move(gains.warnings);
+  }
   if (experiment.controller_model) controller->plant_start = start_pose(plant, experiment);
   return controller;
 }

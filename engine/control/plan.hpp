@@ -57,8 +57,9 @@ std::shared_ptr<const Plan> make_plan(const Model& model, const Experiment& expe
 // above the table is lifted), as the plan's first sample. Throws PlanError.
 Eigen::VectorXd start_pose(const Model& model, const Experiment& experiment);
 
-// The controller a run on `plant` uses: the experiment's gains and, when it
-// needs one, its plan, made from what the controller believes
+// The controller a run on `plant` uses: the experiment's gains (or, with
+// controller.tuning, the gains its rule places at the plan's first pose on
+// the believed model: tuning.hpp) and, when it needs one, its plan, made from what the controller believes
 // (experiment.believed(plant); throws PlanError). Null for an open-loop
 // scene. The plant starts at the task's first pose solved on its own model
 // (Controller::plant_start), not the plan's: a controller that believes the

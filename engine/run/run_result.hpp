@@ -18,6 +18,13 @@ struct ContactStats {
   long dependent_steps = 0;     // steps whose active rows were dependent
 };
 
+// The gains a tracking controller ran with (all empty in open loop): as
+// given, or as controller.tuning placed them (control/tuning.hpp).
+struct ControllerGains {
+  Eigen::VectorXd kp, kd, ki;  // [V/rad], [V s/rad], [V/(rad s)] per joint
+  Eigen::VectorXd inertia;     // [kg m^2] the tuning rule's I_j; empty without a rule
+};
+
 struct RunResult {
   Recording trajectory;
   bool completed = false;       // reached the end (false: stopped early, see failure)
@@ -30,6 +37,7 @@ struct RunResult {
   Data::IntegratorWork work;    // evaluations, rejected steps, Jacobians, factorisations
   double final_time = 0;        // [s]
   double wall_seconds = 0;      // [s]
+  ControllerGains gains;
   double plan_cpu_seconds = 0;  // [s] CPU time of the controller's plan (inverse kinematics), before the run
   EnergyTerms energy_initial, energy_final;
   double balance_residual = 0;      // [J] at the end

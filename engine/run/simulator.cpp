@@ -116,6 +116,7 @@ void add_warnings(const Model& model, const Data& data, RunResult& result) {
   append(result.warnings, hand_error_warnings(model, result.trajectory));
   append(result.warnings, model_warnings(model, controller_spec(data)));
   if (plan) append(result.warnings, plan->warnings);
+  if (data.controller) append(result.warnings, data.controller->warnings);
 }
 
 // What the warnings report that may explain the run's failure, in the order a
@@ -174,6 +175,12 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
   const double plan_start = thread_cpu_seconds();
   data.controller = make_controller(model, experiment);  // may throw PlanError
   result.plan_cpu_seconds = thread_cpu_seconds() - plan_start;
+  if (const Controller* c = data.controller.get(); c && c->spec.kind != ControllerSpec::Kind::open_loop) {
+    const ControllerSpec& spec = c->spec;
+    result.gains = {spec.kp, spec.kd,
+                    spec.ki.size() ? spec.ki : Eigen::VectorXd::Zero(model.dof),
+                    c->tuning_inertia};
+  }
   reset(model, data);
   collect_log(model, data, result);
   record_sample(model, data, result.trajectory);
