@@ -147,6 +147,18 @@ def ratio_table(path, study, metric, what, ranges):
             + "; ".join(f"{k} {v}" for k, v in ranges.items()) + "."])
 
 
+def corrected(study, metric):
+    """The study's Holm-corrected count and the draws each side wins (study.json's tally)."""
+    for t in study.get("tally", []):
+        if t.get("a") == ON and t.get("b") == OFF:
+            c = t["corrected"][metric]
+            d = c["draws"]
+            return (f"lower in {len(c['lower'])}, higher in {len(c['higher'])}, not significant in "
+                    f"{len(c['not significant'])} of {c['tests']}; resting more accurate in "
+                    f"{d['a_lower']} of {d['a_lower'] + d['b_lower']} draws")
+    sys.exit("tables.py: study.json has no corrected tally for elbow_on/elbow_off")
+
+
 def study_ranges(study):
     """The numbers the prose quotes, from the 45 cases."""
     _, by = cases_by_level(study)
@@ -176,8 +188,9 @@ def study_ranges(study):
                                                   win(hold, "hand_error_rms")], str)
         + f" of {samples} draws, mean {span(mean(hold, OFF), mm)} mm off against "
         f"{span(mean(hold, ON), mm)} mm on",
-        "largest accuracy floor": f"{1e6 * max(floors):.2f} µm",
-        "smallest median RMS hand error": f"{1e3 * min(medians):.2f} mm",
+        "largest accuracy floor": f"{sig(1e6 * max(floors))} µm",
+        "smallest median RMS hand error": f"{sig(1e6 * min(medians))} µm",
+        "after Holm's correction (sign tests over the cases)": corrected(study, "hand_error_rms"),
         "invalid runs": str(sum(c["invalid_runs"] for c in by.values())),
     }
     return energy, hand

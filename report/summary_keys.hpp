@@ -87,6 +87,8 @@
   X(controller_gains_kd_joint, "controller_gains.kd.*", "V s/rad")                   \
   X(controller_gains_ki, "controller_gains.ki", "")                                  \
   X(controller_gains_ki_joint, "controller_gains.ki.*", "V/(rad s)")                 \
+  X(controller_gains_integral_held, "controller_gains.integral_held", "")            \
+  X(controller_gains_integral_held_joint, "controller_gains.integral_held.*", "1")    \
   X(controller_gains_rule, "controller_gains.rule", "")                              \
   X(controller_gains_rule_bandwidth, "controller_gains.rule.bandwidth", "Hz")        \
   X(controller_gains_rule_damping, "controller_gains.rule.damping", "1")             \

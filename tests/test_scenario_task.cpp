@@ -381,6 +381,24 @@ TEST_CASE("controller: a tuning rule and hand-given integral gains") {
   CHECK(given.experiment.controller.ki == Eigen::Vector2d(3, 4));
 }
 
+TEST_CASE("the experiment's controllers: each arm tuned by the rule; no integral on the joints the resting elbow holds") {
+  const std::string file = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_experiment.yaml";
+  const Scenario on = elbowsim::load_scenario_variant(file, "elbow_on");
+  const Scenario off = elbowsim::load_scenario_variant(file, "elbow_off");
+  const auto resting = elbowsim::make_controller(on.model, on.experiment);
+  const auto held_up = elbowsim::make_controller(off.model, off.experiment);
+  CHECK(resting->integral_held == std::vector<int>{0, 1});
+  CHECK(resting->spec.ki[0] == 0);
+  CHECK(resting->spec.ki[1] == 0);
+  CHECK(resting->spec.ki[2] > 0);
+  CHECK(held_up->integral_held.empty());
+  CHECK((held_up->spec.ki.array() > 0).all());
+  // Each arm's gains from its own inertia: the held-up arm's shoulder is
+  // heavier at its start pose, so its Kp is larger.
+  CHECK(held_up->spec.kp[0] > resting->spec.kp[0]);
+  CHECK(resting->tuning_inertia.size() == 4);
+}
+
 TEST_CASE("controller error: tuning and ki") {
   CHECK_ERROR(scene_with("task: {path: hold}\ncontroller: {type: pd, kp: 5, tuning: {bandwidth: 10}}\n"),
               "x.yaml:13:", "controller.tuning", "give the rule or the gains (controller.kp)");

@@ -310,6 +310,8 @@ TEST_CASE("the shipped experiment runs at a short duration; its comparison has b
   for (const char* variant : {"elbow_on", "elbow_off"}) {
     const auto summary = nlohmann::json::parse(slurp(dir / variant / "summary.json"));
     CHECK(summary["completed"] == true);
+    CHECK(summary["valid"] == true);  // with the tuned PID's integral action
+    CHECK(summary["controller_gains"]["rule"]["integral"] == 0.5);
     // 1.5 s for the eight loops: the tuned 1 kHz loop's lag and noise give
     // 0.48 mm (on) and 0.51 mm (off) at most, no motor at its limit; a
     // saturated arm misses by millimetres.

@@ -201,6 +201,12 @@ void print_gains(const std::string& label, const Controller& c) {
   std::cout << "Kp " << vector_text(spec.kp) << " V/rad, Kd " << vector_text(spec.kd) << " V s/rad";
   if (spec.integral()) std::cout << ", Ki " << vector_text(spec.ki) << " V/(rad s)";
   std::cout << (spec.tuning.given() ? "\n" : " (as given)\n");
+  if (!c.integral_held.empty()) {
+    std::cout << "gains      " << label << "no integral on joint" << (c.integral_held.size() > 1 ? "s" : "");
+    for (std::size_t k = 0; k < c.integral_held.size(); ++k)
+      std::cout << (k ? ", " : " ") << c.integral_held[k];
+    std::cout << ": the resting elbows hold " << (c.integral_held.size() > 1 ? "them" : "it") << '\n';
+  }
   for (const std::string& w : c.warnings) std::cout << "note       " << label << w << '\n';
 }
 

@@ -182,6 +182,7 @@ static nlohmann::ordered_json gains_json(const ControllerSpec& spec, const Contr
   j[key::controller_gains_kp.name()] = listed_values(g.kp);
   j[key::controller_gains_kd.name()] = listed_values(g.kd);
   j[key::controller_gains_ki.name()] = listed_values(g.ki);
+  j[key::controller_gains_integral_held.name()] = g.integral_held;  // their ki set to 0
   if (!spec.tuning.given()) {
     j[key::controller_gains_rule.name()] = "given";
     return j;
@@ -259,7 +260,7 @@ nlohmann::ordered_json summary_shape(const Scenario& scenario, bool step_check) 
   // A link without a solid has no finite distance: it is no contact body.
   const Eigen::VectorXd zeros = Eigen::VectorXd::Zero(model.dof);
   placeholder.gains = {zeros, zeros, zeros,
-                       scenario.experiment.controller.tuning.given() ? zeros : Eigen::VectorXd()};
+                       scenario.experiment.controller.tuning.given() ? zeros : Eigen::VectorXd(), {}};
   const TrajectoryLayout& layout = placeholder.trajectory.layout;
   if (layout.has_contact())
     for (int j = 0; j < model.dof; ++j)

@@ -29,6 +29,7 @@ struct ControllerSpec {
   Eigen::VectorXd kd;             // [V s/rad] per joint
   // [V/(rad s)] per joint, or empty: integral action, in a sampled loop only
   // (the integral is the loop's state, digital_loop.hpp); 0 or empty: none.
+  // make_controller leaves none on joints the resting elbows hold.
   Eigen::VectorXd ki;
   // When given, make_controller places kp, kd and ki by this rule on the
   // controller's model at the task's first pose (tuning.hpp).
@@ -55,6 +56,9 @@ struct Controller {
   // [kg m^2], and what the run should know about them (a Kd clamped at 0).
   Eigen::VectorXd tuning_inertia;
   std::vector<std::string> warnings;
+  // Joints whose integral gain make_controller set to 0: the task's resting
+  // elbows hold them (task_freedom.hpp, joints_held_by_table).
+  std::vector<int> integral_held;
 };
 
 // The command at time t for the state (q [n], qd [n]): with a motor, the

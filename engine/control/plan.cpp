@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "engine/contact/lcp.hpp"
+#include "engine/control/task_freedom.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/dynamics/rnea.hpp"
 #include "engine/recording/number_text.hpp"
@@ -295,6 +296,19 @@ std::shared_ptr<const Controller> make_controller(const Model& plant,
     controller->spec.ki = std::move(gains.ki);
     controller->tuning_inertia = std::move(gains.inertia);
     controller->warnings = std::move(gains.warnings);
+  }
+  // An integral on a joint the table holds would push the elbow into the
+  // table for as long as plan and table disagree (a table believed 1 mm low:
+  // it winds up to the voltage limit, the motor stalled against the table).
+  // Integral action acts on the joints the resting elbows leave free.
+  if (controller->spec.integral()) {
+    const std::vector<bool> held = joints_held_by_table(experiment.believed(plant), experiment,
+                                                        controller->plan->q.front());
+    for (int j = 0; j < plant.dof; ++j)
+      if (held[std::size_t(j)] && controller->spec.ki[j] != 0) {
+        controller->spec.ki[j] = 0;
+        controller->integral_held.push_back(j);
+      }
   }
   if (experiment.controller_model) controller->plant_start = start_pose(plant, experiment);
   return controller;

@@ -21,9 +21,10 @@ struct Ranks {
   int elbows = 0, hand = 0, all = 0;
 };
 
-Ranks ranks_at(const Model& model, Data& data, const std::vector<int>& elbows, bool sticks,
-               const Eigen::VectorXd& q) {
-  forward_kinematics(model, data, q);
+// The kept elbows' rows at the pose forward_kinematics last left in data:
+// a point each (3 rows) when they stick, else the table's normal.
+Eigen::MatrixXd elbow_rows(const Model& model, Data& data, const std::vector<int>& elbows,
+                           bool sticks) {
   const int per_elbow = sticks ? 3 : 1;
   Eigen::MatrixXd rows(per_elbow * int(elbows.size()), model.dof);
   Matrix3Xd J(3, model.dof);
@@ -37,6 +38,14 @@ Ranks ranks_at(const Model& model, Data& data, const std::vector<int>& elbows, b
       rows.row(int(r)) = n.transpose() * J;
     }
   }
+  return rows;
+}
+
+Ranks ranks_at(const Model& model, Data& data, const std::vector<int>& elbows, bool sticks,
+               const Eigen::VectorXd& q) {
+  forward_kinematics(model, data, q);
+  const Eigen::MatrixXd rows = elbow_rows(model, data, elbows, sticks);
+  Matrix3Xd J(3, model.dof);
   point_jacobian(model, data, model.hand_link, model.hand_point, J);
   Eigen::MatrixXd all(rows.rows() + 3, model.dof);
   all << rows, Eigen::MatrixXd(J);
@@ -70,6 +79,31 @@ TaskFreedom task_freedom(const Model& model, const Experiment& experiment, const
   out.hand_rank = best.hand;
   out.hand_free = best.all - best.elbows;
   return out;
+}
+
+std::vector<bool> joints_held_by_table(const Model& model, const Experiment& experiment,
+                                       const Eigen::VectorXd& q) {
+  std::vector<bool> held(std::size_t(model.dof), false);
+  const HandTask& task = experiment.task;
+  if (!model.effects.contact || task.elbow_clearance != 0) return held;
+  std::vector<int> elbows;
+  for (const std::string& name : task.elbows)
+    for (int k = 0; k < int(model.elbows.size()); ++k)
+      if (model.elbows[std::size_t(k)].name == name) elbows.push_back(k);
+  if (elbows.empty()) return held;
+  Data data(model);
+  forward_kinematics(model, data, q);
+  const Eigen::MatrixXd rows =
+      elbow_rows(model, data, elbows, model.has_coulomb_friction());
+  // The motions that leave every row at rest: the rows' null space (the
+  // right singular vectors past the rank). A joint with no share in any of
+  // them cannot move while the elbows stay put.
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(rows, Eigen::ComputeFullV);
+  const int rank = numerical_rank(svd.singularValues());
+  const Eigen::MatrixXd free_motions = svd.matrixV().rightCols(model.dof - rank);
+  for (int j = 0; j < model.dof; ++j)
+    held[std::size_t(j)] = free_motions.cols() == 0 || free_motions.row(j).norm() < 1e-9;
+  return held;
 }
 
 }  // namespace elbowsim

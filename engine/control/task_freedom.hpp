@@ -36,4 +36,11 @@ struct TaskFreedom {
 // on the table, or held at its clearance above it) and the hand.
 TaskFreedom task_freedom(const Model& model, const Experiment& experiment, const Eigen::VectorXd& q);
 
+// Per joint, at joint angles q: whether the task's resting elbows (kept on
+// the table: clearance 0, contact on) hold it, i.e. it cannot move while
+// they stay where they are (sticking under Coulomb friction: at their point;
+// else on the table's plane). None when the task keeps no elbow on the table.
+std::vector<bool> joints_held_by_table(const Model& model, const Experiment& experiment,
+                                       const Eigen::VectorXd& q);
+
 }  // namespace elbowsim

@@ -23,6 +23,7 @@ struct ContactStats {
 struct ControllerGains {
   Eigen::VectorXd kp, kd, ki;  // [V/rad], [V s/rad], [V/(rad s)] per joint
   Eigen::VectorXd inertia;     // [kg m^2] the tuning rule's I_j; empty without a rule
+  std::vector<int> integral_held;  // joints left without integral: the resting elbows hold them
 };
 
 struct RunResult {

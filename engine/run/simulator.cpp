@@ -179,7 +179,7 @@ RunResult simulate(const Model& model, const Experiment& experiment, const RunOp
     const ControllerSpec& spec = c->spec;
     result.gains = {spec.kp, spec.kd,
                     spec.ki.size() ? spec.ki : Eigen::VectorXd::Zero(model.dof),
-                    c->tuning_inertia};
+                    c->tuning_inertia, c->integral_held};
   }
   reset(model, data);
   collect_log(model, data, result);

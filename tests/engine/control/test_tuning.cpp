@@ -15,6 +15,8 @@
 #include "engine/control/tuning.hpp"
 #include "engine/recording/number_text.hpp"
 #include "engine/run/step.hpp"
+#include "engine/control/task_freedom.hpp"
+#include "support/experiment_scenes.hpp"
 #include "support/models.hpp"
 
 using namespace elbowsim;
@@ -293,4 +295,29 @@ TEST_CASE("tuning: PID on a joint damped beyond the rule keeps the rule's pair; 
   CHECK(g.ki[0] > 0);
   CHECK(g.warnings[0].find("poles are " + significant(-w, 3) + ", " + significant(-w, 3) + ", " +
                            significant(-a, 3) + " rad/s") != std::string::npos);
+}
+
+TEST_CASE("joints held by the table: a sticking elbow on link 1 holds joints 0 and 1; sliding or held up, none") {
+  // The writing arm's elbow at the end of link 1: sticking (Coulomb
+  // friction) it fixes joints 0 and 1; on a frictionless table (one row,
+  // the table's normal) it fixes none; held 2 cm above, the table holds none.
+  // (make_controller's use of it: the shipped experiment, test_scenario_task.cpp.)
+  testing::WritingArm on;
+  testing::ExperimentScene scene = on.scene();
+  const Eigen::VectorXd q0 = start_pose(scene.model, scene.experiment);
+  Model sticking = scene.model;
+  sticking.effects.friction = true;
+  sticking.contact.friction.mu = 0.6;
+  finalize(sticking);
+  REQUIRE(sticking.has_coulomb_friction());
+  CHECK(joints_held_by_table(sticking, scene.experiment, q0) ==
+        std::vector<bool>{true, true, false, false});
+  Model sliding = scene.model;
+  sliding.effects.friction = false;
+  finalize(sliding);
+  CHECK(joints_held_by_table(sliding, scene.experiment, q0) == std::vector<bool>(4, false));
+  testing::WritingArm off;
+  off.elbow_on = false;
+  const testing::ExperimentScene up = off.scene();
+  CHECK(joints_held_by_table(sticking, up.experiment, q0) == std::vector<bool>(4, false));
 }
