@@ -42,8 +42,7 @@ CLAIM_ROWS = [
     ("higher", "table believed 1 mm higher"),
     ("force60", "force control pushing 60 N on the elbow (`controller.type=force`)"),
     ("force5", "force control pushing 5 N"),
-    ("pd", "PD without feed-forward (`controller.type=pd`): **not a test of the claim**, "
-           "the held-up arm's last link lies on the table (below)"),
+    ("pd", "the rule's gains without the feed-forward (`controller.type=pd`)"),
     ("jointfriction", "joint friction 0.1 N m Coulomb, 0.15 N m breakaway at every joint"),
     ("motors20", "the 20 W motors at every joint (3 times over their rating held out)"),
     ("continuous", "continuous control (no sampling, exact sensors; the rule without integral action)"),
