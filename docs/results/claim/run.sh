@@ -19,6 +19,9 @@ run() {
 run nothing
 run lower --set 'controller.model={"table.boxes[0].center": [0.65, 0, -0.1008938]}'
 run higher --set 'controller.model={"table.boxes[0].center": [0.65, 0, -0.0988938]}'
+run lower005 --set 'controller.model={"table.boxes[0].center": [0.65, 0, -0.0999438]}'
+run lower025 --set 'controller.model={"table.boxes[0].center": [0.65, 0, -0.1001438]}'
+run higher025 --set 'controller.model={"table.boxes[0].center": [0.65, 0, -0.0996438]}'
 run force60 --set controller.type=force --set controller.desired_force=60
 run force5 --set controller.type=force --set controller.desired_force=5
 run pd --set controller.type=pd
