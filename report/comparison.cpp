@@ -78,7 +78,12 @@ std::vector<std::string> smaller_is_better(const Comparison& table, const std::s
   for (std::size_t r = 0; r < row->values.size(); ++r) {
     if (r == best) continue;
     const double o = row->values[r].get<double>();
-    const std::string both = " (" + quantity(b, row->unit) + " vs " + quantity(o, row->unit) + ")";
+    // Enough digits to tell the two apart (10.0 J vs 10.003 J, not 10 J vs 10 J).
+    int digits = 3;
+    while (digits < 9 && b != o && quantity(b, row->unit, digits) == quantity(o, row->unit, digits))
+      ++digits;
+    const std::string both =
+        " (" + quantity(b, row->unit, digits) + " vs " + quantity(o, row->unit, digits) + ")";
     const std::string& lb = table.labels[best];
     const std::string& lo = table.labels[r];
     const double p = o != 0 ? 100 * (o - b) / std::abs(o) : 0;
@@ -90,8 +95,10 @@ std::vector<std::string> smaller_is_better(const Comparison& table, const std::s
       sentences.push_back(lb + ": " + quantity(o - b, row->unit) + " " + less + " " + what +
                           " than " + lo + both + ".");
     else
-      sentences.push_back(lb + ": " + percent(p / 100, PercentDigits::tenths) + " " + less + " " +
-                          what + " than " + lo + both + ".");
+      // Tenths from 0.05 %; below, two significant digits (never "0.0 % less").
+      sentences.push_back(lb + ": " +
+                          percent(p / 100, p >= 0.05 ? PercentDigits::tenths : PercentDigits::two) +
+                          " " + less + " " + what + " than " + lo + both + ".");
   }
   return sentences;
 }

@@ -142,6 +142,13 @@ TEST_CASE("verdict: computed from the numbers") {
           std::string::npos);
     const auto d = r::compare_runs({run_with("a", 10.0), run_with("b", 10.2)});
     CHECK(d.verdict[0] == "a: 2.0 % less net electrical energy than b (10 J vs 10.2 J).");
+    // Above a smaller floor (the step check's: twice 1e-6 J) but under 0.05 %:
+    // two significant digits, not "0.0 %".
+    auto e = run_with("a", 10.0), f = run_with("b", 10.003);
+    e.summary["step_check"]["metrics"]["energy_in"] = {{"value", 10.0}, {"at_half_step", 10.000001}};
+    f.summary["step_check"]["metrics"]["energy_in"] = {{"value", 10.003}, {"at_half_step", 10.003001}};
+    const auto tiny = r::compare_runs({e, f});
+    CHECK(tiny.verdict[0] == "a: 0.03 % less net electrical energy than b (10 J vs 10.003 J).");
   }
   SUBCASE(
       "motors that feed back more than they draw: drawn energy as a percentage, net as a "

@@ -39,7 +39,8 @@ void print_model(const Scenario& s) {
   std::cout << "simulation " << m.options.duration << " s, step " << m.options.step << " s, "
             << to_string(m.options.integrator) << ", " << to_string(m.options.dynamics) << '\n'
             << "output     " << s.output.folder << '\n';
-  for (const std::string& w : model_warnings(m, &s.experiment.controller))
+  const ControllerSpec gains = gains_before_run(m, s.experiment);  // a rule's, as the run has them
+  for (const std::string& w : model_warnings(m, &gains))
     std::cout << "note       " << w << '\n';
 }
 

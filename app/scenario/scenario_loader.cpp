@@ -89,14 +89,9 @@ void choose_auto_integrator(const Value& simulation, Scenario& s) {
   // gains at the task's first pose (on the plant: the controller's model is
   // read later and differs from it by a belief's small offsets). A task that
   // cannot start keeps the given gains here; the run names its plan error.
-  ControllerSpec controller = s.experiment.controller;
-  if (controller.tuning.given() && !controller.loop.sampled()) try {
-      const TunedGains gains =
-          tune_gains(s.model, start_pose(s.model, s.experiment), controller.tuning);
-      controller.kp = gains.kp;
-      controller.kd = gains.kd;
-    } catch (const PlanError&) {
-    }
+  const ControllerSpec controller = s.experiment.controller.loop.sampled()
+                                        ? s.experiment.controller
+                                        : gains_before_run(s.model, s.experiment);
   const IntegratorChoice choice = choose_integrator(s.model, &controller);
   s.model.options.integrator = choice.kind;
   s.model.options.integrator_reason = choice.reason;

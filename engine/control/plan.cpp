@@ -314,4 +314,17 @@ std::shared_ptr<const Controller> make_controller(const Model& plant,
   return controller;
 }
 
+ControllerSpec gains_before_run(const Model& model, const Experiment& experiment) {
+  ControllerSpec spec = experiment.controller;
+  if (!spec.tuning.given()) return spec;
+  try {
+    TunedGains gains = tune_gains(model, start_pose(model, experiment), spec.tuning);
+    spec.kp = std::move(gains.kp);
+    spec.kd = std::move(gains.kd);
+    spec.ki = std::move(gains.ki);
+  } catch (const PlanError&) {
+  }
+  return spec;
+}
+
 }  // namespace elbowsim

@@ -66,4 +66,10 @@ Eigen::VectorXd start_pose(const Model& model, const Experiment& experiment);
 // table lower would otherwise start the arm inside the real one.
 std::shared_ptr<const Controller> make_controller(const Model& plant, const Experiment& experiment);
 
+// The experiment's controller spec with its tuning rule's gains placed at
+// the task's first pose on `model`, for what is judged before a run (the
+// fixed step's stability under continuous control). Unchanged without a
+// rule, or when the task cannot start (the run then names its plan error).
+ControllerSpec gains_before_run(const Model& model, const Experiment& experiment);
+
 }  // namespace elbowsim

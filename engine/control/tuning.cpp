@@ -78,11 +78,16 @@ TunedGains tune_gains(const Model& model, ConstVec q0, const TuningRule& rule) {
     // (s^2 + 2 zeta w s + w^2)(s + a), expanded, with a = alpha w; alpha 0 leaves the PD rule.
     const double asked = (2 * zeta + alpha) * w * I;  // the s^2 coefficient x I: g Kd + c
     const bool overdamped = loop.damping > asked;
-    // A joint damped beyond the rule keeps the rule's pair (w, zeta) with Kd 0:
-    // PD by keeping Kp (a larger damping ratio), PID by moving the integral pole
-    // out to a = c / I - 2 zeta w, where the joint's own damping puts it.
+    // A joint damped beyond the rule gets Kd 0 and keeps the rule's speed:
+    // PID keeps the pair (w, zeta) and moves the integral pole out to
+    // a = c / I - 2 zeta w, where the joint's own damping puts it; PD keeps a
+    // pole at w and the other at c / I - w (below c / I = 2 w, where that
+    // would be the slower one, the pair keeps its natural frequency w, damped
+    // c / (2 I w) <= 1 instead).
     const double a = alpha > 0 && overdamped ? loop.damping / I - 2 * zeta * w : alpha * w;
     out.kp[j] = I * (w * w + 2 * zeta * w * a) / g;
+    if (alpha == 0 && overdamped && loop.damping / I > 2 * w)
+      out.kp[j] = I * w * (loop.damping / I - w) / g;
     out.ki[j] = I * a * w * w / g;
     out.kd[j] = overdamped ? 0.0 : (asked - loop.damping) / g;
     out.inertia[j] = I;

@@ -15,10 +15,12 @@
 //   PID: I s^3 + (g Kd + c) s^2 + g Kp s + g Ki
 //          = I (s^2 + 2 zeta w s + w^2)(s + alpha w)
 // A joint whose own damping c already exceeds what the rule asks
-// ((2 zeta + alpha) w I) gets Kd 0 and keeps the rule's natural frequency:
-// PD with Kp as above (damped more than asked), PID with the pair (w, zeta)
-// and the integral pole moved out to a = c / I - 2 zeta w (Kp and Ki from
-// (s^2 + 2 zeta w s + w^2)(s + a)); a warning names the poles it has.
+// ((2 zeta + alpha) w I) gets Kd 0 and keeps the rule's speed: PID with the
+// pair (w, zeta) and the integral pole moved out to a = c / I - 2 zeta w
+// (Kp and Ki from (s^2 + 2 zeta w s + w^2)(s + a)); PD with a pole at w and
+// the other at c / I - w (Kp = I w (c / I - w) / g; for c / I < 2 w, Kp as
+// above: natural frequency w, damped c / (2 I w)). A warning names the
+// poles it has.
 #pragma once
 
 #include <complex>

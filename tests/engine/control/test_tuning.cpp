@@ -264,6 +264,16 @@ TEST_CASE("tuning: a joint damped beyond the rule gets Kd 0 and a warning with i
     CHECK(p.imag() == 0);
   }
   CHECK(w.find(significant(poles[0].real(), 3)) != std::string::npos);
+  // Under PD the joint keeps a pole at the rule's w = 2 pi rad/s; its own
+  // damping puts the other at c / I - w.
+  const double wr = 2 * kPi;
+  int at_w = 0, at_rest = 0;
+  for (const auto& p : poles) {
+    at_w += std::abs(p.real() + wr) < 1e-9 * wr;
+    at_rest += std::abs(p.real() + (loop.damping / loop.inertia - wr)) < 1e-9 * wr;
+  }
+  CHECK(at_w == 1);
+  CHECK(at_rest == 1);
   // The rule's own pair, -2 pi rad/s twice, is named as what it is not.
   CHECK(w.find("not the rule's -6.28") != std::string::npos);
 }
