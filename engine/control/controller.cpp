@@ -29,8 +29,9 @@ void track(const Controller& controller, Data& data, double t, ConstVec q, Const
   plan.at(plan.q, t, data.q_desired);
   plan.at(plan.qd, t, data.qd_desired);
   data.voltage = c.kp.cwiseProduct(data.q_desired - q) + c.kd.cwiseProduct(data.qd_desired - qd);
-  // The integral is the sampled loop's state (sample() in digital_loop.cpp updates it).
-  if (c.integral() && data.loop.integral.size() == q.size())
+  // The integral is the sampled loop's state, sized only with integral action
+  // (start_digital_loop; sample() in digital_loop.cpp updates it).
+  if (data.loop.integral.size() == q.size())
     data.voltage += c.ki.cwiseProduct(data.loop.integral);
   if (c.kind == ControllerSpec::Kind::pd) return;
   plan.at(plan.v_ff, t, data.v_feedforward);

@@ -12,6 +12,16 @@ namespace elbowsim {
 
 namespace {
 
+// spec's kp, kd and ki placed by its tuning rule at q0 on `model`; returns
+// the rest of what the rule gave (the inertias, the warnings).
+TunedGains place_tuned_gains(const Model& model, ConstVec q0, ControllerSpec& spec) {
+  TunedGains gains = tune_gains(model, q0, spec.tuning);
+  spec.kp = std::move(gains.kp);
+  spec.kd = std::move(gains.kd);
+  spec.ki = std::move(gains.ki);
+  return gains;
+}
+
 // "(0.1, 0, 0.3) m at t = 0.5 s"
 std::string where(double t, const Eigen::Vector3d& p) {
   return '(' + listed({p.x(), p.y(), p.z()}) + ") m at t = " + significant(t) + " s";
@@ -288,14 +298,11 @@ std::shared_ptr<const Controller> make_controller(const Model& plant,
   auto controller = std::make_shared<Controller>();
   controller->spec = experiment.controller;
   controller->plan = make_plan(experiment.believed(plant), experiment);
-  const TuningRule& rule = experiment.controller.tuning;
-  if (rule.given()) {  // on what the controller believes, at the plan's first pose
-    TunedGains gains = tune_gains(experiment.believed(plant), controller->plan->q.front(), rule);
-    controller->spec.kp = std::move(gains.kp);
-    controller->spec.kd = std::move(gains.kd);
-    controller->spec.ki = std::move(gains.ki);
-    controller->tuning_inertia = std::move(gains.inertia);
-    controller->warnings = std::move(gains.warnings);
+  if (experiment.controller.tuning.given()) {  // on what the controller believes, at the plan's first pose
+    TunedGains rest =
+        place_tuned_gains(experiment.believed(plant), controller->plan->q.front(), controller->spec);
+    controller->tuning_inertia = std::move(rest.inertia);
+    controller->warnings = std::move(rest.warnings);
   }
   // An integral on a joint the table holds would push the elbow into the
   // table for as long as plan and table disagree (a table believed 1 mm low:
@@ -318,10 +325,7 @@ ControllerSpec gains_before_run(const Model& model, const Experiment& experiment
   ControllerSpec spec = experiment.controller;
   if (!spec.tuning.given()) return spec;
   try {
-    TunedGains gains = tune_gains(model, start_pose(model, experiment), spec.tuning);
-    spec.kp = std::move(gains.kp);
-    spec.kd = std::move(gains.kd);
-    spec.ki = std::move(gains.ki);
+    place_tuned_gains(model, start_pose(model, experiment), spec);
   } catch (const PlanError&) {
   }
   return spec;

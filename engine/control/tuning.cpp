@@ -75,31 +75,35 @@ TunedGains tune_gains(const Model& model, ConstVec q0, const TuningRule& rule) {
   for (int j = 0; j < n; ++j) {
     const JointLoop loop = joint_loop(model, data.mass_matrix, j);
     const double I = loop.inertia, g = loop.gain;
-    // (s^2 + 2 zeta w s + w^2)(s + a), expanded, with a = alpha w; alpha 0 leaves the PD rule.
+    // The rule: (s^2 + 2 zeta w s + w^2)(s + a), expanded, with a = alpha w;
+    // alpha 0 leaves the PD rule.
     const double asked = (2 * zeta + alpha) * w * I;  // the s^2 coefficient x I: g Kd + c
-    const bool overdamped = loop.damping > asked;
+    const double rule_kp = I * (w * w + 2 * zeta * w * (alpha * w)) / g;
+    const double rule_kd = (asked - loop.damping) / g;
+    const double rule_ki = I * (alpha * w) * w * w / g;
+    out.inertia[j] = I;
+    if (rule_kd >= 0) {
+      out.kp[j] = rule_kp, out.kd[j] = rule_kd, out.ki[j] = rule_ki;
+      continue;
+    }
     // A joint damped beyond the rule gets Kd 0 and keeps the rule's speed:
     // PID keeps the pair (w, zeta) and moves the integral pole out to
     // a = c / I - 2 zeta w, where the joint's own damping puts it; PD keeps a
     // pole at w and the other at c / I - w (below c / I = 2 w, where that
     // would be the slower one, the pair keeps its natural frequency w, damped
     // c / (2 I w) <= 1 instead).
-    const double a = alpha > 0 && overdamped ? loop.damping / I - 2 * zeta * w : alpha * w;
-    out.kp[j] = I * (w * w + 2 * zeta * w * a) / g;
-    if (alpha == 0 && overdamped && loop.damping / I > 2 * w)
-      out.kp[j] = I * w * (loop.damping / I - w) / g;
+    const double own = loop.damping / I;
+    const double a = alpha > 0 ? own - 2 * zeta * w : 0.0;
+    out.kd[j] = 0;
     out.ki[j] = I * a * w * w / g;
-    out.kd[j] = overdamped ? 0.0 : (asked - loop.damping) / g;
-    out.inertia[j] = I;
-    if (!overdamped) continue;
-    const double rule_kp = I * (1 + 2 * zeta * alpha) * w * w / g, rule_ki = I * alpha * w * w * w / g;
+    out.kp[j] = alpha == 0 && own > 2 * w ? I * w * (own - w) / g : I * (w * w + 2 * zeta * w * a) / g;
     out.warnings.push_back(
         "controller.tuning: joint " + std::to_string(j) + "'s own damping (back-EMF and friction, " +
         significant(loop.damping, 3) + " N m s/rad) exceeds what the rule asks at " +
         significant(rule.bandwidth, 3) + " Hz (" + significant(asked, 3) +
         " N m s/rad): its Kd is 0 and its closed-loop poles are " +
         poles_text(closed_loop_poles(loop, out.kp[j], 0, out.ki[j])) + ", not the rule's " +
-        poles_text(closed_loop_poles(loop, rule_kp, (asked - loop.damping) / g, rule_ki)));
+        poles_text(closed_loop_poles(loop, rule_kp, rule_kd, rule_ki)));
   }
   return out;
 }
