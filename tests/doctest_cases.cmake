@@ -25,6 +25,17 @@ if(NOT result EQUAL 0)
     "${output}${errors}")
 endif()
 
+# The cases of the doctest suite "long" (TEST_CASE(... * doctest::test_suite("long"))):
+# the numbers' long runs, labelled "long" too. .ci/sanitize leaves them out (ctest -LE
+# long); the Release suite runs them.
+execute_process(COMMAND "${EXECUTABLE}" --list-test-cases --test-suite=long
+  OUTPUT_VARIABLE long_output ERROR_VARIABLE errors RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "doctest_cases.cmake: ${EXECUTABLE} --list-test-cases --test-suite=long "
+    "failed (${result}):\n${long_output}${errors}")
+endif()
+set(long_cases "\n${long_output}")
+
 set(script "")
 set(seen "\n")  # every case name so far, lower case, one a line: doctest filters ignore case
 set(count 0)
@@ -58,9 +69,14 @@ while(NOT rest STREQUAL "")
   string(APPEND seen "${lower}\n")
   # doctest's filters split at commas; an escaped one is part of the name.
   string(REPLACE "," "\\," filter "${line}")
+  set(labels "\${case_label}")
+  string(FIND "${long_cases}" "\n${line}\n" found)
+  if(NOT found EQUAL -1)
+    set(labels "\${case_label};long")
+  endif()
   string(APPEND script
     "add_test([==[${name}]==] \"${EXECUTABLE}\" [==[--test-case=${filter}]==])\n"
-    "set_tests_properties([==[${name}]==] PROPERTIES LABELS \"\${case_label}\"\n"
+    "set_tests_properties([==[${name}]==] PROPERTIES LABELS \"${labels}\"\n"
     "  WORKING_DIRECTORY \"\${case_directory}\" ENVIRONMENT \"\${case_environment}\"\n"
     "  FAIL_REGULAR_EXPRESSION \"\${case_not_one}\")\n"
     "if(case_timeout)\n"

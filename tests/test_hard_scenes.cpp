@@ -43,7 +43,7 @@ RunResult run(const Scenario& s) {
 }  // namespace
 
 TEST_CASE(
-    "hard: stiff electrics (L/R = 1 us at 1 ms rows): ros34pw2 matches an explicit reference") {
+    "hard: stiff electrics (L/R = 1 us at 1 ms rows): ros34pw2 matches an explicit reference" * doctest::test_suite("long")) {
   const Scenario shipped = load_scenario(kHard + "stiff_electrics.yaml");
   const RunResult r = run(shipped);
   INFO(r.failure);
@@ -145,7 +145,7 @@ TEST_CASE("hard: a 6 m/s landing against its closed forms (time, speed, impulse,
 }
 
 TEST_CASE(
-    "hard: a million steps with a resting elbow — drift and energy account bounded, no growth") {
+    "hard: a million steps with a resting elbow — drift and energy account bounded, no growth" * doctest::test_suite("long")) {
   const Scenario s = load_scenario(kHard + "long_rest.yaml");
   const RunResult r = run(s);
   INFO(r.failure);
@@ -331,7 +331,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "hard: a 30-link chain on six elbows for 10 s: every joint's equation balances at every row") {
+    "hard: a 30-link chain on six elbows for 10 s: every joint's equation balances at every row" * doctest::test_suite("long")) {
   const Scenario s = load_scenario(kHard + "long_chain.yaml");
   const RunResult r = run(s);
   INFO(r.failure);

@@ -97,7 +97,7 @@ TEST_CASE("the experiment under PD control: elbow_off's sagging arm lands on the
   CHECK(summary["contact"]["max_abs_C"].get<double>() < 1e-6);
 }
 
-TEST_CASE("a run whose steps shrink to nothing stops as stalled (exit 3, in seconds), not a hang") {
+TEST_CASE("a run whose steps shrink to nothing stops as stalled (exit 3, in seconds), not a hang" * doctest::test_suite("long")) {
   // Without gravity and with continuous control the resting elbow grazes the
   // table: located landings and lift-offs cut the steps to ~1e-9 s at about
   // t = 1.5 s. Before the stall check the run went on for hours.

@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kDefaultRadius = 0.02;  // [m] drawing radius of a link without a solid
 
-std::string quoted(const std::string& name) { return "\"" + name + "\""; }
+std::string in_quotes(const std::string& name) { return "\"" + name + "\""; }
 
 // A rigid body: a moving link (or the base link) and every link fixed to it,
 // each with its pose in the body's frame; the moving joints that leave it.
@@ -32,7 +32,7 @@ struct Body {
 
 const Link& find_link(const Tree& tree, const std::string& name) {
   const auto it = tree.links.find(name);
-  if (it == tree.links.end()) throw UrdfError("no link named " + quoted(name));
+  if (it == tree.links.end()) throw UrdfError("no link named " + in_quotes(name));
   return it->second;
 }
 
@@ -62,7 +62,7 @@ Body body_of(const Tree& tree, const std::string& root) {
 void check_inertial(const Link& l) {
   const double m = l.inertial.mass;
   if (!(m > 0) || !std::isfinite(m))
-    throw UrdfError("link " + quoted(l.name) + ": <inertial><mass value=\"" + significant(m) +
+    throw UrdfError("link " + in_quotes(l.name) + ": <inertial><mass value=\"" + significant(m) +
                     "\"/> must be > 0");
 }
 
@@ -87,10 +87,10 @@ void add_inertia(const Body& body, elbowsim::Link& out) {
     if (m.link->has_inertial) check_inertial(*m.link), massive.push_back(&m);
   const std::string& name = body.members.front().link->name;
   if (massive.empty())
-    throw UrdfError("link " + quoted(name) +
+    throw UrdfError("link " + in_quotes(name) +
                     ": no <inertial> (a moving link needs its mass and inertia" +
                     (body.members.size() > 1 ? ", on it or on a link fixed to it)" : ")"));
-  std::string what = "link " + quoted(name);
+  std::string what = "link " + in_quotes(name);
   if (massive.size() == 1) {
     const Body::Member& m = *massive.front();
     const Eigen::Matrix3d R = m.pose.linear() * m.link->inertial.origin.linear();
@@ -98,7 +98,7 @@ void add_inertia(const Body& body, elbowsim::Link& out) {
     out.com = m.pose * m.link->inertial.origin.translation();
     out.inertia = R.isIdentity(0) ? m.link->inertial.inertia
                                   : Eigen::Matrix3d(R * m.link->inertial.inertia * R.transpose());
-    if (m.link != body.members.front().link) what = "link " + quoted(m.link->name);
+    if (m.link != body.members.front().link) what = "link " + in_quotes(m.link->name);
     return check_inertia(out.inertia, what);
   }
   out.mass = 0;
@@ -113,7 +113,7 @@ void add_inertia(const Body& body, elbowsim::Link& out) {
     const Inertial& in = m->link->inertial;
     const Eigen::Matrix3d R = m->pose.linear() * in.origin.linear();
     const Eigen::Vector3d d = m->pose * in.origin.translation() - out.com;
-    check_inertia(in.inertia, "link " + quoted(m->link->name));
+    check_inertia(in.inertia, "link " + in_quotes(m->link->name));
     // Parallel axes: each member's inertia turned into the body frame and moved to the com.
     out.inertia += R * in.inertia * R.transpose() +
                    in.mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
@@ -132,7 +132,7 @@ Eigen::Vector3d aligned_size(const Eigen::Matrix3d& R, const Eigen::Vector3d& si
     Eigen::Index row;
     const double largest = A.col(c).maxCoeff(&row);
     if (std::abs(largest - 1) > 1e-9)
-      throw UrdfError("link " + quoted(link) +
+      throw UrdfError("link " + in_quotes(link) +
                       ": <collision><box> is turned off the link frame's axes; elbowsim's "
                       "boxes lie along them (turn it by multiples of 90 degrees only)");
   }
@@ -142,7 +142,7 @@ Eigen::Vector3d aligned_size(const Eigen::Matrix3d& R, const Eigen::Vector3d& si
 LinkCollision solid(const Collision& c, const Eigen::Isometry3d& pose, const std::string& link) {
   const Eigen::Isometry3d T = pose * c.origin;
   LinkCollision out;
-  const std::string at = "link " + quoted(link) + ": <collision>";
+  const std::string at = "link " + in_quotes(link) + ": <collision>";
   switch (c.shape) {
     case Collision::Shape::sphere:
       if (!(c.radius > 0)) throw UrdfError(at + "<sphere radius> must be > 0");
@@ -186,8 +186,8 @@ void add_solid(const Body& body, elbowsim::Link& out) {
     }
   if (owners.size() > 1) {
     std::string list;
-    for (const std::string& o : owners) list += (list.empty() ? "" : ", ") + quoted(o);
-    throw UrdfError("link " + quoted(name) + " carries " + std::to_string(owners.size()) +
+    for (const std::string& o : owners) list += (list.empty() ? "" : ", ") + in_quotes(o);
+    throw UrdfError("link " + in_quotes(name) + " carries " + std::to_string(owners.size()) +
                     " <collision> solids (on links " + list +
                     "); elbowsim takes one solid per moving link and the links fixed to it");
   }
@@ -207,17 +207,17 @@ const Body::Exit* next_exit(const Body& body) {
   const Joint& a = *body.exits[0].joint;
   const Joint& b = *body.exits[1].joint;
   const std::string& root = body.members.front().link->name;
-  const std::string at = a.parent == b.parent ? "link " + quoted(a.parent)
-                                              : "the rigid body of link " + quoted(root);
-  throw UrdfError("the tree branches at " + at + ": joints " + quoted(a.name) + " (" +
-                  to_string(a.type) + ", to link " + quoted(a.child) + ") and " + quoted(b.name) +
-                  " (" + to_string(b.type) + ", to link " + quoted(b.child) +
+  const std::string at = a.parent == b.parent ? "link " + in_quotes(a.parent)
+                                              : "the rigid body of link " + in_quotes(root);
+  throw UrdfError("the tree branches at " + at + ": joints " + in_quotes(a.name) + " (" +
+                  to_string(a.type) + ", to link " + in_quotes(a.child) + ") and " + in_quotes(b.name) +
+                  " (" + to_string(b.type) + ", to link " + in_quotes(b.child) +
                   ") both move links below it; elbowsim simulates a serial chain (make the "
                   "branch's joints fixed, or remove the branch)");
 }
 
 void check_joint(const Joint& j) {
-  const std::string at = "joint " + quoted(j.name);
+  const std::string at = "joint " + in_quotes(j.name);
   if (j.type == Joint::Type::prismatic)
     throw UrdfError(at + " is prismatic: elbowsim's joints are revolute (type revolute or "
                          "continuous); make it fixed to import the arm");
@@ -286,13 +286,13 @@ void place_tip(const std::string& tip, Chain& chain) {
   chain.tip = tip.empty() ? chain.link_names.back() : tip;
   const auto at = chain.frames.find(chain.tip);
   if (at == chain.frames.end())
-    throw UrdfError("tip link " + quoted(chain.tip) + " is not on the chain below base link " +
-                    quoted(chain.base));
+    throw UrdfError("tip link " + in_quotes(chain.tip) + " is not on the chain below base link " +
+                    in_quotes(chain.base));
   if (at->second.link != last)
-    throw UrdfError("tip link " + quoted(chain.tip) + " is not the end of the chain: joint " +
-                    quoted(chain.joint_names[static_cast<std::size_t>(at->second.link + 1)]) +
+    throw UrdfError("tip link " + in_quotes(chain.tip) + " is not the end of the chain: joint " +
+                    in_quotes(chain.joint_names[static_cast<std::size_t>(at->second.link + 1)]) +
                     " moves link " +
-                    quoted(chain.link_names[static_cast<std::size_t>(at->second.link + 1)]) +
+                    in_quotes(chain.link_names[static_cast<std::size_t>(at->second.link + 1)]) +
                     " beyond it");
   chain.links.back().tip = at->second.to_link.translation();
 }
@@ -302,7 +302,7 @@ void place_tip(const std::string& tip, Chain& chain) {
 Chain build_chain(const Tree& tree, const std::string& base, const std::string& tip) {
   Chain chain;
   chain.base = base.empty() ? tree.root : base;
-  if (!tree.links.count(chain.base)) throw UrdfError("no link named " + quoted(chain.base));
+  if (!tree.links.count(chain.base)) throw UrdfError("no link named " + in_quotes(chain.base));
   Body body = body_of(tree, chain.base);
   add_frames(body, -1, chain);
   while (const Body::Exit* exit = next_exit(body)) {
@@ -312,7 +312,7 @@ Chain build_chain(const Tree& tree, const std::string& base, const std::string& 
     body = add_joint(tree, *exit, chain);
   }
   if (chain.joints.empty())
-    throw UrdfError("no revolute or continuous joint below base link " + quoted(chain.base));
+    throw UrdfError("no revolute or continuous joint below base link " + in_quotes(chain.base));
   add_joint_numbers(tree, chain);
   place_tip(tip, chain);
   return chain;

@@ -16,7 +16,7 @@ build=$root/build-fuzz
 cxx=${ELBOWSIM_FUZZ_CXX:-clang++}
 
 cmake -S "$root" -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DELBOWSIM_FUZZ=ON \
-  -DELBOWSIM_TESTS=OFF -DELBOWSIM_BENCH=OFF >/dev/null
+  -DELBOWSIM_TESTS=OFF -DELBOWSIM_BENCH=OFF -DELBOWSIM_PRECOMPILE=ON >/dev/null
 cmake --build "$build" -j2 --target fuzz_scenario_loader
 
 # A scratch folder for the seeds: libFuzzer reads every file of a corpus folder,

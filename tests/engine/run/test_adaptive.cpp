@@ -93,7 +93,7 @@ TEST_CASE("measured order with the error control off: dopri5 ~ 5, ros34pw2 ~ 3 (
   CHECK(std::abs(p_ros - 3.0) < 0.3);
 }
 
-TEST_CASE("stiff electrics, L/R = 1 us: ros34pw2 keeps order 3 at steps 1000x L/R; dopri5 agrees") {
+TEST_CASE("stiff electrics, L/R = 1 us: ros34pw2 keeps order 3 at steps 1000x L/R; dopri5 agrees" * doctest::test_suite("long")) {
   // Two independent references must agree first: dopri5 (explicit: its steps
   // stay near its stability limit, ~3 us) and ros34pw2, both at rtol 1e-11.
   const double duration = 0.256;
