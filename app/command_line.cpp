@@ -78,6 +78,16 @@ constexpr OptionSpec kMonteCarlo[] = {
     {"no-report", nullptr, "skip report.html"},
     kHelp};
 
+constexpr OptionSpec kSensitivity[] = {
+    {"samples", "N", "draws per point (default: 20)"},
+    {"seed", "S", "seed of the draws (default: the scenario's uncertainty.seed)"},
+    {"jobs", "J", "threads (default: the cores available)"},
+    {"o,out", "DIR", "output folder (default: the scenario's output.folder/sensitivity)"},
+    kSet,
+    {"case", "AXIS=LEVEL,...", "with a study: the one case to analyse"},
+    {"no-report", nullptr, "skip report.html (the tornado charts are still drawn)"},
+    kHelp};
+
 constexpr OptionSpec kStudy[] = {
     {"grid", "KEY=V1,V2,...", "with a SCENARIO: an axis of the grid (repeatable)", true},
     {"draws", "N", "Monte Carlo draws per point, 0 or >= 2 (default: the file's; --grid: 0)"},
@@ -148,6 +158,15 @@ study: section, the same for every case (one level of each axis) in DIR/<case>/,
 DIR/study.csv, study.json and report.html.
 Exit: 128 + signal when interrupted (the finished cases are kept).)";
 
+constexpr const char* kSensitivityNotes =
+    R"(Runs montecarlo with every uncertain parameter drawn, then with each parameter (as the
+file gives it: a [*] entry moves together) held at either end of its range, the others drawn
+on the same draws: uniform at +-spread, normal at +-2 sigma, range at its bounds. The scenario
+needs two variants. Writes DIR/points/<point>/ (each a montecarlo folder), sensitivity.json,
+sensitivity.csv, plots/tornado_<metric>.png and report.html; prints which parameter changes
+each verdict and where the paired ratio crosses 1.
+Exit: 128 + signal when interrupted (the finished points are kept).)";
+
 constexpr const char* kStudyNotes =
     R"(STUDY is a study file (scenarios/README.md, "Study files"), or a scenario with --grid.
 Writes DIR/NNN-label/ per case (NNN its index) and DIR/cases.json (folders to keys); skips
@@ -180,6 +199,8 @@ constexpr CommandSpec kCommands[] = {
     {"compare", "RUN_DIR RUN_DIR...", "compare saved runs in one report", kCompare, kCompareNotes},
     {"montecarlo", "SCENARIO", "draw the uncertain plant N times: distributions and verdicts",
      kMonteCarlo, kMonteCarloNotes},
+    {"sensitivity", "SCENARIO", "each uncertain parameter at its ends: what flips a verdict",
+     kSensitivity, kSensitivityNotes},
     {"study", "STUDY", "a study's cases (a grid or list over keys, x Monte Carlo draws)", kStudy,
      kStudyNotes},
     {"merge", "DIR...", "one table and report of a study's cases", kMerge, kMergeNotes},

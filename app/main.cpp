@@ -114,7 +114,8 @@ std::string usage_problem(const std::vector<std::string>& words) {
   const std::string given = std::to_string(words.size() - 1);
   std::string listed;
   for (std::size_t i = 1; i < words.size(); ++i) listed += " '" + words[i] + "'";
-  for (const char* one : {"run", "validate", "render", "report", "montecarlo", "accuracy", "sweep", "study"}) {
+  for (const char* one :
+       {"run", "validate", "render", "report", "montecarlo", "sensitivity", "accuracy", "sweep", "study"}) {
     if (command != one) continue;
     const bool folder = command == "render" || command == "report";
     if (words.size() != 2)
@@ -166,8 +167,9 @@ int dispatch(const CommandSpec& spec, const cxxopts::ParseResult& parsed) {
     return render_command(args);
   }
   if (command == "validate" && words.size() == 2) return validate_command(words[1], sets);
-  if (command == "montecarlo" && words.size() == 2) {
+  if ((command == "montecarlo" || command == "sensitivity") && words.size() == 2) {
     MonteCarloArguments args;
+    if (command == "sensitivity") args.samples = 20;
     args.scenario = words[1];
     args.sets = sets;
     if (parsed.count("out")) args.out = parsed["out"].as<std::string>();
@@ -178,9 +180,8 @@ int dispatch(const CommandSpec& spec, const cxxopts::ParseResult& parsed) {
       const std::string text = parsed[key].as<std::string>();
       const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
       if (ec != std::errc{} || end != text.data() + text.size() || number < 0)
-        return usage_error(std::string("montecarlo: --") + key +
-                               " needs a whole number >= 0 (got \"" + text + "\")",
-                           "montecarlo");
+        return usage_error(command + ": --" + key + " needs a whole number >= 0 (got \"" + text + "\")",
+                           command);
       if (std::string(key) == "samples") args.samples = number;
       if (std::string(key) == "seed") args.seed = static_cast<std::uint64_t>(number);
       if (std::string(key) == "jobs") args.jobs = static_cast<int>(std::min(number, 256L));
@@ -189,7 +190,7 @@ int dispatch(const CommandSpec& spec, const cxxopts::ParseResult& parsed) {
       args.jobs = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     args.report = !parsed.count("no-report");
     if (parsed.count("case")) args.cases = parsed["case"].as<std::string>();
-    return montecarlo_command(args);
+    return command == "sensitivity" ? sensitivity_command(args) : montecarlo_command(args);
   }
   if (command == "accuracy" && words.size() == 2) {
     AccuracyArguments args;
@@ -242,8 +243,8 @@ int main(int argc, char** argv) {
   if (first == "-h" || first == "--help") return std::cout << elbowsim::cli::overview(), 0;
   if (argc < 2)
     return usage_error(
-        "no command given (run, validate, sweep, render, report, compare, montecarlo, study, "
-        "merge, accuracy)",
+        "no command given (run, validate, sweep, render, report, compare, montecarlo, sensitivity, "
+        "study, merge, accuracy)",
         "");
   if (first.starts_with('-'))
     return usage_error("the command comes first: elbowsim COMMAND ... (got '" + first + "' first)",

@@ -5,7 +5,7 @@
 # file of the target parses them once per build, not once per file. Parsing Eigen or
 # nlohmann/json costs about 2 s a file here, as much as compiling many of our files;
 # CI builds the tree three times (Release, sanitizers, fuzzing), on 2 cores.
-# docs/performance.md, "Build time", has the measurement.
+# docs/validation.md, "Sanitizers and fuzzing", has the measurement.
 #
 # The list is a target's own: the engine's never names a file format (its room may
 # not use one, tests/layers.txt). A file still includes what it uses.

@@ -234,3 +234,43 @@ TEST_CASE("an unwritable PNG path is an error naming the file") {
                        doctest::Contains("/nonexistent-folder/x.png"), std::runtime_error);
   CHECK_THROWS_AS(read_png("/nonexistent-folder/x.png"), std::runtime_error);
 }
+
+TEST_CASE("tornado: each end's bar runs from the centre toward its value, in its own colour") {
+  // One factor, its low end below the centre and its high end above; then the
+  // other way round. Blue (low end) and orange (high end) are looked for in the
+  // row's band only (the legend above has both colours too).
+  const Color blue{0.122, 0.467, 0.706}, orange{0.937, 0.541, 0.180}, red{0.80, 0.10, 0.10};
+  const auto mean_x = [](const Image& image, Color c, int y0, int y1) {
+    double sum = 0;
+    long n = 0;
+    for (int x = 0; x < image.width; ++x) {
+      const long here = t::color_pixels(image, c, x, y0, x + 1, y1, 30);
+      sum += here * x, n += here;
+    }
+    return n ? sum / n : -1.0;
+  };
+  for (const bool rising : {true, false}) {
+    Tornado chart;
+    chart.title = "tornado";
+    chart.x = linear_axis("ratio", "");
+    chart.centre = 0.9;
+    chart.reference = 1.0;
+    chart.rows.push_back({"factor", rising ? 0.6 : 1.2, rising ? 1.2 : 0.6, "low", "high"});
+    const auto file = png(rising ? "tornado_rising" : "tornado_falling");
+    write_png(chart, file);
+    const int height = tornado_height(1);
+    t::check_plot_png(file, chart.width, height);
+    const Image image = read_png(file);
+    const int band_bottom = height - 58, band_top = band_bottom - 34;
+    const double low_x = mean_x(image, blue, band_top, band_bottom);
+    const double high_x = mean_x(image, orange, band_top, band_bottom);
+    REQUIRE(low_x > 0);
+    REQUIRE(high_x > 0);
+    if (rising) CHECK(low_x < high_x);
+    else CHECK(low_x > high_x);
+    // The bars' lengths: 0.3 below the centre and 0.3 above it, so equal widths.
+    CHECK(t::color_pixels(image, blue, 0, band_top, image.width, band_bottom, 30) ==
+          doctest::Approx(t::color_pixels(image, orange, 0, band_top, image.width, band_bottom, 30)).epsilon(0.15));
+    CHECK(t::color_pixels(image, red, 0, band_top, image.width, band_bottom, 30) > 5);  // the dashed 1
+  }
+}

@@ -95,8 +95,17 @@ struct MonteCarloArguments {
   int jobs = 1;
   bool report = true;  // false: --no-report
   std::string cases;   // --case "axis=level,...": the study cases to run; "": all
+  // Uncertain parameters (as the file gives them) held at one deviation (a
+  // relative law) or value (a range) in every draw, the others drawn as usual:
+  // sensitivity's points. Empty: every parameter drawn.
+  std::vector<std::pair<std::string, double>> held;
 };
 int montecarlo_command(const MonteCarloArguments& args);
+
+// elbowsim sensitivity SCENARIO [--samples N] [--seed S] [--jobs J] [--out DIR] [--set ...]
+// [--case ...] [--no-report]: montecarlo with every draw, then each uncertain
+// parameter held at either end of its range (app/study/sensitivity.hpp).
+int sensitivity_command(const MonteCarloArguments& args);
 
 // elbowsim study STUDY [--grid KEY=V1,V2 ...] [--draws N] [--seed S] [--out DIR] [--set ...]
 //                      [--jobs N] [--shard I/N] [--case K [--video]] [--list] [--slurm] [--k8s]

@@ -411,6 +411,11 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
     params.push_back(q);
   }
   doc["parameters"] = params;
+  if (!args.held.empty()) {
+    Json held = Json::object();  // given -> the deviation or value every draw has
+    for (const auto& [given, u] : args.held) held[given] = u;
+    doc["held"] = held;
+  }
   doc["accuracy_floor"] = floors;
   Json invalid = Json::array();
   doc["metrics"] = Json::object();  // stays empty when every run is invalid
@@ -465,6 +470,10 @@ int montecarlo_command(const MonteCarloArguments& args) {
     if (base.uncertainty.parameters.empty())
       return usage_error(args.scenario + " has no uncertainty: parameters to draw (scenarios/README.md, uncertainty)");
     folder = args.out.value_or(base.output.folder + "/montecarlo");
+    for (const auto& [given, u] : args.held)
+      if (std::none_of(base.uncertainty.parameters.begin(), base.uncertainty.parameters.end(),
+                       [&](const UncertainParameter& p) { return p.given == given; }))
+        return usage_error("no uncertain parameter " + given + " to hold");
     const std::vector<study::StudyCase> cases = study::select_cases(base, args.cases);
     plans = plan_cases(args, base, cases, folder);
   } catch (const ScenarioError& e) {
@@ -478,8 +487,13 @@ int montecarlo_command(const MonteCarloArguments& args) {
   const auto draws_of = [&](const CasePlan& plan) {
     const std::uint64_t s = study::case_seed(seed, plan.study_case.name);
     std::vector<study::Draw> draws;
-    for (long i = 0; i < args.samples; ++i)
+    for (long i = 0; i < args.samples; ++i) {
       draws.push_back(study::draw_parameters(base.uncertainty, s, i));
+      // Held after the draw: the other parameters keep the values they draw without it.
+      for (std::size_t j = 0; j < base.uncertainty.parameters.size(); ++j)
+        for (const auto& [given, u] : args.held)
+          if (base.uncertainty.parameters[j].given == given) draws.back().u[j] = u;
+    }
     return draws;
   };
 

@@ -113,6 +113,31 @@ struct Waterfall {
 // The height a waterfall of `steps` rows is drawn at.
 int waterfall_height(std::size_t steps);
 
+// A tornado chart (tornado.cpp): what each factor alone does to one value.
+// One row per factor, in the order given (the caller's ranking), two bars
+// from the centre (the value with every factor at its usual spread): to the
+// value with the factor at its low end, and at its high end, each in its
+// colour; a line at the centre, a dashed line at the reference (1, where a
+// ratio's verdict flips).
+struct TornadoRow {
+  std::string label;
+  double low = 0, high = 0;  // the value at each end; non-finite: no bar
+  std::string low_text, high_text;  // printed beyond each bar's end ("−10 %: 0.64")
+};
+struct Tornado {
+  std::string title;
+  Axis x;  // linear
+  double centre = 1;
+  std::optional<double> reference;
+  std::string centre_label = "centre", reference_label = "reference";
+  std::string low_label = "low end", high_label = "high end";  // the legend
+  std::vector<TornadoRow> rows;
+  std::string empty_message = "no data";
+  int width = 900;
+};
+// The height a tornado of `rows` rows is drawn at.
+int tornado_height(std::size_t rows);
+
 // Work-precision: one method's error against CPU time, one point per setting
 // (step size, tolerance), in the order given.
 struct MethodResult {
@@ -141,5 +166,6 @@ Image read_png(const std::filesystem::path& png);
 void write_png(const LinePlot& plot, const std::filesystem::path& png);
 void write_png(const BarChart& chart, const std::filesystem::path& png);
 void write_png(const Waterfall& chart, const std::filesystem::path& png);
+void write_png(const Tornado& chart, const std::filesystem::path& png);
 
 }  // namespace elbowsim::plot
