@@ -149,7 +149,7 @@ TEST_CASE("cli: a usage error says why in one line, then where the help is (exit
       {"--out x run y.yaml", "error: the command comes first"},
       {"run", "error: run takes exactly one SCENARIO (got 0)"},
       {"run a.yaml b.yaml", "error: run takes exactly one SCENARIO (got 2: 'a.yaml' 'b.yaml')"},
-      {"run a.yaml --samples 3", "error: run has no option --samples (montecarlo has it)"},
+      {"run a.yaml --samples 3", "error: run has no option --samples (montecarlo and sensitivity have it)"},
       {"run a.yaml --out", "error: run: "},
       {"report", "error: report takes exactly one RUN_DIR (got 0)"},
       {"report d --key k", "error: report has no option --key (sweep has it)"},

@@ -97,7 +97,7 @@ TEST_CASE("draws: seeded, within their laws, and draw i the same however many ar
   CHECK(drawn == 1.0 * (1 + d3.u[0]));  // 17 digits: exact
 }
 
-TEST_CASE("cli: montecarlo: same seed -> same bytes (jobs 1 or 2); identical variants -> no difference") {
+TEST_CASE("cli: montecarlo: same seed -> same bytes (jobs 1 or 2); identical variants -> no difference" * doctest::test_suite("long")) {
   const fs::path dir = elbowsim::testing::scratch("cli", "montecarlo");
   const fs::path file = dir / "holding.yaml";
   std::ofstream(file) << kHolding << "variants: {a: {}, b: {}}\n";

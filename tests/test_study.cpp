@@ -158,7 +158,7 @@ TEST_CASE("study cases: every combination, the first axis slowest; --case select
   CHECK_THROWS_AS(select_cases(plain, "pose=low"), std::invalid_argument);
 }
 
-TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same bytes with --jobs 1 or 2") {
+TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same bytes with --jobs 1 or 2" * doctest::test_suite("long")) {
   const fs::path dir = elbowsim::testing::scratch("cli", "montecarlo_study");
   const fs::path file = dir / "study.yaml";
   std::ofstream(file) << kStudy;

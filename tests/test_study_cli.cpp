@@ -137,7 +137,7 @@ TEST_CASE("study: --jobs 2 and --jobs 1 give identical merged tables; shards 1/3
   CHECK(study(file, dir / "one", "--shard 4/3").exit_code == 2);
 }
 
-TEST_CASE("study: killed midway, the rerun runs only the missing cases") {
+TEST_CASE("study: killed midway, the rerun runs only the missing cases" * doctest::test_suite("long")) {
   const fs::path dir = scratch("study", "resume");
   // Twelve cases of about 0.1 s each.
   const fs::path file = study_file(dir, kSixCases + "  effects.damping: [false, true]\n",

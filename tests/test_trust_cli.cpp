@@ -187,7 +187,7 @@ TEST_CASE("cli: validate plans and resets as the run does: Painleve's paradox at
   CHECK(has(ok.output, "start      elbow_off: planned and reset at t = 0 as the run does: passes"));
 }
 
-TEST_CASE("cli: a Monte Carlo study names the draws in which a link rested on the table") {
+TEST_CASE("cli: a Monte Carlo study names the draws in which a link rested on the table" * doctest::test_suite("long")) {
   // The PD experiment again, 3 draws: in each, both arms' last links touch the table (the
   // held-up arm's for almost the whole run).
   const fs::path dir = elbowsim::testing::scratch("cli", "mc_bodies");

@@ -20,7 +20,7 @@ bool has(const std::string& text, const std::string& part) { return text.find(pa
 
 }  // namespace
 
-TEST_CASE("the experiment beyond its stable step (2.5 ms): invalid (energy balance), exit 3, no verdict") {
+TEST_CASE("the experiment beyond its stable step (2.5 ms): invalid (energy balance), exit 3, no verdict" * doctest::test_suite("long")) {
   // Under continuous control rk4 on this arm is stable up to 2.07 ms on the
   // system linearised at initial.q (the warning and the failure say so);
   // poses later in the run lower that a little (at 2 ms one variant's energy
@@ -79,7 +79,7 @@ TEST_CASE("contact off with a table: the physics ignores it, a link that goes in
   CHECK(has(r.output, "effects.contact is false"));
 }
 
-TEST_CASE("the experiment under PD control: elbow_off's sagging arm lands on the table, no link inside it") {
+TEST_CASE("the experiment under PD control: elbow_off's sagging arm lands on the table, no link inside it" * doctest::test_suite("long")) {
   // Without feed-forward the arm sags; with the elbow held up, the hand's link
   // lands on the table and rests there. Valid means the penetration check
   // (contact.penetration_tolerance, every step, every link) held throughout.

@@ -112,7 +112,7 @@ TEST_CASE("measured convergence order: Euler ~ 1, RK4 ~ 4 (+-0.3) on a motor-dri
   CHECK(std::abs(p_symplectic - 1.0) < 0.3);
 }
 
-TEST_CASE("stiff electrics: L = 1e-5 H, R = 1 ohm at step 1 ms stay bounded and match step 1e-6") {
+TEST_CASE("stiff electrics: L = 1e-5 H, R = 1 ohm at step 1 ms stay bounded and match step 1e-6" * doctest::test_suite("long")) {
   auto stiff = [](IntegratorKind kind, double step) {
     Model m = driven_arm(kind, step, 0.3, 1e-5);
     for (Motor& motor : m.motors) motor.resistance = 1.0;
