@@ -9,7 +9,6 @@
 #include <iostream>
 
 #include "app/commands/commands.hpp"
-#include "app/commands/interrupt.hpp"
 #include "app/output/atomic_file.hpp"
 #include "app/output/folder_lock.hpp"
 #include "app/scenario/scenario.hpp"
