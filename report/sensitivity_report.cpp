@@ -26,16 +26,20 @@ double number_or_nan(const Json& j, const char* key) {
   return j.contains(key) && j[key].is_number() ? j[key].get<double>() : std::nan("");
 }
 
-// "−10 %: 0.64", or the range's value "−0.1001: 1.55".
-std::string end_text(const Json& factor, const char* end) {
-  const Json& e = factor[end];
-  const double ratio = number_or_nan(e, "ratio");
-  const double value = number_or_nan(e, "value");
+// Where an end holds its factor: "−10 %", or a range's value "−0.1001".
+std::string end_value(const Json& factor, const char* end) {
+  const double value = number_or_nan(factor[end], "value");
   const bool relative = factor.value("law", "").rfind("range", 0) != 0;
   std::string at = relative ? significant(100 * std::abs(value), 3) + " %" : significant(std::abs(value), 4);
   if (value < 0) at = "−" + at;
   else if (relative && value > 0) at = "+" + at;
-  return at + ": " + (std::isfinite(ratio) ? significant(ratio, 3) : "no estimate");
+  return at;
+}
+
+// "−10 %: 0.64": the chart's label of an end.
+std::string end_text(const Json& factor, const char* end) {
+  const double ratio = number_or_nan(factor[end], "ratio");
+  return end_value(factor, end) + ": " + (std::isfinite(ratio) ? significant(ratio, 3) : "no estimate");
 }
 
 plot::Tornado tornado_of(const Json& m) {
@@ -78,9 +82,7 @@ std::string table(const Json& m) {
     out += "<tr><td class=\"num\">" + std::to_string(++rank) + "</td><td>" + html::escape(f.value("given", "")) +
            "</td><td>" + html::escape(f.value("law", "")) + "</td>";
     for (const char* end : {"low", "high"})
-      out += "<td class=\"num\">" + html::escape(end_text(f, end).substr(0, end_text(f, end).find(':')) + ": " +
-                                                 cell(f[end])) +
-             "</td>";
+      out += "<td class=\"num\">" + html::escape(end_value(f, end) + ": " + cell(f[end])) + "</td>";
     out += "<td class=\"num\">" + significant(f.value("swing", 0.0), 3) + "</td><td data-effect=\"" +
            html::escape(f.value("effect", "")) + "\">" + html::escape(f.value("effect", "")) + "</td></tr>\n";
   }

@@ -83,7 +83,6 @@ void write_csv(const std::filesystem::path& path, const Json& doc) {
 
 int sensitivity_command(const MonteCarloArguments& args) {
   if (args.samples < 2) return usage_error("--samples must be at least 2");
-  if (!args.held.empty()) return usage_error("held parameters are the command's own");
   Scenario base;
   std::string case_name;
   std::filesystem::path folder;

@@ -30,6 +30,12 @@ int effect_rank(const std::string& effect) {
   return effect == "flips" ? 4 : effect == "removes" || effect == "decides" ? 3 : effect == "no verdict" ? 2 : 1;
 }
 
+// A factor's effect: the stronger of its two ends'.
+std::string factor_effect(const FactorPoints& f, const RatioAt& nominal) {
+  const std::string low = effect_at(nominal, f.low), high = effect_at(nominal, f.high);
+  return effect_rank(high) > effect_rank(low) ? high : low;
+}
+
 // The extent of ln ratio over the centre and both ends: a factor whose ends
 // both lie on one side of the centre (a V) swings as far as its farther end.
 double swing_of(const FactorPoints& f, const RatioAt& nominal) {
@@ -139,8 +145,7 @@ Json sensitivity_of(const std::string& metric, const std::string& what, const st
   std::vector<std::size_t> order(factors.size());
   std::vector<int> rank(factors.size());
   for (std::size_t k = 0; k < order.size(); ++k)
-    order[k] = k, rank[k] = std::max(effect_rank(effect_at(nominal, factors[k].low)),
-                                     effect_rank(effect_at(nominal, factors[k].high)));
+    order[k] = k, rank[k] = effect_rank(factor_effect(factors[k], nominal));
   std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
     if (rank[x] != rank[y]) return rank[x] > rank[y];
     return swing_of(factors[x], nominal) > swing_of(factors[y], nominal);
@@ -156,14 +161,12 @@ Json sensitivity_of(const std::string& metric, const std::string& what, const st
     const FactorPoints& p = factors[k];
     const SensitivityFactor& f = p.factor;
     Json j{{"given", f.given}, {"law", f.law}};
-    std::string effect = "none";
     Json crosses = nullptr;
     for (const auto& [end, at, r] : {std::tuple{"low", f.low, p.low}, std::tuple{"high", f.high, p.high}}) {
       Json e = ratio_json(r);
       e["value"] = at;
       j[end] = e;
       const std::string here = effect_at(nominal, r);
-      if (effect_rank(here) > effect_rank(effect)) effect = here;
       if (here == "flips" || here == "removes" || here == "decides") {
         changed = true;
         std::string s = f.given + " held at " + factor_value(f, at) + ": " + ratio_text(r) + ", " +
@@ -177,14 +180,15 @@ Json sensitivity_of(const std::string& metric, const std::string& what, const st
         sentences.push_back(s + ".");
       }
     }
+    const bool monotone = !not_monotone(p, nominal);
     j["swing"] = swing_of(p, nominal);
-    j["monotone"] = !not_monotone(p, nominal);
-    if (not_monotone(p, nominal))
+    j["monotone"] = monotone;
+    if (!monotone)
       sentences.push_back(f.given + ": both ends move the ratio the same way (" + ratio_text(p.low) + " at " +
                           factor_value(f, f.low) + ", " + ratio_text(p.high) + " at " + factor_value(f, f.high) +
                           "; " + ratio_text(nominal) +
                           " with it drawn): not monotone over its range; a narrower range shows where it turns.");
-    j["effect"] = effect;
+    j["effect"] = factor_effect(p, nominal);
     j["crosses"] = crosses;
     ranked.push_back(j);
   }
