@@ -54,6 +54,11 @@ CLAIM_ROWS = [
     ("tunedpd", "the rule without integral action (`controller.tuning.integral=0`)"),
     ("tuned20", "the rule at 20 Hz (`controller.tuning.bandwidth=20`, step 0.25 ms)"),
     ("nogravity", "no gravity (`effects.gravity=false`)"),
+    ("pad", "a rubber elbow pad, k 4e4 N/m, c 60 N s/m (`contact.pad`: 0.36 mm under the "
+            "resting elbow's 14.5 N); the plan rests the elbow on the table's surface"),
+    ("padplanned", "the same pad, the plan resting the elbow at its static depth (the table "
+                   "believed 0.36 mm lower)"),
+    ("padstiff", "a pad ten times stiffer, k 4e5 N/m, c 190 N s/m (0.036 mm)"),
 ]
 
 

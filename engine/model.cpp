@@ -78,6 +78,13 @@ const char* to_string(FrictionLaw law) {
   return "?";
 }
 
+bool Model::has_pads() const {
+  if (!effects.contact) return false;
+  for (const Elbow& e : elbows)
+    if (e.pad.on()) return true;
+  return false;
+}
+
 std::vector<std::string> Model::active_effects() const {
   std::vector<std::string> names;
   if (effects.gravity) names.emplace_back("gravity");
@@ -89,6 +96,7 @@ std::vector<std::string> Model::active_effects() const {
     names.emplace_back("contact");
     if (effects.friction) names.emplace_back("friction");
     if (effects.impacts) names.emplace_back("impacts");
+    if (has_pads()) names.emplace_back("pads");
     if (effects.stabilization != Stabilization::none)
       names.emplace_back(std::string("stabilization:") + to_string(effects.stabilization));
   }
@@ -123,7 +131,17 @@ void check_contact_scene(const Model& model) {
     const Elbow& e = model.elbows[k];
     require(e.link >= 0 && e.link < model.dof, at("elbows", int(k)) + ".link out of range");
     require(e.radius > 0, at("elbows", int(k)) + ".radius must be > 0");
+    require(e.pad.stiffness >= 0 && std::isfinite(e.pad.stiffness) && e.pad.damping >= 0 &&
+                std::isfinite(e.pad.damping) && e.pad.thickness > 0,
+            at("elbows", int(k)) + ".pad needs stiffness >= 0, damping >= 0 and thickness > 0");
   }
+  // A pad's row carries a prescribed force, which the projection (a position
+  // constraint per resting row) and the two reference solvers do not know.
+  require(!model.has_pads() || model.effects.stabilization != Stabilization::projection,
+          "a pad needs effects.stabilization baumgarte or none (projection holds every resting row at C = 0)");
+  require(!model.has_pads() || (model.contact.solver != ConstraintSolver::dense_lu &&
+                                model.contact.solver != ConstraintSolver::explicit_inverse),
+          "a pad needs contact.solver auto, schur or aba");
   for (std::size_t b = 0; b < model.table.size(); ++b)
     require((model.table[b].size.array() > 0).all(), at("table", int(b)) + ".size must be > 0");
   const ContactOptions& c = model.contact;

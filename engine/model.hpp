@@ -7,6 +7,7 @@
 #include <limits>
 #include <Eigen/Geometry>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/control/inputs.hpp"
@@ -49,12 +50,33 @@ struct Effects {
   Stabilization stabilization = Stabilization::baumgarte;  // drift control of C(q) = 0
 };
 
+// A compliant pad on an elbow (docs/model.md, Compliant pad): a Kelvin-Voigt
+// layer, massless, whose outer surface is the elbow sphere's. Pressed d deep
+// (d = -distance > 0) at rate d' it pushes back f = k d + c d' along the
+// table's normal while f > 0; it never pulls (the contact releases where f
+// reaches 0, and the elastic energy still in it, k d^2 / 2, is lost there).
+// No impulse at landing: the force is finite. Friction stays Coulomb, with
+// exact sticking, bounded by this f. Stiffness 0: no pad (the rigid contact).
+struct Pad {
+  double stiffness = 0;     // k [N/m] > 0 for a pad
+  double damping = 0;       // c [N s/m] >= 0
+  double thickness = 0.005; // [m] > 0: pressed deeper, the pad bottoms out (the run is invalid)
+  bool on() const { return stiffness > 0; }
+};
+
 // An elbow point: a sphere on a link that can rest on the table.
 struct Elbow {
+  Elbow() = default;
+  // A rigid elbow unless `pad` is given (the constructor keeps code that
+  // builds elbows from their first four members as it was).
+  Elbow(std::string name_, int link_, const Eigen::Vector3d& point_, double radius_, Pad pad_ = {})
+      : name(std::move(name_)), link(link_), point(point_), radius(radius_), pad(pad_) {}
+
   std::string name;                                // for events and messages
   int link = 0;                                    // carrying link, 0-based
   Eigen::Vector3d point = Eigen::Vector3d::Zero(); // [m] sphere centre, link frame
-  double radius = 0.03;                            // [m] > 0
+  double radius = 0.03;                            // [m] > 0 (with a pad: to its outer surface)
+  Pad pad;                                         // compliant pad (off by default: rigid)
 };
 
 // One solid box of the table (several make steps or gaps).
@@ -316,6 +338,9 @@ struct Model {
   bool has_coulomb_friction() const {
     return effects.friction && contact.friction.law == FrictionLaw::coulomb && contact.friction.mu > 0;
   }
+
+  // Some elbow has a compliant pad (and contact is on).
+  bool has_pads() const;
 
   bool has_motor() const { return effects.motor != MotorModel::none; }
   bool has_current_state() const { return effects.motor == MotorModel::full; }

@@ -2,7 +2,7 @@
 //   x = [q; qd; i (motor: full); the integrated energy terms present, in the
 //        order of engine/recording/energy_terms.hpp (E_in, E_joule, E_viscous; E_friction,
 //        E_normal (contact); E_drawn, E_regenerated (motors); E_joint_friction;
-//        E_gear; E_external (hand force)); E_friction per contact body (contact
+//        E_gear; E_external (hand force); E_pad (pads)); E_friction per contact body (contact
 //        with friction: each elbow, then each link)].
 // The energy integrals ride along in x so they are integrated to the same
 // order as the motion they account for. The per-body friction integrals come
@@ -26,6 +26,7 @@ inline bool energy_group_present(const Model& model, EnergyGroup group) {
     case EnergyGroup::joint_friction: return model.effects.joint_friction;
     case EnergyGroup::gear: return model.gear_losses;
     case EnergyGroup::hand_force: return !model.hand_load.force.isZero();
+    case EnergyGroup::pads: return model.has_pads();
   }
   return false;
 }

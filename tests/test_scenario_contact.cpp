@@ -405,3 +405,51 @@ TEST_CASE("contact error: an elbow that starts inside the table names the elbow 
   // Within the tolerance it loads.
   CHECK_NOTHROW(load(scene, {"contact.initial_penetration=0.05"}));
 }
+
+// ---------------------------------------------------------------------------
+// Compliant pads (elbows[i].pad, contact.pad)
+
+TEST_CASE("contact: contact.pad pads every elbow; an elbow's own pad or `rigid` replaces it") {
+  const std::string scene = two_link_with(R"(
+effects: {contact: true}
+elbows:
+  - {name: a, link: 0, at: 0.3}
+  - {name: b, link: 1, at: 0.1, pad: {stiffness: 2.0e5, damping: 40, thickness: 0.002}}
+  - {name: c, link: 1, at: 0.2, pad: rigid}
+contact:
+  pad: {stiffness: 4.0e4, damping: 60}
+)") + kTable;
+  const Model m = load(scene).model;
+  REQUIRE(m.elbows.size() == 3);
+  CHECK(m.elbows[0].pad.stiffness == 4.0e4);
+  CHECK(m.elbows[0].pad.damping == 60);
+  CHECK(m.elbows[0].pad.thickness == 0.005);  // the default
+  CHECK(m.elbows[1].pad.stiffness == 2.0e5);
+  CHECK(m.elbows[1].pad.thickness == 0.002);
+  CHECK_FALSE(m.elbows[2].pad.on());
+  CHECK(m.has_pads());
+  CHECK_FALSE(load(two_link_with("effects: {contact: true}\nelbows: [{link: 0, at: 0.3}]\n") + kTable)
+                  .model.has_pads());
+}
+
+TEST_CASE("contact error: a pad needs a stiffness, a damping >= 0 and a thickness > 0") {
+  const std::string elbows = "effects: {contact: true}\nelbows:\n  - {link: 0, at: 0.3, pad: ";
+  CHECK_ERROR((kTwoLink + elbows + "{damping: 5}}\n") + kTable, "x.yaml:11:", "elbows[0].pad.stiffness",
+              "required key is missing");
+  CHECK_ERROR((kTwoLink + elbows + "{stiffness: 1.0e4, damping: -1}}\n") + kTable, "x.yaml:11:",
+              "elbows[0].pad.damping", "must be >= 0");
+  CHECK_ERROR((kTwoLink + elbows + "{stiffness: 1.0e4, thickness: 0}}\n") + kTable, "x.yaml:11:",
+              "elbows[0].pad.thickness", "must be > 0");
+  CHECK_ERROR((kTwoLink + elbows + "soft}\n") + kTable, "x.yaml:11:", "elbows[0].pad",
+              "or rigid (got \"soft\")");
+  CHECK_ERROR((kTwoLink + elbows + "{stiffness: 1.0e4, mass: 1}}\n") + kTable, "x.yaml:11:",
+              "elbows[0].pad.mass", "unknown key");
+}
+
+TEST_CASE("contact error: a pad refuses projection and the two reference solvers, at their keys") {
+  const std::string padded = "elbows: [{link: 0, at: 0.3}]\ncontact: {pad: {stiffness: 1.0e4}";
+  CHECK_ERROR((kTwoLink + "effects: {contact: true, stabilization: projection}\n" + padded + "}\n") + kTable,
+              "x.yaml:9:", "effects.stabilization", "use baumgarte or none with pads");
+  CHECK_ERROR((kTwoLink + "effects: {contact: true}\n" + padded + ", solver: dense_lu}\n") + kTable,
+              "x.yaml:11:", "contact.solver", "use auto, schur or aba with pads");
+}

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -319,4 +320,39 @@ TEST_CASE("the shipped experiment runs at a short duration; its comparison has b
     for (const auto& share : summary["saturation_share"]) CHECK(share.get<double>() == 0);
   }
   CHECK(fs::exists(dir / "compare" / "report.html"));
+}
+
+TEST_CASE("the experiment with a rubber elbow pad: both arms valid, the pad pressed and accounted") {
+  // k 4e4 N/m: the elbow's ~20 N press it about 0.5 mm (a rubber ball of the
+  // elbow's size gives 0.4-1.1 mm); c 60 N s/m, a damping ratio near 0.1. The
+  // plan still rests the elbow on the table's surface; the integral action
+  // stays off the joints the resting elbow holds.
+  const fs::path dir = scratch("variants", "experiment_pad");
+  const std::string scene = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_experiment.yaml";
+  const Outcome r = run("run " + scene + " --out " + dir.string() +
+                        " --set task.duration=1.5 --set task.start_delay=0.05 --no-render"
+                        " --set 'contact.pad={stiffness: 4.0e4, damping: 60}'");
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  for (const char* variant : {"elbow_on", "elbow_off"}) {
+    CAPTURE(variant);
+    const auto summary = nlohmann::json::parse(slurp(dir / variant / "summary.json"));
+    CHECK(summary["valid"] == true);
+    CHECK(std::find(summary["effects"].begin(), summary["effects"].end(), "pads") !=
+          summary["effects"].end());
+    CHECK(std::abs(summary["balance_residual_relative"].get<double>()) < 1e-3);
+  }
+  const auto on = nlohmann::json::parse(slurp(dir / "elbow_on" / "summary.json"));
+  const auto off = nlohmann::json::parse(slurp(dir / "elbow_off" / "summary.json"));
+  // The resting elbow presses its pad for the whole run: elastic energy at
+  // the end, losses from its damping; the held-up elbow never touches it.
+  CHECK(on["energy_final"]["pad_elastic"].get<double>() > 0);
+  CHECK(on["energy_final"]["pad_loss"].get<double>() > 0);
+  CHECK(on["contact"]["bodies"]["elbow"]["rest_fraction"].get<double>() > 0.99);
+  CHECK(off["energy_final"]["pad_loss"].get<double>() == 0);
+  // The pad's depth from its elastic energy, k d^2 / 2: under a millimetre.
+  const double depth = std::sqrt(2 * on["energy_final"]["pad_elastic"].get<double>() / 4.0e4);
+  MESSAGE("resting elbow's pad depth at the end ", depth, " m");
+  CHECK(depth > 1e-4);
+  CHECK(depth < 1e-3);
 }

@@ -158,8 +158,11 @@ void print_elbows(const Scenario& s, const std::string& label) {
     const std::string link_name =
         s.chain.links.empty() ? "" : " " + s.chain.links[static_cast<std::size_t>(e.link)];
     std::cout << "elbow      " << label << e.name << " (link " << e.link << link_name << ", r "
-              << e.radius
-              << " m) at " << pose << ": centre " << centre << ", "
+              << e.radius << " m";
+    if (e.pad.on())
+      std::cout << ", pad k " << e.pad.stiffness << " N/m, c " << e.pad.damping << " N s/m, "
+                << e.pad.thickness << " m thick";
+    std::cout << ") at " << pose << ": centre " << centre << ", "
               << place_against_table(c, e.radius, m.table) << '\n';
   }
 }

@@ -17,11 +17,12 @@ namespace key = summary_key;
 
 namespace {
 
-// The terms with a summary key, in the order of engine/recording/energy_terms.hpp.
-nlohmann::ordered_json energy_json(const EnergyTerms& e) {
+// The terms with a summary key, in the order of engine/recording/energy_terms.hpp;
+// the pads' only in a scene with pads (a rigid scene's summary is as it was).
+nlohmann::ordered_json energy_json(const Model& m, const EnergyTerms& e) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
   for (const EnergyTermInfo& t : kEnergyTerms)
-    if (*t.summary_key) j[t.summary_key] = e.*t.value;
+    if (*t.summary_key && (t.group != EnergyGroup::pads || m.has_pads())) j[t.summary_key] = e.*t.value;
   return j;
 }
 
@@ -224,8 +225,8 @@ nlohmann::ordered_json run_summary(const Scenario& scenario, const RunResult& re
       {key::integrator_work_factorisations.name(), result.work.factorisations}};
   j[key::final_time.name()] = result.final_time;
   j[key::wall_seconds.name()] = result.wall_seconds;
-  j[key::energy_initial.name()] = energy_json(result.energy_initial);
-  j[key::energy_final.name()] = energy_json(result.energy_final);
+  j[key::energy_initial.name()] = energy_json(scenario.model, result.energy_initial);
+  j[key::energy_final.name()] = energy_json(scenario.model, result.energy_final);
   j[key::balance_residual.name()] = result.balance_residual;
   j[key::max_abs_balance_residual.name()] = result.max_abs_balance_residual;
   j[key::balance_residual_relative.name()] =

@@ -41,9 +41,26 @@ Eigen::Vector3d read_elbow_point(const Value& v, const Model& model, int link, b
   return Eigen::Vector3d(distance, 0, 0);
 }
 
+// A compliant pad (model.hpp, Pad): {stiffness, damping, thickness}, or
+// `rigid` (an elbow without one where contact.pad gives every elbow one).
+Pad read_pad(const Value& v) {
+  Pad pad;
+  if (!v.is_map()) {
+    if (v.text() != "rigid")
+      v.fail("must be a map {stiffness: N/m, damping: N s/m, thickness: m} or rigid (got \"" +
+             v.text() + "\")");
+    return pad;
+  }
+  v.allow_keys({"stiffness", "damping", "thickness"});
+  pad.stiffness = positive(v.require("stiffness"));
+  pad.damping = value_or(v.get("damping"), pad.damping, non_negative);
+  pad.thickness = value_or(v.get("thickness"), pad.thickness, positive);
+  return pad;
+}
+
 // link: an index, or with robot.urdf a link name (the point in that link's frame).
 Elbow read_elbow(const Value& v, const Model& model, const RobotInfo& robot) {
-  v.allow_keys({"name", "link", "at", "point", "radius"});
+  v.allow_keys({"name", "link", "at", "point", "radius", "pad"});
   Elbow elbow;
   const RobotInfo::Frame frame = read_link_frame(v.require("link"), model, robot);
   elbow.link = frame.link;
@@ -77,13 +94,17 @@ double in_range(const Value& v, double lo, double hi, bool closed) {
 
 }  // namespace
 
-std::vector<Elbow> read_elbows(const Value& elbows, const Model& model, const RobotInfo& robot) {
+std::vector<Elbow> read_elbows(const Value& elbows, const Value& default_pad, const Model& model,
+                               const RobotInfo& robot) {
   std::vector<Elbow> out;
   if (!elbows.present()) return out;
+  const Pad pad = default_pad.present() ? read_pad(default_pad) : Pad{};
   std::map<std::string, std::size_t> names;  // name -> index of the elbow that has it
   const std::vector<Value> items = elbows.items();
   for (std::size_t k = 0; k < items.size(); ++k) {
     Elbow elbow = read_elbow(items[k], model, robot);
+    const Value own_pad = items[k].get("pad");
+    elbow.pad = own_pad.present() ? read_pad(own_pad) : pad;
     Value name = items[k].get("name");
     elbow.name = value_or(name, "elbow" + std::to_string(k), text);
     if (elbow.name.empty()) name.fail("must not be empty");
@@ -145,7 +166,7 @@ ContactOptions read_contact(const Value& contact) {
   contact.allow_keys({"restitution", "friction", "events", "locate_tolerance", "touch_distance",
                       "separation_velocity", "settle_speed", "baumgarte_time", "rank_tolerance",
                       "initial_penetration", "penetration_tolerance",
-                      "detection_margin", "max_rows", "solver"});
+                      "detection_margin", "max_rows", "solver", "pad"});
   auto unit_interval = [](const Value& v) { return in_range(v, 0.0, 1.0, true); };
   auto open_unit_interval = [](const Value& v) { return in_range(v, 0.0, 1.0, false); };
   out.restitution = value_or(contact.get("restitution"), out.restitution, unit_interval);
@@ -185,6 +206,16 @@ void check_contact_scene(const Value& root, const Model& model) {
   const Value contact = root.get("effects").get("contact");  // present: contact is on
   if (!root.get("table").present())
     contact.fail("needs a table: the table section is missing (give table: {boxes: [...]})");
+  if (!model.has_pads()) return;
+  // A pad's row carries its force, not a position constraint (engine/contact/pad.hpp).
+  const Value stabilization = root.get("effects").get("stabilization");
+  if (model.effects.stabilization == Stabilization::projection)
+    stabilization.fail("projection holds every resting row at C = 0, and a padded elbow rests "
+                       "pressed into its pad: use baumgarte or none with pads");
+  const Value solver = root.get("contact").get("solver");
+  if (model.contact.solver == ConstraintSolver::dense_lu ||
+      model.contact.solver == ConstraintSolver::explicit_inverse)
+    solver.fail("does not know a pad's prescribed force: use auto, schur or aba with pads");
 }
 
 // An elbow or a link that starts deeper in the table than

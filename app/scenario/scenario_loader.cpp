@@ -129,7 +129,9 @@ Scenario read(const Value& root, const Source& source, OverrideSets& sets,
   s.chain = robot_info.names;
   model.gravity = value_or(root.get("gravity"), model.gravity, vec3);
   model.motors = read_motors(root.get("motors"), model);
-  model.elbows = read_elbows(root.get("elbows"), model, robot_info);
+  const Value contact = root.get("contact");
+  model.elbows = read_elbows(root.get("elbows"),
+                             contact.present() ? contact.get("pad") : contact, model, robot_info);
   model.table = read_table(root.get("table"));
   model.contact = read_contact(root.get("contact"));
   model.validity = read_validity(root.get("validity"));

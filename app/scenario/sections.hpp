@@ -66,7 +66,9 @@ RenderSettings read_render(const Value& render);                           // op
 // elbows (optional list): spheres on the links. Needs model.dof and
 // model.links; robot.planar is the only form that allows `at` (distance along
 // the link), robot.urdf the only one whose links have names.
-std::vector<Elbow> read_elbows(const Value& elbows, const Model& model, const RobotInfo& robot);
+// `default_pad`: contact.pad, the pad of every elbow that gives none of its own.
+std::vector<Elbow> read_elbows(const Value& elbows, const Value& default_pad, const Model& model,
+                               const RobotInfo& robot);
 std::vector<TableBox> read_table(const Value& table);  // optional; boxes: one or more
 ContactOptions read_contact(const Value& contact);     // optional; defaults: ContactOptions
 ValidityOptions read_validity(const Value& validity);  // optional; defaults: ValidityOptions

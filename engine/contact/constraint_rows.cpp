@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "engine/contact/friction.hpp"
+#include "engine/contact/pad.hpp"
 #include "engine/dynamics/kinematics.hpp"
 
 namespace elbowsim {
@@ -123,9 +124,13 @@ void normal_row(const Model& model, Data& data, int r, ConstVec qd) {
   project_row(model, data, r, ball.link, centre, f.n, c);
   c.C[r] = f.rho - ball.radius;
   c.Cd[r] = c.Jc.row(r).dot(qd);
-  c.gamma[r] = -f.n.dot(rates_jacobian_dot_qd(model, data, ball.link, centre)) - f.curvature;
-  if (model.effects.stabilization == Stabilization::baumgarte)
-    c.gamma[r] -= 2.0 / T * c.Cd[r] + c.C[r] / (T * T);
+  if (const Pad* pad = slot_pad(model, c, k)) {
+    c.gamma[r] = pad_force(*pad, c.C[r], c.Cd[r]);  // the row's prescribed force (pad.hpp)
+  } else {
+    c.gamma[r] = -f.n.dot(rates_jacobian_dot_qd(model, data, ball.link, centre)) - f.curvature;
+    if (model.effects.stabilization == Stabilization::baumgarte)
+      c.gamma[r] -= 2.0 / T * c.Cd[r] + c.C[r] / (T * T);
+  }
   c.Jf.row(r) = c.Jc.row(r);
   c.slide[r] = 0;
   c.row_friction.col(r).setZero();

@@ -44,6 +44,8 @@ ContactData::ContactData(ContactGeometry g, int boxes, int n, int capacity, int 
   sticking.assign(slots, 0);
   slip.assign(slots, Eigen::Vector3d::Zero());
   slip_stopped.assign(slots, 0);
+  pad_release_depth.assign(slots, 0.0);
+  pad_release_time.assign(slots, 0.0);
   may_stick.assign(slots, 0);
   was_sticking.assign(slots, 0);
   tangent_rows.reserve(cap);

@@ -115,6 +115,10 @@ struct ContactData {
   std::vector<Eigen::Vector3d> slip;      // [slots] unit world direction a sliding slot slips in
   std::vector<char> slip_stopped;         // [slots] 1: its slip's stop was located (it may stick)
   std::vector<char> may_stick, was_sticking;  // [slots] scratch of the mode decision (stick_slip.hpp)
+  // --- compliant pads (pad.hpp): a released pad's surface comes back up ----
+  std::vector<double> pad_release_depth;  // [slots] [m] its depth where it let go (0: relaxed)
+  std::vector<double> pad_release_time;   // [slots] [s] when
+  double pad_relaxed = 0;                 // [J] lost by pads that relaxed before they were pressed again
   FrictionLcpScratch cones;               // the stick-slip LCP (friction_lcp.hpp)
   Eigen::VectorXd cone_slip;              // [cone capacity] its slips sigma
   // --- rows of M* for the p rows (flat: the ContactRows of size p) ---------

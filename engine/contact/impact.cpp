@@ -3,6 +3,7 @@
 #include "engine/contact/detection.hpp"
 #include "engine/contact/friction.hpp"
 #include "engine/contact/lcp.hpp"
+#include "engine/contact/pad.hpp"
 #include "engine/dynamics/crba.hpp"
 #include "engine/dynamics/kinematics.hpp"
 #include "engine/state_layout.hpp"
@@ -164,22 +165,32 @@ void land_touching_slots(const Model& model, Data& data) {
   const double limit = model.contact.events == EventTiming::locate ? model.contact.touch_distance : 0.0;
   // Approaching faster than contact.separation_velocity: slower is no impact (and a
   // row that cannot move along the normal approaches only by rounding).
-  for (int k = 0; k < c.slots(); ++k)
-    if (!c.resting[k] && c.detected[k].distance <= limit &&
-        normal_speed(model, data, k) < -model.contact.separation_velocity)
+  // A padded slot lands without an impulse (its pad's force is finite): it
+  // rests, and the next step's start decides its row with the others.
+  auto land_softly = [&](int k) {
+    pad_contact_begins(model, data, k);
+    data.log.events.push_back({data.t, k, ContactEvent::Kind::landing, -normal_speed(model, data, k), 0, 0});
+    c.resting[k] = true;
+    c.sticking[k] = 0;  // the next step's start decides (stick_slip.hpp)
+  };
+  // A pad lands where it presses (pad.hpp): above it, its k d + c d' means nothing.
+  for (int k = 0; k < c.slots(); ++k) {
+    if (c.resting[k]) continue;
+    if (slot_pad(model, c, k)) {
+      if (pad_presses(model, data, k)) land_softly(k);
+    } else if (c.detected[k].distance <= limit &&
+               normal_speed(model, data, k) < -model.contact.separation_velocity) {
       c.landing.push_back(k);
+    }
+  }
   if (c.landing.empty()) return;
   if (!model.effects.impacts) {
-    for (int k : c.landing) {
-      data.log.events.push_back({data.t, k, ContactEvent::Kind::landing, -normal_speed(model, data, k), 0, 0});
-      c.resting[k] = true;
-      c.sticking[k] = 0;  // the next step's start decides (stick_slip.hpp)
-    }
+    for (int k : c.landing) land_softly(k);
     return;
   }
-  c.candidates.clear();  // the slots already resting
+  c.candidates.clear();  // the rigid slots already resting (a pad takes no impulse)
   for (int k = 0; k < c.slots(); ++k)
-    if (c.resting[k]) c.candidates.push_back(k);
+    if (c.resting[k] && !slot_pad(model, c, k)) c.candidates.push_back(k);
   if (static_cast<int>(c.landing.size() + c.candidates.size()) > c.capacity()) {
     data.failure = Failure{Failure::Kind::too_many_contacts, data.t, data.step_count};
     data.failure.value = static_cast<double>(c.landing.size() + c.candidates.size());

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/contact/pad.hpp"
+
 namespace elbowsim {
 
 namespace {
@@ -101,10 +103,11 @@ void min_norm_solve(SolverWorkspace& ws, ConstVec b, Eigen::Ref<Eigen::VectorXd>
 void rank_revealing_solve(const Model& model, ContactData& c) {
   c.dependent = false;
   if (c.rows() == 0) return;  // no rows, no forces
+  prescribe_pad_rows(model, c);
   SolverWorkspace& ws = c.solver(c.rows());
   const double tol = model.contact.rank_tolerance;
   bool independent;
-  if (model.effects.friction) {
+  if (model.effects.friction || model.has_pads()) {  // A is not symmetric
     ws.lu.compute(c.A);
     const auto pivots = ws.lu.matrixLU().diagonal().cwiseAbs();
     independent = pivots.minCoeff() > tol * pivots.maxCoeff();

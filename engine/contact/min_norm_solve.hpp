@@ -16,7 +16,8 @@ namespace elbowsim {
 void min_norm_solve(SolverWorkspace& ws, ConstVec b, Eigen::Ref<Eigen::VectorXd> x);
 
 // The contact forces of the p x p system c.A f = c.rhs (p = c.rows()) into
-// c.fn: Cholesky (LU with friction, A is then not symmetric) while the
+// c.fn, the rows of padded slots first made to prescribe their pads' forces
+// (pad.hpp): Cholesky (LU with friction or pads, A is then not symmetric) while the
 // smallest pivot stays above model.contact.rank_tolerance relative to the
 // largest; below it the rows are dependent (c.dependent), and a complete
 // orthogonal decomposition gives the minimum-norm f. Shared by every path

@@ -83,7 +83,14 @@ namespace elbowsim {
     "gear loss (negative)", "gear loss", "gears")                                                 \
   X(external, "", "", supplied, integrated, hand_force,                                           \
     "work of the constant hand force (in the balance; not recorded)",                             \
-    "work of the hand force", "work against the hand force", "hand force")
+    "work of the hand force", "work against the hand force", "hand force")                        \
+  X(pad_loss, "E_pad", "pad_loss", lost, integrated, pads,                                        \
+    "the elbow pads' loss: their damping, integral of c d'^2 while pressed, and the elastic "     \
+    "energy k d^2 / 2 a pad still holds when it lets go",                                         \
+    "pad loss (negative)", "pad loss (damping, release)", "pads")                                 \
+  X(pad_elastic, "E_pad_elastic", "pad_elastic", stored, contact, pads,                           \
+    "elastic energy in the pressed elbow pads: sum k d^2 / 2",                                    \
+    "elastic energy of the pads given up", "elastic energy of the pads gained", "pad elastic")
 // clang-format on
 
 enum class Energy {
@@ -104,7 +111,7 @@ struct EnergyTerms {
 
 enum class EnergyRole { supplied, lost, stored, split };
 enum class EnergySource { integrated, stored, contact };
-enum class EnergyGroup { always, contact, motors, joint_friction, gear, hand_force };
+enum class EnergyGroup { always, contact, motors, joint_friction, gear, hand_force, pads };
 
 struct EnergyTermInfo {
   Energy term;

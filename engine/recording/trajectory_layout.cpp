@@ -75,6 +75,7 @@ bool TrajectoryLayout::has_energy_group(const Groups& groups, EnergyGroup group)
     case EnergyGroup::joint_friction: return groups.joint_friction;
     case EnergyGroup::gear: return groups.gear;
     case EnergyGroup::hand_force: return false;  // its work is not recorded
+    case EnergyGroup::pads: return groups.pads;
   }
   return false;
 }
@@ -121,6 +122,7 @@ TrajectoryLayout TrajectoryLayout::from_columns(const std::vector<Column>& colum
   g.friction = g.contact && (has("E_friction_link0") || has("E_friction_link1"));
   g.joint_friction = has(energy_term(Energy::joint_friction).column);
   g.gear = has(energy_term(Energy::gear_loss).column);
+  g.pads = has(energy_term(Energy::pad_loss).column) || has(energy_term(Energy::pad_elastic).column);
   TrajectoryLayout layout(std::move(g));
   const std::vector<Column>& expected = layout.columns();
   auto text = [](const Column& c) { return "'" + c.name + " [" + c.unit + "]'"; };

@@ -50,6 +50,7 @@ class TrajectoryLayout {
     bool friction = false;            // E_friction_<body> columns: friction loss per body (contact)
     bool joint_friction = false;      // E_joint_friction
     bool gear = false;                // E_gear (gear efficiency below 1)
+    bool pads = false;                // E_pad, E_pad_elastic (an elbow has a compliant pad)
   };
 
   // Whether a run of these groups has the energy terms of `group`.

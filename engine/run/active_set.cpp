@@ -4,6 +4,7 @@
 #include "engine/contact/constraint_rows.hpp"
 #include "engine/contact/detection.hpp"
 #include "engine/contact/lcp.hpp"
+#include "engine/contact/pad.hpp"
 #include "engine/contact/stick_slip.hpp"
 #include "engine/control/controller.hpp"
 #include "engine/dynamics/applied_torques.hpp"
@@ -47,12 +48,17 @@ void touching_slots(const Model& model, Data& data) {
   ContactData& c = data.contact;
   c.candidates.clear();
   for (int k = 0; k < c.slots(); ++k) {
-    const bool touching = c.resting[k] || (c.detected[k].distance <= model.contact.touch_distance &&
-                                           normal_speed(model, data, k) <= model.contact.separation_velocity);
+    // A pad touches where it presses (pad.hpp): above it, its k d + c d' means nothing.
+    const bool touching =
+        c.resting[k] || (slot_pad(model, c, k)
+                             ? pad_presses(model, data, k)
+                             : c.detected[k].distance <= model.contact.touch_distance &&
+                                   normal_speed(model, data, k) <= model.contact.separation_velocity);
     if (!touching) continue;
     if (movable(model, data, k)) {
       c.candidates.push_back(k);
     } else if (c.resting[k]) {
+      book_pad_release(model, data, k);
       c.resting[k] = 0;  // off quietly: it carried nothing
     }
   }
@@ -84,10 +90,12 @@ void apply_decision(const Model& model, Data& data) {
     const bool on = c.lcp_active[r];
     if (on) {
       c.active.push_back(k);
+      if (!c.resting[k]) pad_contact_begins(model, data, k);
       if (!c.resting[k])
         data.log.events.push_back({data.t, k, ContactEvent::Kind::landing,
                                    std::max(0.0, -normal_speed(model, data, k)), 0, 0});
     } else if (c.resting[k]) {
+      book_pad_release(model, data, k);
       data.log.events.push_back({data.t, k, ContactEvent::Kind::release, 0, 0, 0});
     }
     c.resting[k] = on;
@@ -106,6 +114,9 @@ bool select_active_set(const Model& model, Data& data) {
   ContactData& c = data.contact;
   detect_contacts(model, data);
   freeze_frames(data);
+  if (model.has_pads())  // a released pad's slot starts from its pad's surface
+    for (int k = 0; k < c.slots(); ++k)
+      c.start_distance[static_cast<std::size_t>(k)] += pad_surface_depth(model, c, k, data.t);
   touching_slots(model, data);
   c.tangent_rows.clear();
   if (static_cast<int>(c.candidates.size()) > c.capacity()) {

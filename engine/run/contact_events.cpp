@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "engine/contact/detection.hpp"
+#include "engine/contact/pad.hpp"
 #include "engine/contact/stick_slip.hpp"
 #include "engine/run/derivative.hpp"
 #include "engine/run/event_location.hpp"
@@ -36,8 +37,11 @@ double normal_force(const ContactData& c, int slot) {
 // and, not approaching there, never been landed, so every following step was
 // cut to the locate tolerance again (a stall: a hand grazing the table while
 // its motors' currents turned it back down within the step).
-double landing_depth(const ContactData& c, int slot) {
-  return c.detected[slot].distance - std::min(0.0, c.start_distance[static_cast<std::size_t>(slot)]);
+// A padded slot lands on its pad's surface, which may still be coming back up
+// (pad.hpp); its start distance is to that surface too (active_set.cpp).
+double landing_depth(const Model& model, const Data& data, int slot) {
+  const ContactData& c = data.contact;
+  return pad_gap(model, c, slot, data.t) - std::min(0.0, c.start_distance[static_cast<std::size_t>(slot)]);
 }
 
 // The event function (its sign changes at the event) at the state in data.x.
@@ -45,7 +49,7 @@ double event_value(const Model& model, Data& data, int slot, Event event) {
   switch (event) {
     case Event::landing:
       detect_contacts(model, data);
-      return landing_depth(data.contact, slot);
+      return landing_depth(model, data, slot);
     case Event::feature:
       detect_contacts(model, data);  // forward kinematics
       return feature_margin(model, data, slot);
@@ -64,7 +68,10 @@ bool happens(const Model& model, const Data& data, int k, Event& event) {
   const ContactData& c = data.contact;
   if (!c.resting[k]) {
     event = Event::landing;
-    return landing_depth(c, k) < 0 &&
+    if (const Pad* pad = slot_pad(model, c, k))  // its surface may be coming up (pad.hpp)
+      return landing_depth(model, data, k) < 0 &&
+             pad_force(*pad, c.detected[k].distance, normal_speed(model, data, k)) > 0;
+    return landing_depth(model, data, k) < 0 &&
            normal_speed(model, data, k) < -model.contact.separation_velocity;
   }
   // A force that is zero to rounding (a row that carries nothing) is no release:
@@ -107,6 +114,8 @@ double locate(const Model& model, Data& data, double t0, double h, int slot, Eve
 void apply_event(const Model& model, Data& data, int slot, Event event) {
   ContactData& c = data.contact;
   if (event == Event::release) {
+    detect_contacts(model, data);  // the pad's depth where it lets go
+    book_pad_release(model, data, slot);
     c.resting[slot] = false;
     data.log.events.push_back({data.t, slot, ContactEvent::Kind::release, 0, 0, 0});
   } else if (event == Event::slip_start) {

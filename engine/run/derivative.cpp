@@ -4,6 +4,7 @@
 
 #include "engine/contact/constrained_dynamics.hpp"
 #include "engine/contact/constraint_rows.hpp"
+#include "engine/contact/pad.hpp"
 #include "engine/dynamics/applied_torques.hpp"
 #include "engine/dynamics/joint_friction.hpp"
 #include "engine/dynamics/forward_dynamics.hpp"
@@ -52,6 +53,8 @@ void energy_rates(const Model& model, Data& data, const StateLayout& s, ConstVec
   // work, zero while C holds) - the friction loss (sliding rows: mu fn |v_t|
   // >= 0; tangent rows of sticking slots: -f_t v_t, zero while they stick).
   const ContactData& c = data.contact;
+  const int pad_slot = s.slot(Energy::pad_loss);
+  if (pad_slot >= 0) N[pad_slot] = c.active.empty() ? 0.0 : pad_loss_rate(model, c);
   if (c.active.empty()) {
     rate(Energy::friction) = rate(Energy::normal_work) = 0.0;
     return;
@@ -60,7 +63,10 @@ void energy_rates(const Model& model, Data& data, const StateLayout& s, ConstVec
   const double normal = c.fn.head(pn).dot(c.Cd.head(pn));
   data.contact.Jf_qd.noalias() = c.Jf * qd;
   rate(Energy::friction) = normal - c.fn.dot(c.Jf_qd);
-  rate(Energy::normal_work) = normal;
+  // A pad's push does work on the arm, -d/dt(k d^2 / 2) - c d'^2: the pad's
+  // own terms (E_pad_elastic, E_pad) hold it, so the table's normal work
+  // leaves those rows out (the table under the pad does none).
+  rate(Energy::normal_work) = pad_slot >= 0 ? normal - pad_power(model, c) : normal;
 }
 
 // E_friction's rate split by contact body (each elbow, then each link): each

@@ -7,6 +7,7 @@
 #include "engine/contact/collision.hpp"
 #include "engine/contact/contact_checks.hpp"
 #include "engine/contact/impact.hpp"
+#include "engine/contact/pad.hpp"
 #include "engine/contact/projection.hpp"
 #include "engine/control/controller.hpp"
 #include "engine/control/digital_loop.hpp"
@@ -109,6 +110,10 @@ void evaluate_outputs(const Model& model, Data& data) {
   if (!model.effects.contact) return;
   data.energy.impact_loss = data.contact.impact_loss;
   data.energy.projection = data.contact.projection_energy;
+  if (!model.has_pads()) return;
+  data.energy.pad_elastic = pad_elastic_energy(model, data.contact) +
+                            relaxing_pad_energy(model, data.contact, data.t);
+  data.energy.pad_loss += pad_relaxation_loss(model, data.contact, data.t);
 }
 
 void reset(const Model& model, Data& data) {

@@ -115,10 +115,21 @@ std::string describe(const Model& model, const Failure& f) {
           << " at t = " << f.t << " s, beyond " << f.limit << " rad/s"
           << " (validity.speed_factor x the motor's free-running speed)" << step_advice(model, f);
       return msg.str();
-    case Failure::Kind::penetration:
+    case Failure::Kind::penetration: {
+      const Pad* pad = f.part == Failure::Part::elbow && model.effects.contact
+                           ? &model.elbows[static_cast<std::size_t>(f.index)].pad
+                           : nullptr;
+      if (pad && !pad->on()) pad = nullptr;
       msg << "invalid run: " << part_name(model, f) << " is " << f.value << " m"
-          << " inside table box " << f.box << " at t = " << f.t << " s"
-          << " (contact.penetration_tolerance " << f.limit << " m): ";
+          << " inside table box " << f.box << " at t = " << f.t << " s";
+      if (pad) {
+        msg << " (its pad's thickness " << pad->thickness << " m + contact.penetration_tolerance "
+            << model.contact.penetration_tolerance << " m): the pad bottomed out: the arm presses "
+               "it harder than its stiffness (" << pad->stiffness << " N/m) can carry within its "
+               "thickness; give a stiffer or thicker pad";
+        return msg.str();
+      }
+      msg << " (contact.penetration_tolerance " << f.limit << " m): ";
       if (!model.effects.contact)
         msg << "effects.contact is false, so the physics ignores the table and nothing holds the "
                "arm up; turn contact on, or keep the arm above the table";
@@ -138,6 +149,7 @@ std::string describe(const Model& model, const Failure& f) {
         msg << "its contact rows did not hold it: the integration is not accurate enough to keep "
                "the contact" << step_advice(model, f);
       return msg.str();
+    }
     case Failure::Kind::energy_balance:
       msg << "invalid run: the energy balance is off by " << f.value << " J at "
           << "t = " << f.t << " s, " << 100 * f.value / std::max(f.flow, 1e-300) << " % of the "

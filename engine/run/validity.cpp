@@ -6,6 +6,7 @@
 
 #include "engine/contact/detection.hpp"
 #include "engine/contact/geometry.hpp"
+#include "engine/contact/pad.hpp"
 #include "engine/control/controller.hpp"
 #include "engine/dynamics/crba.hpp"
 #include "engine/dynamics/energy.hpp"
@@ -59,18 +60,22 @@ bool near(const Eigen::AlignedBox3d& bounds, const Eigen::Vector3d& lo, const Ei
 // With contact on: every slot's distance, as the last detection measured it.
 bool slots_outside_table(const Model& model, Data& data) {
   const ContactData& c = data.contact;
-  const double tolerance = model.contact.penetration_tolerance;
+  // A padded elbow may press its pad down to its thickness; deeper, it bottoms out.
+  auto allowed = [&](int k) {
+    const Pad* pad = slot_pad(model, c, k);
+    return model.contact.penetration_tolerance + (pad ? pad->thickness : 0.0);
+  };
   int deepest = -1;
   for (int k = 0; k < c.slots(); ++k)
-    if (c.detected[k].distance < -tolerance &&
-        (deepest < 0 || c.detected[k].distance < c.detected[deepest].distance))
+    if (-c.detected[k].distance > allowed(k) &&
+        (deepest < 0 || c.detected[k].distance + allowed(k) < c.detected[deepest].distance + allowed(deepest)))
       deepest = k;
   if (deepest < 0) return true;
   const Primitive& p = c.primitive_of(deepest);
   const bool elbow = p.elbow >= 0;
   fail(data, {Failure::Kind::penetration, 0, 0, elbow ? Failure::Part::elbow : Failure::Part::link,
               elbow ? p.elbow : p.link, c.slot(deepest).box, -c.detected[deepest].distance,
-              tolerance});
+              allowed(deepest)});
   return false;
 }
 

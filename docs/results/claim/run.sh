@@ -37,4 +37,11 @@ run samegains --set controller.tuning=null
 run tunedpd --set controller.tuning.integral=0
 run tuned20 --set controller.tuning.bandwidth=20 --set simulation.step=0.25e-3 --set output.every=40
 run nogravity --set effects.gravity=false
+# A rubber elbow pad (model.md, "Compliant pad"): k 4e4 N/m and c 60 N s/m (damping ratio
+# about 0.1) press about 0.36 mm under the resting elbow's 14.5 N; the plan still rests the
+# elbow on the table's surface. Then the same pad with the table believed 0.36 mm lower
+# (the plan rests the elbow at the pad's static depth), and a ten times stiffer pad.
+run pad --set 'contact.pad={stiffness: 4.0e4, damping: 60}'
+run padplanned --set 'contact.pad={stiffness: 4.0e4, damping: 60}' --set 'controller.model={"table.boxes[0].center": [0.65, 0, -0.1002538]}'
+run padstiff --set 'contact.pad={stiffness: 4.0e5, damping: 190}'
 echo ALLDONE

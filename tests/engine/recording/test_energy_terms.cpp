@@ -25,7 +25,7 @@ Model arm_with(bool everything) {
   m.gear_losses = everything;
   m.hand_load.force = everything ? Eigen::Vector3d(0, 0, -1) : Eigen::Vector3d::Zero();
   m.elbows.clear();
-  if (everything) m.elbows.push_back(Elbow{});
+  if (everything) m.elbows.push_back(Elbow{"elbow", 0, Eigen::Vector3d::Zero(), 0.03, Pad{1e4, 1.0, 0.005}});
   return m;
 }
 
@@ -41,16 +41,16 @@ TEST_CASE("energy terms: the state slots of a model with every term (golden orde
       {Energy::electrical_in, 0}, {Energy::joule, 1},          {Energy::viscous, 2},
       {Energy::friction, 3},      {Energy::normal_work, 4},    {Energy::drawn, 5},
       {Energy::regenerated, 6},   {Energy::joint_friction, 7}, {Energy::gear_loss, 8},
-      {Energy::external, 9}};
+      {Energy::external, 9},      {Energy::pad_loss, 10}};
   for (const auto& [term, offset] : golden) {
     CAPTURE(std::string(energy_term(term).name));
     CHECK(s.slot(term) == s.energy + offset);
   }
   for (Energy stored : {Energy::kinetic_links, Energy::kinetic_rotors, Energy::potential,
-                        Energy::magnetic, Energy::impact_loss, Energy::projection})
+                        Energy::magnetic, Energy::impact_loss, Energy::projection, Energy::pad_elastic})
     CHECK(s.slot(stored) == -1);  // not integrated
-  CHECK(s.body_friction == s.energy + 10);  // then one per elbow and per link
-  CHECK(s.size == s.energy + 10 + 1 + 2);
+  CHECK(s.body_friction == s.energy + 11);  // then one per elbow and per link
+  CHECK(s.size == s.energy + 11 + 1 + 2);
   CHECK(s.controlled == s.body_friction);
 }
 
@@ -63,7 +63,7 @@ TEST_CASE("energy terms: a model without the optional groups integrates E_in, E_
   CHECK(s.slot(Energy::drawn) == s.energy + 3);  // motors
   CHECK(s.slot(Energy::regenerated) == s.energy + 4);
   for (Energy absent : {Energy::friction, Energy::normal_work, Energy::joint_friction,
-                        Energy::gear_loss, Energy::external})
+                        Energy::gear_loss, Energy::external, Energy::pad_loss})
     CHECK(s.slot(absent) == -1);
   CHECK(s.body_friction == -1);
   CHECK(s.size == s.energy + 5);
@@ -82,8 +82,8 @@ TEST_CASE("energy terms: names are unique; a summary key is the member's name") 
 
 TEST_CASE("energy terms: the balance adds supplied, subtracts lost and stored, leaves the split out") {
   // docs/model.md's balance: (E_in + E_normal + E_projection + hand force work) -
-  // (E_joule + E_viscous + E_friction + E_impact + E_joint_friction + E_gear) =
-  // change of (KE + PE + E_magnetic); E_drawn - E_regenerated = E_in is no term of it.
+  // (E_joule + E_viscous + E_friction + E_impact + E_joint_friction + E_gear + E_pad) =
+  // change of (KE + PE + E_magnetic + E_pad_elastic); E_drawn - E_regenerated = E_in is no term of it.
   // One term at a time set to 1 J: its effect on supplied - lost - stored is its sign.
   const std::pair<Energy, double> golden[] = {
       {Energy::electrical_in, 1}, {Energy::joule, -1},         {Energy::viscous, -1},
@@ -91,7 +91,7 @@ TEST_CASE("energy terms: the balance adds supplied, subtracts lost and stored, l
       {Energy::magnetic, -1},     {Energy::friction, -1},      {Energy::normal_work, 1},
       {Energy::impact_loss, -1},  {Energy::projection, 1},     {Energy::drawn, 0},
       {Energy::regenerated, 0},   {Energy::joint_friction, -1}, {Energy::gear_loss, -1},
-      {Energy::external, 1}};
+      {Energy::external, 1},      {Energy::pad_loss, -1},      {Energy::pad_elastic, -1}};
   REQUIRE(std::size(golden) == kEnergyTermCount);
   for (const auto& [term, sign] : golden) {
     CAPTURE(std::string(energy_term(term).name));
