@@ -59,6 +59,8 @@ CLAIM_ROWS = [
     ("padplanned", "the same pad, the plan resting the elbow at its static depth (the table "
                    "believed 0.36 mm lower)"),
     ("padstiff", "a pad ten times stiffer, k 4e5 N/m, c 190 N s/m (0.036 mm)"),
+    ("pad1e6", "a pad of 1.2e6 N/m, c 310 N s/m (0.012 mm)"),
+    ("pad4e6", "a pad of 4e6 N/m, c 570 N s/m (0.0036 mm)"),
 ]
 
 
