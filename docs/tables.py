@@ -61,6 +61,7 @@ CLAIM_ROWS = [
     ("padstiff", "a pad ten times stiffer, k 4e5 N/m, c 190 N s/m (0.036 mm)"),
     ("pad1e6", "a pad of 1.2e6 N/m, c 310 N s/m (0.012 mm)"),
     ("pad4e6", "a pad of 4e6 N/m, c 570 N s/m (0.0036 mm)"),
+    ("sensors512", "coarse sensors: 512-count encoders, 1e-4 rad noise (step 0.125 ms)"),
 ]
 
 
@@ -256,6 +257,12 @@ def claim_block(folder):
         hand = claim_cell(p["hand_error_rms"], doc["samples"])
         means = ", ".join(f"{mm(doc['metrics'][v]['hand_error_rms']['mean'])} mm"
                           for v in (ON, OFF))
+        # montecarlo.json counts slips since 2026-12-07 (older rows have no "slips").
+        slipped = doc.get("slips", {}).get(ON, {})
+        if slipped.get("draws_with_slips", 0):
+            label += (f"; the resting elbow slipped in {slipped['draws_with_slips']} of "
+                      f"{doc['samples']} draws, {slipped['median']} slip "
+                      f"event{'' if slipped['median'] == 1 else 's'} a run (median)")
         rows.append([label, energy, hand, means])
         if doc["invalid"]:
             notes.append(f"{name}: {len(doc['invalid'])} invalid runs ("

@@ -63,6 +63,7 @@ struct Sample {
   std::string failure;
   std::map<std::string, double> metrics;
   UnplannedContact unplanned;  // the part the scene does not plan to rest that rested longest
+  long slips = 0;              // slip events: a sticking contact that began to slide (any body)
 };
 
 // The elbows the task holds above the table (the plan's `held`): resting, they
@@ -110,6 +111,7 @@ Sample run_one(const Scenario& scenario, const std::shared_ptr<const Model>& bel
     for (const StudiedMetric& k : kMetrics)
       if (const Metric* m = r.metrics.find(k.name)) s.metrics[k.name] = m->values.front();
     s.unplanned = longest_unplanned_contact(r.metrics, held_elbows(scenario));
+    for (const ContactEvent& e : r.events) s.slips += e.kind == ContactEvent::Kind::slip;
   } catch (const PlanError& e) {
     s.failure = std::string("the plan failed: ") + e.what();
   }
@@ -252,7 +254,7 @@ void write_samples_csv(const std::filesystem::path& path, const std::string& cas
       out << "," << p.key;
     for (const StudiedMetric& k : kMetrics)
       out << "," << k.name << " [" << metric_unit(k.name) << "]";
-    out << ",unplanned_contact_share,unplanned_contact_body,failure\n";
+    out << ",unplanned_contact_share,unplanned_contact_body,slips,failure\n";
     for (std::size_t d = 0; d < draws.size(); ++d)
       for (std::size_t v = 0; v < variants.size(); ++v) {
         const Sample& s = samples[d][v];
@@ -265,12 +267,37 @@ void write_samples_csv(const std::filesystem::path& path, const std::string& cas
           const auto it = s.metrics.find(k.name);
           out << "," << (it == s.metrics.end() ? std::string() : round_trip(it->second));
         }
-        out << "," << round_trip(s.unplanned.share) << "," << s.unplanned.body;
+        out << "," << round_trip(s.unplanned.share) << "," << s.unplanned.body << "," << s.slips;
         std::string failure = s.failure;
         std::replace(failure.begin(), failure.end(), '"', '\'');
         out << ",\"" << failure << "\"\n";
       }
   });
+}
+
+// Per variant, how often its contacts slipped (a sticking contact that began
+// to slide: coarse sensors make a resting elbow chatter), into doc["slips"],
+// and a verdict line for each variant that slipped: its elbow did not stay put.
+void slip_counts(const std::vector<Variant>& variants, const std::vector<std::vector<Sample>>& samples,
+                 Json& doc, Json& verdict) {
+  doc["slips"] = Json::object();
+  for (std::size_t v = 0; v < variants.size(); ++v) {
+    std::vector<long> counts;
+    for (const auto& draw : samples) counts.push_back(draw[v].slips);
+    std::sort(counts.begin(), counts.end());
+    const long with = std::count_if(counts.begin(), counts.end(), [](long n) { return n > 0; });
+    const long median = counts.empty() ? 0 : counts[counts.size() / 2];
+    const long most = counts.empty() ? 0 : counts.back();
+    const std::string name = variants[v].name.empty() ? "run" : variants[v].name;
+    doc["slips"][name] = {{"draws_with_slips", with}, {"median", median}, {"max", most}};
+    if (with == 0) continue;
+    verdict.push_back(name + ": its contacts slipped in " + std::to_string(with) + " of " +
+                      std::to_string(counts.size()) + " draws (median " + std::to_string(median) +
+                      (median == 1 ? " slip event" : " slip events") + " a run, at most " +
+                      std::to_string(most) +
+                      "): a resting elbow that slips does not stay where the plan put it "
+                      "(montecarlo.json slips; samples.csv slips)");
+  }
 }
 
 // Per variant, the draws in which a part the scene does not plan to rest
@@ -448,6 +475,7 @@ Json run_case(const MonteCarloArguments& args, const Scenario& base, const CaseP
     }
   if (variants.size() < 2) verdict.push_back("one variant: nothing to compare (distributions only)");
   unplanned_contact(variants, draws, samples, doc, verdict);
+  slip_counts(variants, samples, doc, verdict);
   doc["pairs"] = pairs;
   doc["invalid"] = invalid;
   doc["verdict"] = verdict;
