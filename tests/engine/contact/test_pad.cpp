@@ -191,3 +191,17 @@ TEST_CASE("pad: prescribe_pad_rows turns a padded row into f_r = f_pad, the othe
         doctest::Approx(1e5 * 1e-4 + m.elbows[0].pad.damping * 0.01));
   CHECK(pad_force(m.elbows[0].pad, 1e-6, 0.0) < 0);  // above the table it would pull
 }
+
+TEST_CASE("pad: pressed beyond its thickness the pad bottoms out: the run is invalid and says so") {
+  // At 1e3 N/m the lever would sink m g l_c / (r k) = 12 mm into a 5 mm pad.
+  const Lever lever;
+  const Model m = lever.model(lever.pad(1e3, 0.5), true, 0.0, 0.0, 0.5, 1e-4);
+  const RunResult r = simulate(m, {});
+  INFO(r.failure);
+  CHECK_FALSE(r.valid);
+  CHECK(r.failure.find("elbow") != std::string::npos);
+  CHECK(r.failure.find("the pad bottomed out") != std::string::npos);
+  CHECK(r.failure.find("its pad's thickness 0.005 m") != std::string::npos);
+  // The same lever on a 5 mm pad of 1e4 N/m sinks 1.2 mm: valid.
+  CHECK(simulate(lever.model(lever.pad(1e4, 0.5), true, 0.0, 0.0, 0.5, 1e-4), {}).valid);
+}
