@@ -92,6 +92,7 @@ std::vector<std::string> Model::active_effects() const {
   if (has_motor()) names.emplace_back(std::string("motor:") + to_string(effects.motor));
   if (has_armature()) names.emplace_back("rotor_inertia");
   if (effects.joint_friction) names.emplace_back("joint_friction");
+  if (has_springs()) names.emplace_back("springs");
   if (effects.contact) {
     names.emplace_back("contact");
     if (effects.friction) names.emplace_back("friction");
@@ -240,6 +241,10 @@ void finalize(Model& model) {
       require(f.coulomb >= 0 && f.breakaway >= f.coulomb && f.stribeck_velocity > 0,
               "joint friction needs 0 <= coulomb <= breakaway and stribeck_velocity > 0");
   }
+  for (const JointSpring& s : model.springs)
+    require(s.joint >= 0 && s.joint < n && std::isfinite(s.torque) && std::isfinite(s.at) &&
+                std::isfinite(s.stiffness) && s.stiffness >= 0,
+            "a joint spring needs a joint of the arm, finite torque and angle, stiffness >= 0");
   if (model.damping.size() == 0) model.damping = Eigen::VectorXd::Zero(n);
   model.planar_axis = planar_axis(model);
   model.joint_rotations.resize(static_cast<std::size_t>(n));

@@ -258,6 +258,17 @@ struct JointFriction {
   double stribeck_velocity = 0.01; // [rad/s] > 0, how fast the breakaway excess fades
 };
 
+// A torsion spring at a joint, a counterbalance: the torque it exerts on the
+// joint is torque - stiffness (q - at), conservative (potential
+// -torque (q - at) + stiffness (q - at)^2 / 2; docs/model.md, "Joint springs").
+// stiffness 0 is a constant-torque spring (a cam or constant-force balancer).
+struct JointSpring {
+  int joint = 0;
+  double torque = 0.0;     // [N m] exerted at q = at, positive along the joint's axis
+  double stiffness = 0.0;  // [N m/rad] >= 0
+  double at = 0.0;         // [rad]
+};
+
 // Constant load at the hand: a point mass carried at the hand point and/or a
 // constant world force on it (e.g. pressing a pen).
 struct HandLoad {
@@ -316,6 +327,7 @@ struct Model {
   // controller live beside the model, control/experiment.hpp).
   HandLoad hand_load;
   std::vector<JointFriction> joint_friction;  // [n] with effects.joint_friction
+  std::vector<JointSpring> springs;           // none: no springs (any number per joint)
   double hand_mass_added = 0;  // [kg] of hand_load.mass already merged into the hand link by finalize()
 
   // Derived by finalize(): reflected motor constants, per joint [dof].
@@ -341,6 +353,7 @@ struct Model {
 
   // Some elbow has a compliant pad (and contact is on).
   bool has_pads() const;
+  bool has_springs() const { return !springs.empty(); }
 
   bool has_motor() const { return effects.motor != MotorModel::none; }
   bool has_current_state() const { return effects.motor == MotorModel::full; }

@@ -27,6 +27,7 @@ inline bool energy_group_present(const Model& model, EnergyGroup group) {
     case EnergyGroup::gear: return model.gear_losses;
     case EnergyGroup::hand_force: return !model.hand_load.force.isZero();
     case EnergyGroup::pads: return model.has_pads();
+    case EnergyGroup::springs: return model.has_springs();
   }
   return false;
 }

@@ -113,6 +113,7 @@ std::optional<EnergyFlow> energy_flow(const Json& summary) {
   outgoing(flow, "kinetic", delta("kinetic_links") + delta("kinetic_rotors"));
   if (flow.motors) outgoing(flow, "magnetic", delta("magnetic"));
   if (f.contains("pad_elastic")) outgoing(flow, "pad_elastic", delta("pad_elastic"));
+  if (f.contains("spring")) outgoing(flow, "spring", delta("spring"));
   // The losses in list order: those every run has, those of contact in a
   // contact run, the others where they are not 0.
   const bool contact = summary.contains("contact") && summary["contact"].is_object() &&

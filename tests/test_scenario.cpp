@@ -3,6 +3,7 @@
 // in test_scenario_contact.cpp; the shared fixtures in test_scenario_helpers.hpp.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -329,6 +330,34 @@ TEST_CASE("joint_friction errors") {
               "x.yaml:10:", "joint_friction.coulomb", "one per joint");
   CHECK_ERROR(two_link_with("effects: {joint_friction: true}\njoint_friction: {stribeck_velocity: 0}\n"),
               "x.yaml:10:", "joint_friction.stribeck_velocity", "must be > 0");
+}
+
+TEST_CASE("springs: a list of torsion springs at joints; absent or null, none; the effects list names them") {
+  const Scenario s = load(two_link_with(R"(
+springs:
+  - {joint: 0, torque: 9.3, stiffness: 5.8, at: 0.6}
+  - {joint: 1, torque: -2}
+)"));
+  REQUIRE(s.model.springs.size() == 2);
+  CHECK(s.model.springs[0].torque == 9.3);
+  CHECK(s.model.springs[0].stiffness == 5.8);
+  CHECK(s.model.springs[0].at == 0.6);
+  CHECK(s.model.springs[1].joint == 1);
+  CHECK(s.model.springs[1].stiffness == 0.0);  // a constant-torque spring
+  const auto effects = s.model.active_effects();
+  CHECK(std::find(effects.begin(), effects.end(), "springs") != effects.end());
+  CHECK(load(kTwoLink).model.springs.empty());
+  CHECK(load(two_link_with("springs: [{joint: 0, torque: 1}]\n"), {"springs=null"}).model.springs.empty());
+}
+
+TEST_CASE("springs errors name the line and key") {
+  CHECK_ERROR(two_link_with("springs: [{joint: 2, torque: 1}]\n"), "x.yaml:9:", "springs[0].joint",
+              "must be a joint of the arm, 0 .. 1");
+  CHECK_ERROR(two_link_with("springs: [{joint: 0}]\n"), "x.yaml:9:", "springs[0].torque", "required key is missing");
+  CHECK_ERROR(two_link_with("springs: [{joint: 0, torque: 1, stiffness: -3}]\n"), "x.yaml:9:",
+              "springs[0].stiffness", ">= 0");
+  CHECK_ERROR(two_link_with("springs: [{joint: 0, torque: 1, rate: 3}]\n"), "x.yaml:9:", "springs[0].rate",
+              "unknown key");
 }
 
 TEST_CASE("motors: gear efficiencies in (0, 1]; below 1 the model keeps a gear loss") {

@@ -8,6 +8,8 @@
 #include "engine/contact/geometry.hpp"
 #include "engine/control/plan.hpp"
 #include "engine/dynamics/kinematics.hpp"
+#include "engine/dynamics/rnea.hpp"
+#include "engine/dynamics/springs.hpp"
 #include "engine/recording/number_text.hpp"
 #include "engine/run/step.hpp"
 #include "engine/run/step_log.hpp"
@@ -135,20 +137,30 @@ std::string place_against_table(const Eigen::Vector3d& centre, double radius,
 
 // Each elbow at the pose the run starts from: the task's first pose (solved
 // as the run solves it) or initial.q.
+// The pose the run starts from and its name; false (after printing why under
+// `heading`) when the task's first pose cannot be solved.
+bool pose_of_start(const Scenario& s, const char* heading, const std::string& label,
+                   Eigen::VectorXd& q, std::string& pose) {
+  const Model& m = s.model;
+  q = m.initial.q.size() == m.dof ? m.initial.q : Eigen::VectorXd::Zero(m.dof);
+  pose = "initial.q";
+  if (!s.experiment.needs_plan()) return true;
+  try {
+    q = start_pose(m, s.experiment);
+    pose = "the task's first pose";
+    return true;
+  } catch (const PlanError& e) {
+    std::cout << heading << label << "the task's first pose: " << e.what() << '\n';
+    return false;
+  }
+}
+
 void print_elbows(const Scenario& s, const std::string& label) {
   const Model& m = s.model;
   if (m.elbows.empty()) return;
-  Eigen::VectorXd q = m.initial.q.size() == m.dof ? m.initial.q : Eigen::VectorXd::Zero(m.dof);
-  std::string pose = "initial.q";
-  if (s.experiment.needs_plan()) {
-    try {
-      q = start_pose(m, s.experiment);
-      pose = "the task's first pose";
-    } catch (const PlanError& e) {
-      std::cout << "elbows     " << label << "the task's first pose: " << e.what() << '\n';
-      return;
-    }
-  }
+  Eigen::VectorXd q;
+  std::string pose;
+  if (!pose_of_start(s, "elbows     ", label, q, pose)) return;
   Data data(m);
   forward_kinematics(m, data, q);
   for (const Elbow& e : m.elbows) {
@@ -165,6 +177,27 @@ void print_elbows(const Scenario& s, const std::string& label) {
     std::cout << ") at " << pose << ": centre " << centre << ", "
               << place_against_table(c, e.radius, m.table) << '\n';
   }
+}
+
+// Each joint spring at the pose the run starts from, beside the torque the
+// joint needs there to hold the arm against gravity (what a counterbalance
+// would take over; the hand load included).
+void print_springs(const Scenario& s, const std::string& label) {
+  const Model& m = s.model;
+  if (!m.has_springs()) return;
+  Eigen::VectorXd q;
+  std::string pose;
+  if (!pose_of_start(s, "springs    ", label, q, pose)) return;
+  Data data(m);
+  forward_kinematics(m, data, q);
+  Eigen::VectorXd holding(m.dof);
+  inverse_dynamics(m, data, data.zero, data.zero, {false, true, false, false}, holding);
+  for (const JointSpring& spring : m.springs)
+    std::cout << "spring     " << label << "joint " << spring.joint << ": "
+              << significant(spring_torque(spring, q[spring.joint])) << " N m at " << pose
+              << " (stiffness " << significant(spring.stiffness)
+              << " N m/rad); gravity asks " << significant(holding[spring.joint])
+              << " N m of the joint there\n";
 }
 
 // What the run does before its first step, done here: the plan (inverse
@@ -245,9 +278,12 @@ int validate_command(const std::string& scenario, const std::vector<std::string>
     print_model(s);
     print_defaults(s);
     print_chain(s);
-    if (s.variants.empty()) print_elbows(s, "");
-    for (const auto& [variant, overrides] : s.variants)  // (the file alone is not run)
-      print_elbows(load_scenario_variant(scenario, variant, sets), variant + ": ");
+    if (s.variants.empty()) print_elbows(s, ""), print_springs(s, "");
+    for (const auto& [variant, overrides] : s.variants) {  // (the file alone is not run)
+      const Scenario v = load_scenario_variant(scenario, variant, sets);
+      print_elbows(v, variant + ": ");
+      print_springs(v, variant + ": ");
+    }
     if (!check_starts(scenario, s, sets)) return exit_bad_input;
     // Every case of the study, with every variant, as montecarlo loads them.
     const auto cases = study::study_cases(s);

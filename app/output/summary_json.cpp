@@ -18,11 +18,14 @@ namespace key = summary_key;
 namespace {
 
 // The terms with a summary key, in the order of engine/recording/energy_terms.hpp;
-// the pads' only in a scene with pads (a rigid scene's summary is as it was).
+// the pads' only in a scene with pads, the springs' only with springs (a scene
+// without them has the summary it had before they existed).
 nlohmann::ordered_json energy_json(const Model& m, const EnergyTerms& e) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
   for (const EnergyTermInfo& t : kEnergyTerms)
-    if (*t.summary_key && (t.group != EnergyGroup::pads || m.has_pads())) j[t.summary_key] = e.*t.value;
+    if (*t.summary_key && (t.group != EnergyGroup::pads || m.has_pads()) &&
+        (t.group != EnergyGroup::springs || m.has_springs()))
+      j[t.summary_key] = e.*t.value;
   return j;
 }
 

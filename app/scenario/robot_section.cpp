@@ -1,5 +1,6 @@
 // robot: base pose, the kinematic chain (planar shorthand, general joints or a
 // URDF), joint damping and the hand point; and the links the scenario names.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -117,6 +118,39 @@ RobotInfo read_robot(const Value& robot, Model& model, const std::string& scenar
   model.damping = read_damping(robot.get("damping"), model);
   read_hand(robot.get("hand"), model, info);
   return info;
+}
+
+}  // namespace elbowsim::loader
+
+namespace elbowsim::loader {
+
+// springs: [{joint, torque, stiffness, at}], torsion springs at the joints (a
+// counterbalance). The joint by index, or by name for robot.urdf.
+std::vector<JointSpring> read_springs(const Value& springs, const Model& model,
+                                      const RobotInfo& robot) {
+  std::vector<JointSpring> out;
+  if (!springs.present()) return out;
+  for (const Value& v : springs.items()) {
+    v.allow_keys({"joint", "torque", "stiffness", "at"});
+    JointSpring s;
+    const Value joint = v.require("joint");
+    const std::vector<std::string>& names = robot.names.joints;
+    const auto named = std::find(names.begin(), names.end(), joint.text());
+    if (named != names.end()) {
+      s.joint = static_cast<int>(named - names.begin());
+    } else {
+      const long j = joint.integer();
+      if (j < 0 || j >= model.dof)
+        joint.fail("must be a joint of the arm, 0 .. " + std::to_string(model.dof - 1) + " (got " +
+                   std::to_string(j) + ")");
+      s.joint = static_cast<int>(j);
+    }
+    s.torque = v.require("torque").number();
+    s.stiffness = value_or(v.get("stiffness"), 0.0, non_negative);
+    s.at = value_or(v.get("at"), 0.0, number);
+    out.push_back(s);
+  }
+  return out;
 }
 
 }  // namespace elbowsim::loader

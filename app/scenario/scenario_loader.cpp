@@ -117,7 +117,7 @@ Scenario read(const Value& root, const Source& source, OverrideSets& sets,
   root.allow_keys({"name", "description", "robot", "motors", "gravity", "effects", "elbows",
                    "table", "contact", "initial", "simulation", "inputs", "output", "render",
                    "task", "controller", "hand_load", "variants", "validity", "warnings",
-                   "uncertainty", "joint_friction", "study"});
+                   "uncertainty", "joint_friction", "springs", "study"});
   Scenario s;
   s.file = source.file();
   Model& model = s.model;
@@ -128,6 +128,7 @@ Scenario read(const Value& root, const Source& source, OverrideSets& sets,
   robot_info = read_robot(robot, model, source.file());
   s.chain = robot_info.names;
   model.gravity = value_or(root.get("gravity"), model.gravity, vec3);
+  model.springs = read_springs(root.get("springs"), model, robot_info);
   model.motors = read_motors(root.get("motors"), model);
   const Value contact = root.get("contact");
   model.elbows = read_elbows(root.get("elbows"),

@@ -73,6 +73,8 @@ std::vector<TableBox> read_table(const Value& table);  // optional; boxes: one o
 ContactOptions read_contact(const Value& contact);     // optional; defaults: ContactOptions
 ValidityOptions read_validity(const Value& validity);  // optional; defaults: ValidityOptions
 WarningOptions read_warnings(const Value& warnings);  // optional; defaults: WarningOptions
+// springs: the joint springs (optional; none when absent or null).
+std::vector<JointSpring> read_springs(const Value& springs, const Model& model, const RobotInfo& robot);
 // joint_friction (with effects.joint_friction): one JointFriction per joint.
 std::vector<JointFriction> read_joint_friction(const Value& section, const Value& effect, int dof);
 // effects.contact: true needs a non-empty elbows list and a table. Call after

@@ -1,6 +1,7 @@
 #include "engine/dynamics/aba.hpp"
 
 #include "engine/dynamics/spatial.hpp"
+#include "engine/dynamics/springs.hpp"
 
 namespace elbowsim {
 
@@ -62,7 +63,13 @@ void acceleration_pass(const Model& model, Data& data, Eigen::Ref<Eigen::VectorX
 void forward_dynamics_aba(const Model& model, Data& data, ConstVec qd,
                           ConstVec tau, Eigen::Ref<Eigen::VectorXd> qdd) {
   velocity_pass(model, data, qd);
-  articulated_pass(model, data, qd, tau);
+  if (model.has_springs()) {  // the springs' torque joins the applied torques
+    data.tau = tau;
+    add_spring_torques(model, data.kinematics_q, 1.0, data.tau);
+    articulated_pass(model, data, qd, data.tau);
+  } else {
+    articulated_pass(model, data, qd, tau);
+  }
   acceleration_pass(model, data, qdd);
 }
 

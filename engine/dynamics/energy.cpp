@@ -1,5 +1,7 @@
 #include "engine/dynamics/energy.hpp"
 
+#include "engine/dynamics/springs.hpp"
+
 namespace elbowsim {
 
 namespace {
@@ -27,6 +29,7 @@ void stored_energy(const Model& model, const Data& data, ConstVec qd, ConstVec c
   if (model.effects.gravity)
     for (int i = 0; i < model.dof; ++i)
       out.potential -= model.links[i].mass * model.gravity.dot(data.com[i]);
+  out.spring = model.has_springs() ? spring_energy(model, data.kinematics_q) : 0.0;
   out.magnetic = model.has_current_state()
                      ? 0.5 * current.dot(model.inductance.cwiseProduct(current))
                      : 0.0;

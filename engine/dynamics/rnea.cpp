@@ -1,5 +1,7 @@
 #include "engine/dynamics/rnea.hpp"
 
+#include "engine/dynamics/springs.hpp"
+
 namespace elbowsim {
 
 namespace {
@@ -61,6 +63,7 @@ void inverse_dynamics(const Model& model, Data& data, ConstVec qd,
   // Motor-reflected terms of eq. (51): Jm qdd + (D + Dm) qd.
   if (model.has_armature()) tau += model.armature.cwiseProduct(qdd);
   if (terms.damping && model.effects.damping) tau += model.viscous.cwiseProduct(qd);
+  if (terms.springs) add_spring_torques(model, data.kinematics_q, -1.0, tau);
 }
 
 }  // namespace elbowsim

@@ -5,7 +5,7 @@
 namespace elbowsim {
 
 void mass_matrix_walker_orin(const Model& model, Data& data) {
-  const InverseDynamicsTerms inertia_only{false, false, false};
+  const InverseDynamicsTerms inertia_only{false, false, false, false};
   for (int i = 0; i < model.dof; ++i) {
     data.unit.setZero();
     data.unit[i] = 1.0;

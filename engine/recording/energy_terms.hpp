@@ -90,7 +90,10 @@ namespace elbowsim {
     "pad loss (negative)", "pad loss (damping, release)", "pads")                                 \
   X(pad_elastic, "E_pad_elastic", "pad_elastic", stored, contact, pads,                           \
     "elastic energy in the pressed elbow pads: sum k d^2 / 2",                                    \
-    "elastic energy of the pads given up", "elastic energy of the pads gained", "pad elastic")
+    "elastic energy of the pads given up", "elastic energy of the pads gained", "pad elastic")     \
+  X(spring, "E_spring", "spring", stored, stored, springs,                                        \
+    "potential energy of the joint springs: sum -torque (q - at) + stiffness (q - at)^2 / 2",     \
+    "energy of the joint springs given up", "energy of the joint springs gained", "springs")
 // clang-format on
 
 enum class Energy {
@@ -111,7 +114,7 @@ struct EnergyTerms {
 
 enum class EnergyRole { supplied, lost, stored, split };
 enum class EnergySource { integrated, stored, contact };
-enum class EnergyGroup { always, contact, motors, joint_friction, gear, hand_force, pads };
+enum class EnergyGroup { always, contact, motors, joint_friction, gear, hand_force, pads, springs };
 
 struct EnergyTermInfo {
   Energy term;

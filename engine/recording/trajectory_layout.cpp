@@ -76,6 +76,7 @@ bool TrajectoryLayout::has_energy_group(const Groups& groups, EnergyGroup group)
     case EnergyGroup::gear: return groups.gear;
     case EnergyGroup::hand_force: return false;  // its work is not recorded
     case EnergyGroup::pads: return groups.pads;
+    case EnergyGroup::springs: return groups.springs;
   }
   return false;
 }
@@ -123,6 +124,7 @@ TrajectoryLayout TrajectoryLayout::from_columns(const std::vector<Column>& colum
   g.joint_friction = has(energy_term(Energy::joint_friction).column);
   g.gear = has(energy_term(Energy::gear_loss).column);
   g.pads = has(energy_term(Energy::pad_loss).column) || has(energy_term(Energy::pad_elastic).column);
+  g.springs = has(energy_term(Energy::spring).column);
   TrajectoryLayout layout(std::move(g));
   const std::vector<Column>& expected = layout.columns();
   auto text = [](const Column& c) { return "'" + c.name + " [" + c.unit + "]'"; };

@@ -51,6 +51,7 @@ class TrajectoryLayout {
     bool joint_friction = false;      // E_joint_friction
     bool gear = false;                // E_gear (gear efficiency below 1)
     bool pads = false;                // E_pad, E_pad_elastic (an elbow has a compliant pad)
+    bool springs = false;             // E_spring (joint springs)
   };
 
   // Whether a run of these groups has the energy terms of `group`.

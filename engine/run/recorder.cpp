@@ -22,6 +22,7 @@ TrajectoryLayout trajectory_layout(const Model& model, bool desired_hand) {
   g.joint_friction = model.effects.joint_friction;
   g.gear = model.gear_losses;
   g.pads = model.has_pads();
+  g.springs = model.has_springs();
   g.friction = model.effects.contact && model.effects.friction;
   if (g.contact)
     for (const Elbow& e : model.elbows) g.elbows.push_back(e.name);

@@ -47,7 +47,8 @@ TEST_CASE("energy terms: the state slots of a model with every term (golden orde
     CHECK(s.slot(term) == s.energy + offset);
   }
   for (Energy stored : {Energy::kinetic_links, Energy::kinetic_rotors, Energy::potential,
-                        Energy::magnetic, Energy::impact_loss, Energy::projection, Energy::pad_elastic})
+                        Energy::magnetic, Energy::impact_loss, Energy::projection, Energy::pad_elastic,
+                        Energy::spring})
     CHECK(s.slot(stored) == -1);  // not integrated
   CHECK(s.body_friction == s.energy + 11);  // then one per elbow and per link
   CHECK(s.size == s.energy + 11 + 1 + 2);
@@ -83,7 +84,7 @@ TEST_CASE("energy terms: names are unique; a summary key is the member's name") 
 TEST_CASE("energy terms: the balance adds supplied, subtracts lost and stored, leaves the split out") {
   // docs/model.md's balance: (E_in + E_normal + E_projection + hand force work) -
   // (E_joule + E_viscous + E_friction + E_impact + E_joint_friction + E_gear + E_pad) =
-  // change of (KE + PE + E_magnetic + E_pad_elastic); E_drawn - E_regenerated = E_in is no term of it.
+  // change of (KE + PE + E_magnetic + E_pad_elastic + E_spring); E_drawn - E_regenerated = E_in is no term of it.
   // One term at a time set to 1 J: its effect on supplied - lost - stored is its sign.
   const std::pair<Energy, double> golden[] = {
       {Energy::electrical_in, 1}, {Energy::joule, -1},         {Energy::viscous, -1},
@@ -91,7 +92,8 @@ TEST_CASE("energy terms: the balance adds supplied, subtracts lost and stored, l
       {Energy::magnetic, -1},     {Energy::friction, -1},      {Energy::normal_work, 1},
       {Energy::impact_loss, -1},  {Energy::projection, 1},     {Energy::drawn, 0},
       {Energy::regenerated, 0},   {Energy::joint_friction, -1}, {Energy::gear_loss, -1},
-      {Energy::external, 1},      {Energy::pad_loss, -1},      {Energy::pad_elastic, -1}};
+      {Energy::external, 1},      {Energy::pad_loss, -1},      {Energy::pad_elastic, -1},
+      {Energy::spring, -1}};
   REQUIRE(std::size(golden) == kEnergyTermCount);
   for (const auto& [term, sign] : golden) {
     CAPTURE(std::string(energy_term(term).name));
