@@ -75,6 +75,7 @@ constexpr OptionSpec kMonteCarlo[] = {
     {"o,out", "DIR", "output folder (default: the scenario's output.folder/montecarlo)"},
     kSet,
     {"case", "AXIS=LEVEL,...", "only the study: cases at these levels (default: all)"},
+    {"variants", "A,B,...", "only these variants, in this order (default: all)"},
     {"no-report", nullptr, "skip report.html"},
     kHelp};
 
@@ -85,6 +86,7 @@ constexpr OptionSpec kSensitivity[] = {
     {"o,out", "DIR", "output folder (default: the scenario's output.folder/sensitivity)"},
     kSet,
     {"case", "AXIS=LEVEL,...", "with a study: the one case to analyse"},
+    {"variants", "A,B", "the two variants to compare, A over B (default: the first two)"},
     {"no-report", nullptr, "skip report.html (the tornado charts are still drawn)"},
     kHelp};
 
@@ -162,7 +164,7 @@ constexpr const char* kSensitivityNotes =
     R"(Runs montecarlo with every uncertain parameter drawn, then with each parameter (as the
 file gives it: a [*] entry moves together) held at either end of its range, the others drawn
 on the same draws: uniform at +-spread, normal at +-2 sigma, range at its bounds. The scenario
-needs two variants. Writes DIR/points/<point>/ (each a montecarlo folder), sensitivity.json,
+needs two variants (with more, the first two or --variants A,B; only those run). Writes DIR/points/<point>/ (each a montecarlo folder), sensitivity.json,
 sensitivity.csv, plots/tornado_<metric>.png and report.html; prints which parameter changes
 each verdict and where the paired ratio crosses 1.
 Exit: 128 + signal when interrupted (the finished points are kept).)";

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cxxopts.hpp>
 #include <iostream>
+#include <sstream>
 #include <thread>
 
 #include "app/command_line.hpp"
@@ -190,6 +191,10 @@ int dispatch(const CommandSpec& spec, const cxxopts::ParseResult& parsed) {
       args.jobs = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     args.report = !parsed.count("no-report");
     if (parsed.count("case")) args.cases = parsed["case"].as<std::string>();
+    if (parsed.count("variants")) {
+      std::stringstream list(parsed["variants"].as<std::string>());
+      for (std::string name; std::getline(list, name, ',');) args.variants.push_back(name);
+    }
     return command == "sensitivity" ? sensitivity_command(args) : montecarlo_command(args);
   }
   if (command == "accuracy" && words.size() == 2) {

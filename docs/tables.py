@@ -4,7 +4,7 @@
     /usr/bin/python3 docs/tables.py [--results DIR] [--doc FILE] [--print | --check]
 
 Reads DIR/study.json (`elbowsim montecarlo scenarios/elbow_experiment.yaml`:
-45 cases, paired ratios with 95 % BCa intervals) and DIR/claim/*.json (the
+90 cases, three arms, paired ratios with 95 % BCa intervals) and DIR/claim/*.json (the
 nominal case under one change each: docs/results/claim/run.sh), and rewrites
 what lies between each marker pair of the document
 
@@ -12,7 +12,8 @@ what lies between each marker pair of the document
     ... (replaced) ...
     <!-- /results:NAME -->
 
-(NAME: verdict, energy, hand, nominal, claim) and nothing else. It prints the
+(NAME: verdict, energy, hand, energy_balanced, hand_balanced, nominal, claim,
+sensitivity) and nothing else. It prints the
 ranges the prose quotes (savings, shares of draws), so the prose can be checked
 against the data; each table also ends with them.
 
@@ -32,12 +33,12 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from marked_blocks import marked, write_or_check  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-ON, OFF = "elbow_on", "elbow_off"
+ON, OFF, BALANCED = "elbow_on", "elbow_off", "elbow_off_balanced"
 
 # The claim rows in table order: the file in claim/ and what it changes.
 # The exact command of each is in claim/run.sh.
 CLAIM_ROWS = [
-    ("nothing", "nothing (the study's case)"),
+    ("nothing", "nothing (the study's case, the table's height known exactly)"),
     ("lower", "table believed 1 mm lower (`controller.model`)"),
     ("higher", "table believed 1 mm higher"),
     ("lower005", "table believed 0.05 mm lower"),
@@ -100,12 +101,13 @@ def load(path):
         sys.exit(f"tables.py: {path}: {e}")
 
 
-def pair(doc):
+def pair(doc, b=None):
+    b = b or OFF
     pairs = doc.get("pairs") or []
     for p in pairs:
-        if p.get("a") == ON and p.get("b") == OFF:
+        if p.get("a") == ON and p.get("b") == b:
             return p
-    sys.exit(f"tables.py: no {ON}/{OFF} pair in {doc.get('case', doc.get('scenario'))}")
+    sys.exit(f"tables.py: no {ON}/{b} pair in {doc.get('case', doc.get('scenario'))}")
 
 
 def table(head, rows):
@@ -113,18 +115,19 @@ def table(head, rows):
     return out + ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
 
 
-# --- the study: 45 cases ---------------------------------------------------------
+# --- the study: 90 cases, three arms ---------------------------------------------
+
+AXES = ("task", "speed", "elbow", "motor")
 
 
 def cases_by_level(study):
     axes = {a["name"]: a["levels"] for a in study["axes"]}
-    for name in ("task", "speed", "elbow"):
+    for name in AXES:
         if name not in axes:
             sys.exit(f"tables.py: study.json has no axis {name!r}")
     by = {}
     for c in study["cases"]:
-        lv = c["levels"]
-        by[lv["task"], lv["speed"], lv["elbow"]] = c
+        by[tuple(c["levels"][a] for a in AXES)] = c
     return axes, by
 
 
@@ -134,18 +137,21 @@ def study_header(path, study, what):
             f"{len(study['cases'])} cases): {what}")
 
 
-ELBOW_HEAD = {"near": "elbow near (34 cm)", "mid": "elbow mid (40 cm)", "far": "elbow far (46 cm)"}
+ELBOW_HEAD = {"near": "near (34 cm)", "mid": "mid (40 cm)", "far": "far (46 cm)"}
+MOTOR_HEAD = {"sized": "sized motors", "large": "150 W motors"}
 
 
-def ratio_table(path, study, metric, what, ranges):
+def ratio_table(path, study, metric, b, what, ranges):
     axes, by = cases_by_level(study)
-    head = ["task", "speed"] + [ELBOW_HEAD.get(e, e) for e in axes["elbow"]]
+    columns = [(e, m) for m in axes["motor"] for e in axes["elbow"]]
+    head = ["task", "speed"] + [f"{MOTOR_HEAD.get(m, m)}, elbow {ELBOW_HEAD.get(e, e)}"
+                                for e, m in columns]
     rows = []
     for task in axes["task"]:
         for speed in axes["speed"]:
             row = [task, speed]
-            for elbow in axes["elbow"]:
-                p = pair(by[task, speed, elbow])[metric]
+            for elbow, motor in columns:
+                p = pair(by[task, speed, elbow, motor], b)[metric]
                 cell = interval(p["ratio"], p["ci95"]) if "ratio" in p else p["outcome"]
                 if p.get("outcome") not in ("lower", None):
                     cell += f" **{p['outcome']}**"
@@ -157,53 +163,58 @@ def ratio_table(path, study, metric, what, ranges):
             + "; ".join(f"{k} {v}" for k, v in ranges.items()) + "."])
 
 
-def corrected(study, metric):
+def corrected(study, metric, b):
     """The study's Holm-corrected count and the draws each side wins (study.json's tally)."""
     for t in study.get("tally", []):
-        if t.get("a") == ON and t.get("b") == OFF:
+        if t.get("a") == ON and t.get("b") == b:
             c = t["corrected"][metric]
             d = c["draws"]
             return (f"lower in {len(c['lower'])}, higher in {len(c['higher'])}, not significant in "
-                    f"{len(c['not significant'])} of {c['tests']}; resting more accurate in "
+                    f"{len(c['not significant'])} of {c['tests']}; resting lower in "
                     f"{d['a_lower']} of {d['a_lower'] + d['b_lower']} draws")
-    sys.exit("tables.py: study.json has no corrected tally for elbow_on/elbow_off")
+    sys.exit(f"tables.py: study.json has no corrected tally for {ON}/{b}")
 
 
-def study_ranges(study):
-    """The numbers the prose quotes, from the 45 cases."""
+def study_ranges(study, b):
+    """The numbers the prose quotes about elbow_on against `b`, from every case."""
     _, by = cases_by_level(study)
-    moving = [c for k, c in by.items() if k[0] != "hold"]
-    hold = [c for k, c in by.items() if k[0] == "hold"]
-    fast_loops = [by[k] for k in by if k[0] == "loops" and k[1] == "fast"]
-    e = lambda cs: [pair(c)["energy_drawn"]["ratio"] for c in cs]
-    h = lambda cs: [pair(c)["hand_error_rms"]["ratio"] for c in cs]
-    win = lambda cs, m: [pair(c)[m]["win_rate"] for c in cs]
-    saving = lambda rs: span([1 - r for r in rs], percent) + " %"
+    select = lambda test: [c for k, c in by.items() if test(*k)]
+    moving = select(lambda t, s, e, m: t != "hold")
+    hold = select(lambda t, s, e, m: t == "hold")
+    e = lambda cs: [pair(c, b)["energy_drawn"]["ratio"] for c in cs]
+    h = lambda cs: [pair(c, b)["hand_error_rms"]["ratio"] for c in cs]
+    win = lambda cs, m: [pair(c, b)[m]["win_rate"] for c in cs]
+    ratios = lambda rs: span(rs, sig)
     mean = lambda cs, v: [c["metrics"][v]["hand_error_rms"]["mean"] for c in cs]
     samples = study["samples"]
-    energy = {
-        "energy saved (1 − ratio), every case": saving(e(by.values())),
-        "hold": saving(e(hold)),
-        "fast loops": saving(e(fast_loops)),
-        "cases where the resting elbow drew less in every draw":
-            f"{sum(w == 1 for w in win(by.values(), 'energy_drawn'))} of {len(by)}",
-    }
-    floors = [f for c in by.values() for f in c["accuracy_floor"].values()]
-    medians = [c["metrics"][v]["hand_error_rms"]["median"] for c in by.values() for v in (ON, OFF)]
+    energy = {"energy ratio, every case": ratios(e(by.values()))}
+    for motor in ("sized", "large"):
+        energy[f"{motor} motors"] = ratios(e(select(lambda t, s, el, m: m == motor)))
+    energy["hold"] = ratios(e(hold))
+    energy["cases where the resting elbow drew less in every draw"] = (
+        f"{sum(w == 1 for w in win(by.values(), 'energy_drawn'))} of {len(by)}")
+    energy["after Holm's correction"] = corrected(study, "energy_drawn", b)
     hand = {
-        "RMS hand error reduced (1 − ratio), moving tasks": saving(h(moving)),
+        "RMS hand error ratio, moving tasks": ratios(h(moving)),
         "draws where the resting elbow is more accurate, moving tasks":
             span(win(moving, "hand_error_rms"), percent) + " %",
-        "hold": saving(h(hold)) + ", in " + span([round(w * samples) for w in
+        "hold": ratios(h(hold)) + ", in " + span([round(w * samples) for w in
                                                   win(hold, "hand_error_rms")], str)
-        + f" of {samples} draws, mean {span(mean(hold, OFF), mm)} mm off against "
-        f"{span(mean(hold, ON), mm)} mm on",
-        "largest accuracy floor": f"{sig(1e6 * max(floors))} µm",
-        "smallest median RMS hand error": f"{sig(1e6 * min(medians))} µm",
-        "after Holm's correction (sign tests over the cases)": corrected(study, "hand_error_rms"),
-        "invalid runs": str(sum(c["invalid_runs"] for c in by.values())),
+        + f" of {samples} draws, mean {span(mean(hold, b), mm)} mm against "
+        f"{span(mean(hold, ON), mm)} mm resting",
+        "after Holm's correction (sign tests over the cases)": corrected(study, "hand_error_rms", b),
     }
     return energy, hand
+
+
+def run_ranges(study):
+    """What every case shares: the accuracy floors, the smallest error, the invalid runs."""
+    _, by = cases_by_level(study)
+    floors = [f for c in by.values() for f in c["accuracy_floor"].values()]
+    medians = [m["hand_error_rms"]["median"] for c in by.values() for m in c["metrics"].values()]
+    return {"largest accuracy floor": f"{sig(1e6 * max(floors))} µm",
+            "smallest median RMS hand error": f"{sig(1e6 * min(medians))} µm",
+            "invalid runs": str(sum(c["invalid_runs"] for c in by.values()))}
 
 
 def verdict_block(path, study):
@@ -215,18 +226,21 @@ def verdict_block(path, study):
 # --- the nominal case and the claim's limits ----------------------------------------
 
 
-def nominal_block(path, doc):
+NOMINAL = ("loops", "nominal", "mid", "sized")
+
+
+def nominal_block(path, study):
+    _, by = cases_by_level(study)
+    case = by[NOMINAL]
     rows = []
-    for v in doc["variants"]:
-        m = doc["metrics"][v]
+    for v, m in case["metrics"].items():
         q = lambda name, scale=1.0, unit="J": (
             f"{sig(scale * m[name]['mean'])} {unit} ({sig(scale * m[name]['ci95'][0])}–"
             f"{sig(scale * m[name]['ci95'][1])})")
-        rows.append([v, q("energy_drawn"), q("energy_regenerated"), q("energy_in"),
-                     q("hand_error_rms", 1e3, "mm")])
-    head = ["variant", "drawn from the supply", "fed back", "net energy in", "RMS hand error"]
-    return ([f"Generated by `docs/tables.py` from `{rel(path)}` (case {doc['case']}, "
-             f"{doc['samples']} draws, seed {doc['seed']}): means over the draws with their "
+        rows.append([v, q("energy_drawn"), q("energy_in"), q("hand_error_rms", 1e3, "mm")])
+    head = ["variant", "drawn from the supply", "net energy in", "RMS hand error"]
+    return ([f"Generated by `docs/tables.py` from `{rel(path)}` (case {case['case']}, "
+             f"{study['samples']} draws, seed {study['seed']}): means over the draws with their "
              f"95 % BCa intervals.", ""] + table(head, rows))
 
 
@@ -252,7 +266,7 @@ def claim_block(folder):
         if energy is None:
             reason = p["energy_drawn"].get("reason", "")
             rows.append([label, f"{p['energy_drawn']['outcome']}: {reason} "
-                         f"({len(doc['invalid'])} of {2 * doc['samples']} runs invalid)", "", ""])
+                         f"({len(doc['invalid'])} of {len(doc['variants']) * doc['samples']} runs invalid)", "", ""])
             continue
         hand = claim_cell(p["hand_error_rms"], doc["samples"])
         means = ", ".join(f"{mm(doc['metrics'][v]['hand_error_rms']['mean'])} mm"
@@ -271,10 +285,11 @@ def claim_block(folder):
             "RMS hand error (mean), on and off"]
     first = load(os.path.join(folder, CLAIM_ROWS[0][0] + ".json"))
     lines = [f"Generated by `docs/tables.py` from `{rel(folder)}/*.json` (`elbowsim montecarlo "
-             f"scenarios/elbow_experiment.yaml --case {first['case']}` with each change, "
-             f"`{rel(folder)}/run.sh`; {first['samples']} draws, seed {first['seed']}): paired "
-             f"ratios on / off (geometric mean over the draws) with 95 % BCa intervals; all "
-             f"runs valid unless said.", ""] + table(head, rows)
+             f"scenarios/elbow_experiment.yaml --case {first['case']} --variants {ON},{OFF}` with "
+             f"the table's height known exactly and each change, `{rel(folder)}/run.sh`; "
+             f"{first['samples']} draws, seed {first['seed']}): paired ratios on / off (geometric "
+             f"mean over the draws) with 95 % BCa intervals; all runs valid unless said.", ""]
+    lines += table(head, rows)
     if notes:
         lines += ["", "Invalid runs: " + "; ".join(notes) + "."]
     return lines
@@ -283,8 +298,8 @@ def claim_block(folder):
 # The table box's centre height in scenarios/elbow_experiment.yaml: what the controller
 # believes; a held table height is shown as its offset from it.
 TABLE_Z = -0.0998938
-SENSITIVITY_RUNS = [("shipped", "the study's uncertainty"),
-                    ("table", "and the table's height ±0.1 mm")]
+SENSITIVITY_RUNS = [("shipped", "the study's uncertainty (the table's height ±0.1 mm)"),
+                    ("tableknown", "the table's height known exactly")]
 
 
 def sensitivity_cell(point):
@@ -329,24 +344,25 @@ def sensitivity_block(folder):
 def build_blocks(folder):
     study_path = os.path.join(folder, "study.json")
     study = load(study_path)
-    energy_ranges, hand_ranges = study_ranges(study)
     claim = os.path.join(folder, "claim")
-    blocks = {
-        "verdict": verdict_block(study_path, study),
-        "energy": ratio_table(study_path, study, "energy_drawn",
-                              "paired ratios of the energy drawn from the supply, elbow_on / "
-                              "elbow_off (geometric mean over the draws), with 95 % BCa "
-                              "intervals; below 1 the resting elbow draws less.", energy_ranges),
-        "hand": ratio_table(study_path, study, "hand_error_rms",
-                            "paired ratios of the RMS hand error, elbow_on / elbow_off, with "
-                            "95 % BCa intervals; below 1 the resting elbow is more accurate.",
-                            hand_ranges),
-        "nominal": nominal_block(os.path.join(claim, "nothing.json"),
-                                 load(os.path.join(claim, "nothing.json"))),
-        "claim": claim_block(claim),
-        "sensitivity": sensitivity_block(os.path.join(folder, "sensitivity")),
-    }
-    return blocks, {"energy": energy_ranges, "hand error": hand_ranges}
+    blocks, ranges = {"verdict": verdict_block(study_path, study)}, {}
+    for b, name, who in ((OFF, "", "the held-up arm"), (BALANCED, "_balanced", "the counterbalanced arm")):
+        energy_ranges, hand_ranges = study_ranges(study, b)
+        blocks["energy" + name] = ratio_table(
+            study_path, study, "energy_drawn", b,
+            f"paired ratios of the energy drawn from the supply, {ON} / {b} (geometric mean over "
+            f"the draws), with 95 % BCa intervals; below 1 the resting elbow draws less than "
+            f"{who}.", energy_ranges)
+        blocks["hand" + name] = ratio_table(
+            study_path, study, "hand_error_rms", b,
+            f"paired ratios of the RMS hand error, {ON} / {b}, with 95 % BCa intervals; below 1 "
+            f"the resting elbow is more accurate than {who}.", hand_ranges)
+        ranges[f"energy on/{b}"], ranges[f"hand on/{b}"] = energy_ranges, hand_ranges
+    ranges["every run"] = run_ranges(study)
+    blocks["nominal"] = nominal_block(study_path, study)
+    blocks["claim"] = claim_block(claim)
+    blocks["sensitivity"] = sensitivity_block(os.path.join(folder, "sensitivity"))
+    return blocks, ranges
 
 
 def main():
@@ -364,7 +380,7 @@ def main():
     print("ranges (what the prose may quote):")
     for table_name, r in ranges.items():
         for k, v in r.items():
-            print(f"  {table_name:10s} {k}: {v}")
+            print(f"  {table_name:28s} {k}: {v}")
     if args.print:
         for name, lines in blocks.items():
             print("\n" + marked("results", name, lines))

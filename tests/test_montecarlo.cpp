@@ -244,7 +244,7 @@ TEST_CASE(
   PairedSamples floor = s;  // errors of 1-3 mm against a 0.2 mm floor: below 10 x
   floor.floor_a = 2e-4;
   CHECK(verdict(floor)[2] ==
-        "RMS hand error: no verdict (the medians (1.86 mm, 1.95 mm) are not above 10 x the "
+        "RMS hand error, on against off: no verdict (the medians (1.86 mm, 1.95 mm) are not above 10 x the "
         "accuracy floor "
         "(200 µm, 100 nm; step halving of the nominal runs): they measure the integrator, not the "
         "arm)");
@@ -253,7 +253,7 @@ TEST_CASE(
   invalid.dropped = 3;
   v = verdict(invalid);
   CHECK(v[0] ==
-        "electrical energy drawn from the supply: no verdict (3 of 20 draws have an invalid run; "
+        "electrical energy drawn from the supply, on against off: no verdict (3 of 20 draws have an invalid run; "
         "a verdict allows 10 %)");
   PairedSamples one = s;  // 1 of 20: the verdict stands, the draw is named as left out
   one.dropped = 1;
@@ -284,13 +284,13 @@ TEST_CASE(
   const auto v = p["verdict"].get<std::vector<std::string>>();
   REQUIRE(v.size() == 3);
   CHECK(v[0] ==
-        "electrical energy drawn from the supply: no verdict (a ratio needs values > 0; 2 pairs "
+        "electrical energy drawn from the supply, on against off: no verdict (a ratio needs values > 0; 2 pairs "
         "have a value <= 0 or not finite: draws 104, 109)");
   CHECK(p["energy_drawn"]["outcome"] == "no verdict");
   CHECK(p["energy_drawn"]["draws"] == nlohmann::json::array({104, 109}));
   CHECK_FALSE(p["energy_drawn"].contains("ratio"));
   CHECK(v[1] ==
-        "net electrical energy (drawn − regenerated): no verdict (energy_in is not recorded in "
+        "net electrical energy (drawn − regenerated), on against off: no verdict (energy_in is not recorded in "
         "these runs)");
   CHECK(v[2].starts_with("RMS hand error: on 70 % lower than off"));
   CHECK(p["hand_error_rms"]["outcome"] == "lower");
@@ -303,7 +303,7 @@ TEST_CASE(
   CHECK(q["hand_error_rms"]["ratio"].get<double>() == doctest::Approx(0.3));
   CHECK_FALSE(q["hand_error_rms"].contains("ci95"));
   CHECK(q["hand_error_rms"]["outcome"] == "no verdict");
-  CHECK(q["verdict"][2] == "RMS hand error: no verdict (3 pairs; an interval needs at least 15)");
+  CHECK(q["verdict"][2] == "RMS hand error, on against off: no verdict (3 pairs; an interval needs at least 15)");
 }
 
 namespace {
@@ -398,6 +398,35 @@ TEST_CASE(
   CHECK(html.find("difference A − B") != std::string::npos);
 }
 
+TEST_CASE("cli: montecarlo --variants runs those variants in that order (the ratio is the first's over the second's); an unknown or repeated name is a usage error") {
+  const fs::path dir = elbowsim::testing::scratch("cli", "montecarlo_variants");
+  const fs::path file = dir / "lowering.yaml";
+  std::ofstream(file) << kLowering;
+  auto run = [&](const std::string& variants, const std::string& out) {
+    return elbowsim::testing::run_elbowsim("montecarlo " + file.string() + " --samples 3 --jobs 2 --no-report --variants " +
+                                           variants + " --out " + (dir / out).string());
+  };
+  const auto both = run("held,lowered", "swapped");
+  INFO(both.output);
+  REQUIRE(both.exit_code == 0);
+  const auto doc = nlohmann::json::parse(elbowsim::testing::slurp(dir / "swapped" / "montecarlo.json"));
+  REQUIRE(doc["pairs"].size() == 1);
+  CHECK(doc["pairs"][0]["a"] == "held");
+  CHECK(doc["pairs"][0]["b"] == "lowered");
+  const auto one = run("held", "one");
+  REQUIRE(one.exit_code == 0);
+  const auto single = nlohmann::json::parse(elbowsim::testing::slurp(dir / "one" / "montecarlo.json"));
+  CHECK(single["pairs"].empty());
+  CHECK(single["draws"].contains("held"));
+  CHECK_FALSE(single["draws"].contains("lowered"));
+  const auto unknown = run("held,raised", "unknown");
+  CHECK(unknown.exit_code == 2);
+  CHECK(unknown.output.find("has no variant \"raised\" (it has lowered, held)") != std::string::npos);
+  const auto twice = run("held,held", "twice");
+  CHECK(twice.exit_code == 2);
+  CHECK(twice.output.find("--variants names held twice") != std::string::npos);
+}
+
 TEST_CASE(
     "cli: montecarlo: 3 draws give no interval and no verdict; 30 give log-scale intervals above "
     "0") {
@@ -417,7 +446,7 @@ TEST_CASE(
   auto [few_output, few] = run(3);
   for (const char* what : {"electrical energy drawn from the supply",
                            "net electrical energy (drawn − regenerated)", "RMS hand error"})
-    CHECK(few_output.find(std::string(what) +
+    CHECK(few_output.find(std::string(what) + ", lowered against held" +
                           ": no verdict (3 pairs; an interval needs at least 15)") !=
           std::string::npos);
   CHECK(few_output.find("CI") == std::string::npos);

@@ -99,6 +99,9 @@ struct MonteCarloArguments {
   // relative law) or value (a range) in every draw, the others drawn as usual:
   // sensitivity's points. Empty: every parameter drawn.
   std::vector<std::pair<std::string, double>> held;
+  // --variants A,B,...: only these of the scenario's variants, in this order
+  // (the first pair's ratio is A over B). Empty: every variant.
+  std::vector<std::string> variants;
 };
 int montecarlo_command(const MonteCarloArguments& args);
 

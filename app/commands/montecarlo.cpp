@@ -369,6 +369,21 @@ std::vector<CasePlan> plan_cases(const MonteCarloArguments& args, const Scenario
                                  const std::filesystem::path& folder) {
   std::vector<std::string> names;
   for (const auto& [name, overrides] : base.variants) names.push_back(name);
+  if (!args.variants.empty()) {  // --variants: these, in this order
+    for (const std::string& name : args.variants)
+      if (std::find(names.begin(), names.end(), name) == names.end())
+      {
+        std::string known;
+        for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+        throw std::invalid_argument("--variants: " + args.scenario + " has no variant \"" + name + "\" (" +
+                                    (names.empty() ? "it has none)" : "it has " + known + ")"));
+      }
+    for (std::size_t k = 0; k < args.variants.size(); ++k)
+      if (std::find(args.variants.begin(), args.variants.begin() + long(k), args.variants[k]) !=
+          args.variants.begin() + long(k))
+        throw std::invalid_argument("--variants names " + args.variants[k] + " twice");
+    names = args.variants;
+  }
   if (names.empty()) names.push_back("");
   std::vector<std::string> base_keys;
   for (const auto& p : base.uncertainty.parameters) base_keys.push_back(p.key);

@@ -91,9 +91,12 @@ int sensitivity_command(const MonteCarloArguments& args) {
     if (base.uncertainty.parameters.empty())
       return usage_error(args.scenario +
                          " has no uncertainty: parameters to hold (scenarios/README.md, uncertainty)");
-    if (base.variants.size() != 2)
+    if (base.variants.size() < 2)
       return usage_error("a verdict's sensitivity needs two variants to compare (" + args.scenario + " has " +
                          std::to_string(base.variants.size()) + ")");
+    if (!args.variants.empty() && args.variants.size() != 2)
+      return usage_error("sensitivity: --variants needs two variants, A,B (got " +
+                         std::to_string(args.variants.size()) + ")");
     const std::vector<study::StudyCase> cases = study::select_cases(base, args.cases);
     if (cases.size() != 1)
       return usage_error("one case at a time: name it with --case AXIS=LEVEL,... (the selection has " +
@@ -120,6 +123,9 @@ int sensitivity_command(const MonteCarloArguments& args) {
     for (std::size_t k = 0; k < points.size(); ++k) {
       std::cout << "sensitivity: point " << k + 1 << " of " << points.size() << ": " << points[k].what << '\n';
       MonteCarloArguments point = args;
+      // One pair: the two named, else the scenario's first two (the others are not run).
+      if (point.variants.empty())
+        point.variants = {base.variants[0].first, base.variants[1].first};
       point.out = (folder / "points" / points[k].name).string();
       point.held = points[k].held;
       point.report = false;

@@ -84,7 +84,8 @@ nlohmann::ordered_json paired_verdict(const PairedSamples& s, std::uint64_t seed
       p[m]["outcome"] = "no verdict";
       p[m]["reason"] = reason;
       if (!draws.empty()) p[m]["draws"] = draws;
-      verdict.push_back(std::string(q.what) + ": no verdict (" + reason +
+      // Named by its pair: a study of three variants prints three of each.
+      verdict.push_back(std::string(q.what) + ", " + s.a + " against " + s.b + ": no verdict (" + reason +
                         (draws.empty() ? "" : ": " + draw_list(draws)) + ")");
     };
     const auto ia = s.a_values.find(m), ib = s.b_values.find(m);
