@@ -218,8 +218,8 @@ TEST_CASE("cli: --expect naming a metric that is not there fails before simulati
   const Outcome bare = run("run " + experiment + " --out " + dir.string() +
                            " --no-render --expect 'metrics.energy_in < 3'");
   CHECK(bare.exit_code == 2);
-  CHECK(bare.output.find("did you mean elbow_on.metrics.energy_in or elbow_off.metrics.energy_in?") !=
-        std::string::npos);
+  CHECK(bare.output.find("did you mean elbow_on.metrics.energy_in, elbow_off.metrics.energy_in or "
+                         "elbow_off_balanced.metrics.energy_in?") != std::string::npos);
   CHECK(fs::is_empty(dir));
   // A scene without variants; lists (warnings) hold any index before the run.
   const Outcome single = run("run " + kPendulum + " --out " + dir.string() +
@@ -693,7 +693,7 @@ TEST_CASE("cli: summary.json names its program and gives every number its unit")
     if (map.contains("metrics.hand_error_rms")) CHECK(map["metrics.hand_error_rms"] == "m");
     if (map.contains("metrics.current_peak")) CHECK(map["metrics.current_peak"] == "A");
   }
-  CHECK(files == 4);  // pendulum, pd's two variants, adaptive
+  CHECK(files == 5);  // pendulum, pd's three variants, adaptive
   for (const char* key : {"contact.bodies.link3.force_mean", "contact.bodies.link3.slips",
                           "step_check.metrics.hand_error_rms.floor", "control_loop.sample_rate",
                           "settings.atol", "metrics.rest_fraction.elbow"})

@@ -35,10 +35,12 @@ constexpr int kWidth = 160, kHeight = 120;
 const std::string kExperiment =
     std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_experiment.yaml";
 
-// The experiment cut to 0.4 s, drawn at 160x96 and 10 fps: 5 frames per variant.
+// The experiment cut to 0.4 s, drawn at 160x96 and 10 fps: 5 frames per
+// variant; two of its three arms (resting, held up), two panels.
 std::string short_experiment(const fs::path& out, const std::string& more) {
   return std::string(ELBOWSIM_BINARY) + " run " + kExperiment + " --out " + out.string() +
-         " --set simulation.duration=0.4 --set 'render.size=[160, 96]' --set render.fps=10 " + more;
+         " --set simulation.duration=0.4 --set 'render.size=[160, 96]' --set render.fps=10"
+         " --set 'variants={elbow_on: {}, elbow_off: {task.elbow_clearance: 0.02}}' " + more;
 }
 
 // A frame sequence's PNGs, read back.

@@ -192,17 +192,18 @@ TEST_CASE("cli: a Monte Carlo study names the draws in which a link rested on th
   // held-up arm's for almost the whole run).
   const fs::path dir = elbowsim::testing::scratch("cli", "mc_bodies");
   const auto out = run_elbowsim("montecarlo " + kExperiment +
-                                " --case task=loops,speed=nominal,elbow=mid --set controller.type=pd " +
+                                " --case task=loops,speed=nominal,elbow=mid,motor=sized --variants elbow_on,elbow_off"
+                                " --set controller.type=pd " +
                                 kSharedGains + " --samples 3 --no-report --out " + dir.string());
   INFO(out.output);
   REQUIRE(out.exit_code == 0);
   CHECK(has(out.output, "elbow_off: in 3 of 3 draws a part the scene does not plan to rest lay on the table"));
-  const auto doc = nlohmann::json::parse(slurp(dir / "loops-nominal-mid" / "montecarlo.json"));
+  const auto doc = nlohmann::json::parse(slurp(dir / "loops-nominal-mid-sized" / "montecarlo.json"));
   const auto& off = doc["unplanned_contact"]["elbow_off"];
   CHECK(off["draws"].size() == 3);
   CHECK(off["body"] == "link3");
   CHECK(off["largest_share"].get<double>() > 0.5);
-  const std::string samples = slurp(dir / "loops-nominal-mid" / "samples.csv");
+  const std::string samples = slurp(dir / "loops-nominal-mid-sized" / "samples.csv");
   CHECK(has(samples, "unplanned_contact_share,unplanned_contact_body,slips,failure"));
   CHECK(has(samples, ",link3,"));
 }
@@ -212,17 +213,18 @@ TEST_CASE("cli: a Monte Carlo study counts each run's slips and says which arm's
   // and slips over and over (~215 slip events in 1.6 s); the held-up arm touches nothing.
   const fs::path dir = elbowsim::testing::scratch("cli", "mc_slips");
   const auto out = run_elbowsim("montecarlo " + kExperiment +
-                                " --case task=loops,speed=nominal,elbow=mid --set contact.friction.mu=0.1"
+                                " --case task=loops,speed=nominal,elbow=mid,motor=sized --variants elbow_on,elbow_off"
+                                " --set contact.friction.mu=0.1"
                                 " --set task.duration=1.5 --set task.start_delay=0.05 --samples 3"
                                 " --no-report --out " + dir.string());
   INFO(out.output);
   REQUIRE(out.exit_code == 0);
   CHECK(has(out.output, "elbow_on: its contacts slipped in 3 of 3 draws"));
   CHECK_FALSE(has(out.output, "elbow_off: its contacts slipped"));
-  const auto doc = nlohmann::json::parse(slurp(dir / "loops-nominal-mid" / "montecarlo.json"));
+  const auto doc = nlohmann::json::parse(slurp(dir / "loops-nominal-mid-sized" / "montecarlo.json"));
   CHECK(doc["slips"]["elbow_on"]["draws_with_slips"] == 3);
   CHECK(doc["slips"]["elbow_on"]["median"].get<long>() > 10);
   CHECK(doc["slips"]["elbow_off"]["draws_with_slips"] == 0);
-  const std::string samples = slurp(dir / "loops-nominal-mid" / "samples.csv");
+  const std::string samples = slurp(dir / "loops-nominal-mid-sized" / "samples.csv");
   CHECK(has(samples, "unplanned_contact_body,slips,failure"));
 }

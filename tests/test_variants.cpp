@@ -296,19 +296,27 @@ TEST_CASE("sweep: one folder and one sweep.csv row per value, numbers as in the 
             .exit_code == 2);
 }
 
-TEST_CASE("the shipped experiment runs at a short duration; its comparison has both variants") {
+TEST_CASE("the shipped experiment runs at a short duration; its comparison has all three arms; the counterbalance cuts the held-up arm's energy") {
   const fs::path dir = scratch("variants", "experiment");
   const std::string scene = std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_experiment.yaml";
   const Outcome r = run("run " + scene + " --out " + dir.string() +
                         " --set task.duration=1.5 --set task.start_delay=0.05 --no-render"
-                        " --expect 'elbow_on.metrics.energy_in < elbow_off.metrics.energy_in'");
+                        " --expect 'elbow_on.metrics.energy_in < elbow_off.metrics.energy_in'"
+                        " --expect 'elbow_off_balanced.metrics.energy_in < 0.5 * elbow_off.metrics.energy_in'");
   INFO(r.output);
   REQUIRE(r.exit_code == 0);
   const auto rows = read_csv(dir / "comparison.csv");
-  REQUIRE(rows.size() == 3);  // header + elbow_on + elbow_off
+  REQUIRE(rows.size() == 4);  // header + elbow_on + elbow_off + elbow_off_balanced
   CHECK(rows[1][0] == "elbow_on");
   CHECK(rows[2][0] == "elbow_off");
-  for (const char* variant : {"elbow_on", "elbow_off"}) {
+  CHECK(rows[3][0] == "elbow_off_balanced");
+  // The springs are in the balanced arm's plant and its account, and only there.
+  const auto balanced = nlohmann::json::parse(slurp(dir / "elbow_off_balanced" / "summary.json"));
+  CHECK(balanced["energy_final"].contains("spring"));
+  CHECK(std::abs(balanced["balance_residual"].get<double>()) <
+        1e-3 * balanced["energy_final"]["electrical_in"].get<double>());
+  CHECK_FALSE(nlohmann::json::parse(slurp(dir / "elbow_off" / "summary.json"))["energy_final"].contains("spring"));
+  for (const char* variant : {"elbow_on", "elbow_off", "elbow_off_balanced"}) {
     const auto summary = nlohmann::json::parse(slurp(dir / variant / "summary.json"));
     CHECK(summary["completed"] == true);
     CHECK(summary["valid"] == true);  // with the tuned PID's integral action
