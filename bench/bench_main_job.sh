@@ -1,8 +1,8 @@
 #!/bin/bash
 # The main job (README command 1) and its video, for one or more elbowsim
 # binaries taken in turns (e.g. main's and a branch's, both built Release):
-# - run: `elbowsim run scenarios/elbow_experiment.yaml --out DIR` (two
-#   variants, their videos, the side-by-side, the reports), total CPU of the
+# - run: `elbowsim run scenarios/elbow_experiment.yaml --out DIR` (its
+#   variants, three since the counterbalanced arm, their videos, the side-by-side, the reports), total CPU of the
 #   process (and its children, when videos went to an ffmpeg process) as
 #   /usr/bin/time gives it (user + sys),
 #   and wall time;

@@ -1,6 +1,6 @@
 // Monte Carlo throughput: the shipped experiment's nominal case
-// (scenarios/elbow_experiment.yaml, loops-nominal-mid: both variants per
-// draw) as `elbowsim montecarlo` runs it, with --jobs 1 and --jobs 2
+// (scenarios/elbow_experiment.yaml, loops-nominal-mid-sized: the resting and
+// the held-up arm per draw, as the measurements before the third arm) as `elbowsim montecarlo` runs it, with --jobs 1 and --jobs 2
 // alternately (so both see the same load), wall clock. Prints the medians,
 // draws per second and the speed-up of two jobs.
 //
@@ -45,7 +45,8 @@ double one_study(int jobs, long samples) {
   args.samples = samples;
   args.jobs = jobs;
   args.report = false;
-  args.cases = "task=loops,speed=nominal,elbow=mid";
+  args.cases = "task=loops,speed=nominal,elbow=mid,motor=sized";
+  args.variants = {"elbow_on", "elbow_off"};
   std::streambuf* quiet = std::cout.rdbuf(nullptr);  // the command's own lines
   const auto start = std::chrono::steady_clock::now();
   const int code = elbowsim::montecarlo_command(args);

@@ -207,3 +207,27 @@ TEST_CASE("cli: sensitivity needs two variants and one case (exit 2, the reason)
   CHECK(has(study.output, "one case at a time: name it with --case"));
   CHECK_FALSE(fs::exists(dir / "study" / "sensitivity.json"));
 }
+
+TEST_CASE("cli: sensitivity with three variants compares the first two, or the --variants pair, and runs only those") {
+  const fs::path dir = t::scratch("cli", "sensitivity_three");
+  std::ofstream(dir / "three.yaml") << kPlanted + "  light: {hand_load.mass: 0.05}\n";
+  const auto first_two = t::run_elbowsim("sensitivity " + (dir / "three.yaml").string() +
+                                         " --samples 3 --no-report --out " + (dir / "first").string());
+  INFO(first_two.output);
+  REQUIRE(first_two.exit_code == 0);
+  const auto centre = nlohmann::json::parse(
+      t::slurp(dir / "first" / "points" / "every_parameter_drawn" / "montecarlo.json"));
+  CHECK(centre["draws"].contains("loaded"));
+  CHECK(centre["draws"].contains("heavy_forearm"));
+  CHECK_FALSE(centre["draws"].contains("light"));  // not run
+  const auto named = t::run_elbowsim("sensitivity " + (dir / "three.yaml").string() +
+                                     " --samples 3 --no-report --variants light,loaded --out " + (dir / "named").string());
+  REQUIRE(named.exit_code == 0);
+  const auto doc = nlohmann::json::parse(t::slurp(dir / "named" / "sensitivity.json"));
+  CHECK(doc["metrics"][0]["a"] == "light");
+  CHECK(doc["metrics"][0]["b"] == "loaded");
+  const auto one = t::run_elbowsim("sensitivity " + (dir / "three.yaml").string() +
+                                   " --samples 3 --variants light --out " + (dir / "one").string());
+  CHECK(one.exit_code == 2);
+  CHECK(has(one.output, "--variants needs two variants, A,B (got 1)"));
+}
