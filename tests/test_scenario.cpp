@@ -353,6 +353,8 @@ springs:
 TEST_CASE("springs errors name the line and key") {
   CHECK_ERROR(two_link_with("springs: [{joint: 2, torque: 1}]\n"), "x.yaml:9:", "springs[0].joint",
               "must be a joint of the arm, 0 .. 1");
+  CHECK_ERROR(two_link_with("springs: [{joint: shoulder, torque: 1}]\n"), "x.yaml:9:", "springs[0].joint",
+              "names no joint of the arm (give an index, 0 .. 1)");
   CHECK_ERROR(two_link_with("springs: [{joint: 0}]\n"), "x.yaml:9:", "springs[0].torque", "required key is missing");
   CHECK_ERROR(two_link_with("springs: [{joint: 0, torque: 1, stiffness: -3}]\n"), "x.yaml:9:",
               "springs[0].stiffness", ">= 0");

@@ -253,6 +253,21 @@ TEST_CASE("urdf: validate prints the chain of a good URDF") {
   CHECK(r.output.find("elbow      e (link 0 upper") != std::string::npos);
 }
 
+TEST_CASE("urdf: a joint spring names its joint by the URDF's name or by index") {
+  const std::string file = kSource + "/scenarios/arms/open_manipulator_x_writes.yaml";
+  const Scenario named = load_scenario(file, {"springs=[{joint: joint2, torque: 0.5}]"});
+  REQUIRE(named.model.springs.size() == 1);
+  CHECK(named.model.springs[0].joint == 1);
+  CHECK(load_scenario(file, {"springs=[{joint: 1, torque: 0.5}]"}).model.springs[0].joint == 1);
+  try {
+    load_scenario(file, {"springs=[{joint: joint9, torque: 0.5}]"});
+    FAIL("joint9 loaded");
+  } catch (const ScenarioError& e) {
+    CHECK(std::string(e.what()).find("springs[0].joint: names no joint of the arm (its joints: joint1, joint2") !=
+          std::string::npos);
+  }
+}
+
 TEST_CASE("urdf: bad URDFs exit 2 naming the URDF file and the element") {
   struct Case {
     std::string name;
