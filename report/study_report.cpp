@@ -4,6 +4,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "engine/recording/metrics.hpp"
 #include "engine/recording/number_text.hpp"
@@ -41,13 +44,29 @@ std::string with_interval(const Json& value, const Json& ci, const std::string& 
   return out;
 }
 
-// The paired ratio of each ratio quantity per case (first pair of variants),
+// The pairs of variants the cases compare, as the first case lists them ("a", "b").
+std::vector<std::pair<std::string, std::string>> pair_names(const Json& doc) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const Json& cases = doc["cases"];
+  if (cases.empty()) return out;
+  for (const Json& p : cases[0].value("pairs", Json::array()))
+    out.emplace_back(p.value("a", ""), p.value("b", ""));
+  return out;
+}
+
+// Pair `k`'s entry in a case (null when the case lacks it).
+Json pair_of(const Json& c, std::size_t k) {
+  const Json& pairs = c.value("pairs", Json::array());
+  return k < pairs.size() ? pairs[k] : Json::object();
+}
+
+// The paired ratio of each ratio quantity per case for pair `k` ("a / b"),
 // with its interval as a vertical bar; 1 is "no difference".
-plot::LinePlot ratio_plot(const Json& doc) {
+plot::LinePlot ratio_plot(const Json& doc, std::size_t k, const std::string& a, const std::string& b) {
   plot::LinePlot p;
-  p.title = "Paired ratio per case, with 95 % intervals";
+  p.title = "Paired ratio per case, " + a + " / " + b + ", with 95 % intervals";
   p.x = plot::linear_axis("case (row of the table)", "");
-  p.y = plot::log_axis("ratio a / b (geometric mean over draws)", "");
+  p.y = plot::log_axis("ratio " + a + " / " + b + " (geometric mean over draws)", "");
   p.width = 1100;
   const Json& cases = doc["cases"];
   int colour = 0;
@@ -57,11 +76,11 @@ plot::LinePlot ratio_plot(const Json& doc) {
     point.label = m.label;
     point.color = bars.color = plot::palette(colour++);
     point.markers = true;
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-      const Json& pairs = cases[k]["pairs"];
-      if (pairs.empty() || !pairs[0].contains(m.metric)) continue;
-      const Json& r = pairs[0][m.metric];
-      const double x = static_cast<double>(k + 1) + (colour == 1 ? -0.12 : 0.12);
+    for (std::size_t row = 0; row < cases.size(); ++row) {
+      const Json pair = pair_of(cases[row], k);
+      if (!pair.contains(m.metric)) continue;
+      const Json& r = pair[m.metric];
+      const double x = static_cast<double>(row + 1) + (colour == 1 ? -0.12 : 0.12);
       if (!r.value("ratio", Json()).is_number()) continue;
       point.x.insert(point.x.end(), {x, std::nan("")});
       point.y.insert(point.y.end(), {r["ratio"].get<double>(), std::nan("")});
@@ -84,6 +103,11 @@ plot::LinePlot ratio_plot(const Json& doc) {
   return p;
 }
 
+// The first pair's plot keeps the name it always had; the others are named by their pair.
+std::string ratio_plot_file(std::size_t k, const std::string& a, const std::string& b) {
+  return k == 0 ? "ratios.png" : "ratios_" + a + "_" + b + ".png";
+}
+
 std::string case_table(const Json& doc) {
   const Json& variants = doc.value("variants", Json::array());
   std::string out =
@@ -91,7 +115,7 @@ std::string case_table(const Json& doc) {
       "(never below 0 for quantities that never are); energy drawn is what the supply "
       "delivered, net energy what it delivered less what the motors fed back (negative when "
       "they fed back more). Ratios (of energy drawn and of RMS hand error) and the difference of "
-      "net energy are paired (same draw), a / b and a − b of the first pair of variants; the "
+      "net energy are paired (same draw), a / b and a − b of each pair of variants; the "
       "outcome says whether the interval excludes 1 or 0 (and, for the hand error, whether the "
       "errors are above 10 × the accuracy floor); a case without a verdict gives the reason. "
       "No interval and no verdict below " +
@@ -99,11 +123,14 @@ std::string case_table(const Json& doc) {
       " draws where both runs are valid.</p>\n"
       "<table id=\"study-cases\"><thead><tr><th>#</th><th>case</th>";
   for (const Json& a : doc["axes"]) out += "<th>" + html::escape(a.value("name", "")) + "</th>";
+  const auto pairs = pair_names(doc);
   for (const Compared& m : kCompared) {
     for (const Json& v : variants)
       out += "<th>" + std::string(m.label) + ", " + html::escape(v.get<std::string>()) + "</th>";
-    out += std::string("<th>") + m.label + (m.ratio ? " ratio" : " difference") + "</th><th>" +
-           m.label + "</th>";
+    for (const auto& [a, b] : pairs)
+      out += std::string("<th>") + m.label + (m.ratio ? " ratio " : " difference ") +
+             html::escape(a + (m.ratio ? " / " : " − ") + b) + "</th><th>" + m.label + ", " +
+             html::escape(a + " against " + b) + "</th>";
   }
   out += "<th>invalid runs</th></tr></thead><tbody>\n";
   int row = 0;
@@ -113,7 +140,6 @@ std::string case_table(const Json& doc) {
            "/report.html\">" + html::escape(name) + "</a></td>";
     for (const Json& a : doc["axes"])
       out += "<td>" + html::escape(c["levels"].value(a.value("name", ""), "")) + "</td>";
-    const Json pair = c["pairs"].empty() ? Json::object() : c["pairs"][0];
     for (const Compared& m : kCompared) {
       for (const Json& v : variants) {
         const Json x = c.value("metrics", Json::object())
@@ -124,14 +150,16 @@ std::string case_table(const Json& doc) {
                    with_interval(x.value("mean", Json()), x.value("ci95", Json()), m.unit())) +
                "</td>";
       }
-      const Json r = pair.value(m.metric, Json::object());
-      const std::string outcome = r.value("outcome", "no verdict");
-      const std::string reason = r.value("reason", "");
-      const Json value = r.value(m.ratio ? "ratio" : "difference", Json());
-      out += "<td class=\"num\">" +
-             html::escape(with_interval(value, r.value("ci95", Json()), m.ratio ? "" : m.unit())) +
-             "</td><td class=\"outcome\" data-outcome=\"" + html::escape(outcome) + "\">" +
-             html::escape(outcome + (reason.empty() ? "" : ": " + reason)) + "</td>";
+      for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const Json r = pair_of(c, k).value(m.metric, Json::object());
+        const std::string outcome = r.value("outcome", "no verdict");
+        const std::string reason = r.value("reason", "");
+        const Json value = r.value(m.ratio ? "ratio" : "difference", Json());
+        out += "<td class=\"num\">" +
+               html::escape(with_interval(value, r.value("ci95", Json()), m.ratio ? "" : m.unit())) +
+               "</td><td class=\"outcome\" data-outcome=\"" + html::escape(outcome) + "\">" +
+               html::escape(outcome + (reason.empty() ? "" : ": " + reason)) + "</td>";
+      }
     }
     out += "<td class=\"num\">" + std::to_string(c.value("invalid_runs", 0)) + "</td></tr>\n";
   }
@@ -144,8 +172,13 @@ void write_study_report(const std::filesystem::path& folder) {
   const Json doc = html::read_json(folder / "study.json");
   PlotsAside aside(folder);
   std::filesystem::create_directories(folder / "plots");
-  const plot::LinePlot ratios = ratio_plot(doc);
-  plot::write_png(ratios, folder / "plots" / "ratios.png");
+  const auto pairs = pair_names(doc);
+  std::vector<std::pair<std::string, plot::LinePlot>> ratios;  // file, plot: one per pair
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto& [a, b] = pairs[k];
+    ratios.emplace_back(ratio_plot_file(k, a, b), ratio_plot(doc, k, a, b));
+    plot::write_png(ratios.back().second, folder / "plots" / ratios.back().first);
+  }
 
   std::vector<std::string> verdict;
   for (const Json& line : doc.value("verdict", Json::array()))
@@ -167,12 +200,17 @@ void write_study_report(const std::filesystem::path& folder) {
                                                    std::to_string(doc.value("seed", 0UL)) +
                                                    "), each applied to every variant"}});
   page += case_table(doc);
-  page += "<h2>Ratios per case</h2>\n";
-  page += html::figure({"plots/ratios.png", ratios.title,
-                        "Paired ratio a / b per case (numbered as in the table): a point at the "
-                        "geometric mean over the draws, a bar over its 95 % interval. Below 1: a "
-                        "lower than b.",
-                        ratios.width, ratios.height});
+  if (!ratios.empty()) page += "<h2>Ratios per case</h2>\n";
+  for (std::size_t k = 0; k < ratios.size(); ++k) {
+    const auto& [a, b] = pairs[k];
+    const plot::LinePlot& plot = ratios[k].second;
+    page += html::figure({"plots/" + ratios[k].first, plot.title,
+                          "Paired ratio " + a + " / " + b +
+                              " per case (numbered as in the table): a point at the geometric "
+                              "mean over the draws, a bar over its 95 % interval. Below 1: " +
+                              a + " lower than " + b + ".",
+                          plot.width, plot.height});
+  }
   page += html::page_end();
   html::write_file(folder / "report.html", page);
   aside.keep();

@@ -158,6 +158,26 @@ TEST_CASE("study cases: every combination, the first axis slowest; --case select
   CHECK_THROWS_AS(select_cases(plain, "pose=low"), std::invalid_argument);
 }
 
+TEST_CASE("cli: a study of three variants: its report has a ratio plot and table columns for each pair") {
+  const fs::path dir = elbowsim::testing::scratch("cli", "montecarlo_study_three");
+  std::string text = kStudy;
+  const std::string heavy = "  heavy: {hand_load.mass: 0.2}\n";
+  REQUIRE(text.find(heavy) != std::string::npos);
+  text.replace(text.find(heavy), heavy.size(), heavy + "  heavier: {hand_load.mass: 0.4}\n");
+  std::ofstream(dir / "study.yaml") << text;
+  const auto r = elbowsim::testing::run_elbowsim("montecarlo " + (dir / "study.yaml").string() +
+                                                 " --samples 3 --jobs 2 --case pose=low,time=short --out " +
+                                                 (dir / "out").string());
+  INFO(r.output);
+  REQUIRE(r.exit_code == 0);
+  for (const char* plot : {"ratios.png", "ratios_light_heavier.png", "ratios_heavy_heavier.png"})
+    CHECK(fs::file_size(dir / "out" / "plots" / plot) > 1000);
+  const std::string html = elbowsim::testing::slurp(dir / "out" / "report.html");
+  for (const char* pair : {"light / heavy", "light / heavier", "heavy / heavier"})
+    CHECK(contains(html, std::string("ratio ") + pair));
+  CHECK(contains(html, "RMS hand error, heavy against heavier"));
+}
+
 TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same bytes with --jobs 1 or 2" * doctest::test_suite("long")) {
   const fs::path dir = elbowsim::testing::scratch("cli", "montecarlo_study");
   const fs::path file = dir / "study.yaml";
