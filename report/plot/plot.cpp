@@ -201,7 +201,14 @@ Range bar_range(const BarChart& chart) {
 void draw_bars(cairo_t* cr, const BarChart& chart, const Box& area, const Mapping& y) {
   const double slot = area.width() / chart.categories.size();
   const double bar = slot * 0.7 / chart.groups.size();
+  // The values' font shrinks (to 7 at the least) until the widest fits its bar:
+  // three or more groups otherwise print their values into one another.
   set_font(cr, 11);
+  double widest = 0;
+  for (const BarGroup& g : chart.groups)
+    for (double v : g.values)
+      if (std::isfinite(v)) widest = std::max(widest, text_width(cr, significant(v, chart.value_digits)));
+  if (widest > bar - 2) set_font(cr, std::max(7.0, 11 * (bar - 2) / widest));
   for (std::size_t c = 0; c < chart.categories.size(); ++c) {
     for (std::size_t g = 0; g < chart.groups.size(); ++g) {
       const auto& values = chart.groups[g].values;
