@@ -24,6 +24,7 @@
 #include "app/output/atomic_file.hpp"
 #include "app/output/folder_lock.hpp"
 #include "app/scenario/scenario.hpp"
+#include "app/scenario/yaml_reader.hpp"
 #include "app/study/cases.hpp"
 #include "app/study/draws.hpp"
 #include "app/study/paired_verdict.hpp"
@@ -372,12 +373,9 @@ std::vector<CasePlan> plan_cases(const MonteCarloArguments& args, const Scenario
   if (!args.variants.empty()) {  // --variants: these, in this order
     for (const std::string& name : args.variants)
       if (std::find(names.begin(), names.end(), name) == names.end())
-      {
-        std::string known;
-        for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
-        throw std::invalid_argument("--variants: " + args.scenario + " has no variant \"" + name + "\" (" +
-                                    (names.empty() ? "it has none)" : "it has " + known + ")"));
-      }
+        throw std::invalid_argument(
+            "--variants: " + args.scenario + " has no variant \"" + name + "\" (" +
+            (names.empty() ? "it has none)" : "it has " + loader::join({names.begin(), names.end()}) + ")"));
     for (std::size_t k = 0; k < args.variants.size(); ++k)
       if (std::find(args.variants.begin(), args.variants.begin() + long(k), args.variants[k]) !=
           args.variants.begin() + long(k))

@@ -135,9 +135,8 @@ std::string place_against_table(const Eigen::Vector3d& centre, double radius,
   return text;
 }
 
-// Each elbow at the pose the run starts from: the task's first pose (solved
-// as the run solves it) or initial.q.
-// The pose the run starts from and its name; false (after printing why under
+// The pose the run starts from, the task's first pose (solved as the run
+// solves it) or initial.q, and its name; false (after printing why under
 // `heading`) when the task's first pose cannot be solved.
 bool pose_of_start(const Scenario& s, const char* heading, const std::string& label,
                    Eigen::VectorXd& q, std::string& pose) {
@@ -155,6 +154,7 @@ bool pose_of_start(const Scenario& s, const char* heading, const std::string& la
   }
 }
 
+// Each elbow at the pose the run starts from.
 void print_elbows(const Scenario& s, const std::string& label) {
   const Model& m = s.model;
   if (m.elbows.empty()) return;

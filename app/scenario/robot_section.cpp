@@ -120,9 +120,6 @@ RobotInfo read_robot(const Value& robot, Model& model, const std::string& scenar
   return info;
 }
 
-}  // namespace elbowsim::loader
-
-namespace elbowsim::loader {
 
 // springs: [{joint, torque, stiffness, at}], torsion springs at the joints (a
 // counterbalance). The joint by index, or by name for robot.urdf.
@@ -135,19 +132,17 @@ std::vector<JointSpring> read_springs(const Value& springs, const Model& model,
     JointSpring s;
     const Value joint = v.require("joint");
     const std::vector<std::string>& names = robot.names.joints;
-    const auto named = std::find(names.begin(), names.end(), joint.text());
     const std::string text = joint.text();
+    const auto named = std::find(names.begin(), names.end(), text);
     const bool index = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
       return std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+';
     });
     if (named != names.end()) {
       s.joint = static_cast<int>(named - names.begin());
     } else if (!index) {
-      std::string known;
-      for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
       joint.fail("names no joint of the arm (" +
                  (names.empty() ? "give an index, 0 .. " + std::to_string(model.dof - 1)
-                                : "its joints: " + known) + ")");
+                                : "its joints: " + join({names.begin(), names.end()})) + ")");
     } else {
       const long j = joint.integer();
       if (j < 0 || j >= model.dof)
