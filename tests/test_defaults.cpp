@@ -85,7 +85,8 @@ TEST_CASE(
   CHECK(worst < 1e-3);
 }
 
-TEST_CASE("defaults: auto keeps rk4 on the shipped experiment, byte for byte, and says so") {
+TEST_CASE("defaults: auto keeps rk4 on the shipped experiment, byte for byte, and says so" *
+          doctest::test_suite("long")) {
   const fs::path dir = t::scratch("defaults", "experiment_auto");
   const std::string experiment = kScenarios + "elbow_experiment.yaml";
   const std::string quiet = " --no-render --no-report --set simulation.duration=1";
