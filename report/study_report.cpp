@@ -118,6 +118,8 @@ std::string case_table(const Json& doc) {
       "net energy are paired (same draw), a / b and a − b of each pair of variants; the "
       "outcome says whether the interval excludes 1 or 0 (and, for the hand error, whether the "
       "errors are above 10 × the accuracy floor); a case without a verdict gives the reason. "
+      "Slips: the draws in which a variant's contacts began to slide after sticking, and the "
+      "median slip events a run. "
       "No interval and no verdict below " +
       std::to_string(doc.value("min_interval_draws", 0)) +
       " draws where both runs are valid.</p>\n"
@@ -132,6 +134,8 @@ std::string case_table(const Json& doc) {
              html::escape(a + (m.ratio ? " / " : " − ") + b) + "</th><th>" + m.label + ", " +
              html::escape(a + " against " + b) + "</th>";
   }
+  for (const Json& v : variants)
+    out += "<th>slips, " + html::escape(v.get<std::string>()) + "</th>";
   out += "<th>invalid runs</th></tr></thead><tbody>\n";
   int row = 0;
   for (const Json& c : doc["cases"]) {
@@ -160,6 +164,15 @@ std::string case_table(const Json& doc) {
                "</td><td class=\"outcome\" data-outcome=\"" + html::escape(outcome) + "\">" +
                html::escape(outcome + (reason.empty() ? "" : ": " + reason)) + "</td>";
       }
+    }
+    // Slip events: draws with any, and the median a run ("" from a study written before slips).
+    for (const Json& v : variants) {
+      const Json n = c.value("slips", Json::object()).value(v.get<std::string>(), Json::object());
+      out += "<td class=\"num\">" +
+             (n.empty() ? std::string()
+                        : std::to_string(n.value("draws_with_slips", 0L)) + " draws, median " +
+                              std::to_string(n.value("median", 0L))) +
+             "</td>";
     }
     out += "<td class=\"num\">" + std::to_string(c.value("invalid_runs", 0)) + "</td></tr>\n";
   }

@@ -227,4 +227,19 @@ TEST_CASE("cli: a Monte Carlo study counts each run's slips and says which arm's
   CHECK(doc["slips"]["elbow_off"]["draws_with_slips"] == 0);
   const std::string samples = slurp(dir / "loops-nominal-mid-sized" / "samples.csv");
   CHECK(has(samples, "unplanned_contact_body,slips,failure"));
+  // Over the study's cases: each case's counts, a verdict line, and study.csv's columns.
+  const auto study = nlohmann::json::parse(slurp(dir / "study.json"));
+  REQUIRE(study["cases"].size() == 1);
+  CHECK(study["cases"][0]["slips"] == doc["slips"]);
+  bool said = false;
+  for (const auto& line : study["verdict"]) {
+    const std::string text = line.get<std::string>();
+    said = said || has(text, "elbow_on: its contacts slipped in 1 of 1 cases (3 draws in all, at most " +
+                                 std::to_string(doc["slips"]["elbow_on"]["max"].get<long>()) + " slip events a run");
+    CHECK_FALSE(has(text, "elbow_off: its contacts slipped"));
+  }
+  CHECK(said);
+  const std::string csv = slurp(dir / "study.csv");
+  CHECK(has(csv, ",slips draws a,slips draws b,slips median a,slips median b\n"));
+  CHECK(has(csv, ",3,0," + std::to_string(doc["slips"]["elbow_on"]["median"].get<long>()) + ",0\n"));
 }

@@ -1,5 +1,6 @@
 #include "app/study/study_table.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -135,6 +136,45 @@ std::string draw_list(const Json& draws) {
   return out;
 }
 
+// Per variant whose contacts slipped in any case: a verdict line counting the
+// cases and draws with slips and the most slip events a run (each case's
+// montecarlo.json "slips"). Slips are a result, not a failure: coarse sensors
+// make a resting elbow chatter on the table, and the plan no longer holds it.
+void slip_sentences(const Json& rows, Json& verdict) {
+  struct Count {
+    std::size_t cases = 0, draws = 0;
+    long most = 0;
+    std::vector<std::string> where;
+  };
+  std::map<std::string, Count> counts;
+  std::vector<std::string> order;
+  for (const Json& c : rows) {
+    if (!c.contains("slips")) continue;
+    for (const auto& [variant, s] : c["slips"].items()) {
+      if (!counts.count(variant)) order.push_back(variant);
+      Count& k = counts[variant];
+      const std::size_t with = s.value("draws_with_slips", std::size_t{0});
+      if (with == 0) continue;
+      ++k.cases;
+      k.draws += with;
+      k.most = std::max(k.most, s.value("max", 0L));
+      k.where.push_back(c.value("case", ""));
+    }
+  }
+  for (const std::string& v : order) {
+    const Count& k = counts[v];
+    if (k.cases == 0) continue;
+    std::string s = v + ": its contacts slipped in " + std::to_string(k.cases) + " of " +
+                    std::to_string(rows.size()) + " cases (" + std::to_string(k.draws) +
+                    " draws in all, at most " + std::to_string(k.most) + " slip events a run";
+    if (k.where.size() <= 6) {
+      s += ": ";
+      for (std::size_t i = 0; i < k.where.size(); ++i) s += (i ? ", " : "") + k.where[i];
+    }
+    verdict.push_back(s + "); study.csv slips, each case's montecarlo.json slips");
+  }
+}
+
 }  // namespace
 
 Json study_document(const Scenario& base, const std::string& file, const std::vector<StudyCase>& cases,
@@ -175,6 +215,7 @@ Json study_document(const Scenario& base, const std::string& file, const std::ve
             y["no_interval"] = x.value("no_interval", "");
         }
     for (const auto& [variant, f] : d["accuracy_floor"].items()) c["accuracy_floor"][variant] = f["floor"];
+    if (d.contains("slips")) c["slips"] = d["slips"];
     Json pairs = Json::array();
     for (const Json& p : d["pairs"]) {
       Json q{{"a", p["a"]}, {"b", p["b"]}, {"pairs_with_an_invalid_run", p["pairs_with_an_invalid_run"]}};
@@ -193,6 +234,7 @@ Json study_document(const Scenario& base, const std::string& file, const std::ve
   for (const Json& t : doc["tally"])
     for (const ComparedQuantity& q : kCompared)
       verdict.push_back(count_sentence(t, q.metric, q.what, rows.size()));
+  slip_sentences(rows, verdict);
   doc["verdict"] = verdict;
   return doc;
 }
@@ -213,7 +255,8 @@ void write_study_csv(const std::filesystem::path& path, const Json& study) {
           << " sign test p," << m << " reason," << m << " mean a"
           << unit << "," << m << " mean b" << unit;
     }
-    out << ",hand_error_rms floor a [m],hand_error_rms floor b [m]\n";
+    out << ",hand_error_rms floor a [m],hand_error_rms floor b [m],slips draws a,slips draws b,"
+           "slips median a,slips median b\n";
     const auto number = [](const Json& x) {
       return x.is_number() ? round_trip(x.get<double>()) : std::string();
     };
@@ -241,6 +284,12 @@ void write_study_csv(const std::filesystem::path& path, const Json& study) {
         }
         for (const std::string& v : {a, b})
           out << "," << number(c.value("accuracy_floor", Json::object()).value(v, Json()));
+        const Json slips = c.value("slips", Json::object());
+        for (const char* k : {"draws_with_slips", "median"})
+          for (const std::string& v : {a, b}) {
+            const Json n = slips.value(v, Json::object()).value(k, Json());
+            out << "," << (n.is_number() ? std::to_string(n.get<long>()) : std::string());
+          }
         out << "\n";
       }
     }
