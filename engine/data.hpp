@@ -104,6 +104,12 @@ struct Data {
     double h_next = 0;          // [s] proposed next step; 0: none yet (the first step tries options.step)
     double h_last = 0;          // [s] the last accepted step (before an event shortened it)
     double error_last = 1e-4;   // its error norm, for the PI control (1e-4: Hairer's start)
+    // dopri5's stiffness test (adaptive.hpp): h |lambda| of the last accepted
+    // step as its last two stages estimate it, the accepted steps in a row above
+    // its stability edge and below it, and whether the run has said so.
+    double stiffness = 0;
+    int stiff_in_a_row = 0, nonstiff_in_a_row = 0;
+    bool stiffness_warned = false;
     Eigen::VectorXd k5, k6, k7, f0, dfdt, error, x_saved;
     Eigen::MatrixXd dense;      // [size x 5] dopri5's continuous extension of the last step
     Eigen::MatrixXd jacobian;   // [size x size] df/dx at the last step's start (ros34pw2)

@@ -121,7 +121,7 @@ void csv_row(std::ostringstream& out, const std::string& variant, const std::str
   out << variant << "," << kind << "," << method << "," << setting << "," << cell(value) << ","
       << cell(p["completed"]) << "," << cell(p["valid"]);
   for (const char* key : {"cpu_seconds", "repeats", "steps", "rejected_steps", "evaluations",
-                          "jacobians", "factorisations"})
+                          "jacobians", "factorisations", "stiff_from"})
     out << "," << cell(csv_cell_source(p, key));
   for (const Measure& m : kMeasures)
     out << ","
@@ -141,7 +141,11 @@ std::string points_table(const Json& study) {
            html::escape(p.value("setting", "") + " " + sci(p.value("value", 0.0))) + "</td><td>" +
            (p.value("valid", false) ? "yes" : "<b>no</b>") + "</td><td>" +
            sci(p.value("cpu_seconds", 0.0)) + "</td><td>" + std::to_string(p.value("steps", 0L)) +
-           "</td><td>" + std::to_string(p.value("rejected_steps", 0L)) + "</td><td>" +
+           "</td><td>" + std::to_string(p.value("rejected_steps", 0L)) +
+           (p.value("stiff_from", Json()).is_number()
+                ? ", stiff from " + sci(p["stiff_from"].get<double>()) + " s"
+                : std::string()) +
+           "</td><td>" +
            std::to_string(p.value("evaluations", 0L)) + "</td>";
     for (int k : {0, 1, 2, 4, 5, 6}) out += "<td>" + sci(value_of(p, kMeasures[k])) + "</td>";
     out += "</tr>\n";
@@ -243,7 +247,7 @@ std::string work_precision_csv(const Json& doc) {
   std::ostringstream out;
   out << "variant,kind,method,setting,value,completed,valid,cpu_seconds,repeats,steps,rejected_"
          "steps,"
-         "evaluations,jacobians,factorisations";
+         "evaluations,jacobians,factorisations,stiff_from [s]";
   for (const Measure& m : kMeasures) out << "," << m.key << " [" << m.unit << "]";
   out << ",failure\n";
   for (const Json& study : doc["studies"]) {

@@ -89,6 +89,8 @@ TEST_CASE("accuracy: a study of the pendulum — outputs, monotone errors, the v
       CHECK(points[k]->number("evaluations") > points[k - 1]->number("evaluations"));
     }
   }
+  // Nor is it stiff for dopri5: its stiffness test never fired.
+  for (const Row& r : rows) CHECK(r.cells.at("stiff_from [s]").empty());
   // The verdict names, for each target, the cheapest valid point meeting it.
   std::ifstream json_in(dir / "accuracy.json");
   const nlohmann::json doc = nlohmann::json::parse(json_in);
@@ -113,6 +115,25 @@ TEST_CASE("accuracy: a study of the pendulum — outputs, monotone errors, the v
   }
   CHECK(judged >= 2);
   CHECK(o.output.find("cheapest") != std::string::npos);
+}
+
+TEST_CASE("accuracy: dopri5 on the elbow at rest (L/R 0.25 ms) is marked stiff: it rejects a step per step at any rtol") {
+  const fs::path dir = scratch("accuracy", "stiff");
+  const Outcome o = elbowsim::testing::run_elbowsim(
+      "accuracy " + std::string(ELBOWSIM_SOURCE_DIR) + "/scenarios/elbow_rest.yaml --methods dopri5 --points 2"
+      " --repeats 1 --no-alternatives --set simulation.duration=0.3 --out " + dir.string());
+  INFO(o.output);
+  REQUIRE(o.exit_code == 0);
+  const std::vector<Row> rows = read_csv(dir / "work_precision.csv");
+  REQUIRE(rows.size() == 2);
+  for (const Row& r : rows) {
+    // The stability edge, not rtol 1e-3 or 1e-4, sets the step: about as many
+    // rejected steps as accepted, and the test fires within the first 20 ms.
+    CHECK(r.number("stiff_from [s]") > 0);
+    CHECK(r.number("stiff_from [s]") < 0.02);
+    CHECK(r.number("rejected_steps") > 0.5 * r.number("steps"));
+  }
+  CHECK(slurp(dir / "report.html").find("stiff from") != std::string::npos);
 }
 
 TEST_CASE("accuracy: bad arguments exit 2 and write nothing") {

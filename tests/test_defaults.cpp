@@ -156,3 +156,24 @@ TEST_CASE("defaults: a new 3 kg arm on the built-in motors warns they would over
   const auto summary = nlohmann::json::parse(t::slurp(dir / "out" / "summary.json"));
   CHECK(summary["valid"] == true);
 }
+
+TEST_CASE("defaults: dopri5 on the elbow at rest (motors' L/R 0.25 ms) says the equations are stiff; ros34pw2 says nothing") {
+  // At rtol 1e-3 dopri5 once rejected one step per accepted step here without a word.
+  const fs::path dir = t::scratch("defaults", "stiff_dopri5");
+  const std::string scene = kScenarios + "elbow_rest.yaml";
+  const std::string quiet = " --no-render --no-report --set simulation.rtol=1e-3";
+  const t::Outcome explicit_run = t::run_elbowsim("run " + scene + " --out " + (dir / "dopri5").string() +
+                                                  quiet + " --set simulation.integrator=dopri5");
+  INFO(explicit_run.output);
+  REQUIRE(explicit_run.exit_code == 0);
+  CHECK(has(explicit_run.output, "the equations are stiff for dopri5 from t = "));
+  CHECK(has(explicit_run.output, "simulation.integrator: ros34pw2"));
+  const auto summary = nlohmann::json::parse(t::slurp(dir / "dopri5" / "summary.json"));
+  int said = 0;
+  for (const auto& w : summary["warnings"]) said += has(w.get<std::string>(), "stiff for dopri5");
+  CHECK(said == 1);
+  const t::Outcome implicit_run = t::run_elbowsim("run " + scene + " --out " + (dir / "ros").string() +
+                                                  quiet + " --set simulation.integrator=ros34pw2");
+  REQUIRE(implicit_run.exit_code == 0);
+  CHECK_FALSE(has(implicit_run.output, "stiff for dopri5"));
+}

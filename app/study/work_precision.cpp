@@ -74,6 +74,8 @@ Json point_json(const Timed& t, const RunResult& reference) {
   j["evaluations"] = r.work.evaluations;
   j["jacobians"] = r.work.jacobians;
   j["factorisations"] = r.work.factorisations;
+  // dopri5's stiffness test (engine/run/adaptive.hpp): stability, not the tolerance, set its steps.
+  j["stiff_from"] = r.stiff_from >= 0 ? Json(r.stiff_from) : Json();
   try {
     j["errors"] = errors_json(compare_runs(r, reference));
   } catch (const std::invalid_argument& e) {  // not comparable: no error, never chosen

@@ -171,6 +171,31 @@ void trial(const Model& model, Data& data, double h) {
     ros_trial(model, data, h);
 }
 
+// Hairer's stiffness test on the accepted dopri5 step of length h: data.x_a
+// holds its sixth stage and data.x_b the solution, both at t + h, and k6, k7
+// their rates, so that (k7 - k6) / (x7 - x6) is the Jacobian's action along
+// their difference, which the stiffest mode dominates. Warns once per run.
+void watch_stiffness(const Model& model, Data& data, double h) {
+  Data::AdaptiveState& a = data.adaptive;
+  const int n = StateLayout(model).controlled;
+  const double apart = (data.x_b.head(n) - data.x_a.head(n)).squaredNorm();
+  if (apart <= 0) return;
+  a.stiffness = h * std::sqrt((a.k7.head(n) - a.k6.head(n)).squaredNorm() / apart);
+  if (a.stiffness > kStiffEdge) {
+    a.nonstiff_in_a_row = 0;
+    if (++a.stiff_in_a_row < kStiffSteps || a.stiffness_warned) return;
+    Warning w;
+    w.kind = Warning::Kind::stiff;
+    w.t = data.t + h;
+    w.value = a.stiffness;
+    w.step = h;
+    data.log.warnings.push_back(w);
+    a.stiffness_warned = true;
+  } else if (++a.nonstiff_in_a_row >= kNonstiffSteps) {
+    a.stiff_in_a_row = 0;
+  }
+}
+
 }  // namespace
 
 double error_norm(const Options& options, ConstVec e, ConstVec x0, ConstVec x1) {
@@ -218,7 +243,10 @@ bool adaptive_step(const Model& model, Data& data, double h_max) {
     }
   }
   a.h_last = h;
-  if (o.integrator == IntegratorKind::dopri5) dopri5_dense(data, h);
+  if (o.integrator == IntegratorKind::dopri5) {
+    dopri5_dense(data, h);
+    watch_stiffness(model, data, h);
+  }
   data.x = data.x_b;
   data.t += h;
   ++data.step_count;

@@ -11,6 +11,11 @@
 //             A W-method keeps its order for any Jacobian approximation, so the
 //             Jacobian of the step's start serves every redo of the step.
 // A step is accepted when the error norm (model.hpp, Options) is at most 1.
+// dopri5 watches for stiffness as Hairer's DOPRI5 code does (Solving ODEs II,
+// IV.2, (2.25)): after each accepted step, h |lambda| ~ h ||k7 - k6|| / ||x7 - x6||
+// from its last two stages (both at t + h); above kStiffEdge for kStiffSteps
+// accepted steps in a row (kNonstiffSteps below it reset the count), the run
+// warns once (step_log.hpp, Warning::Kind::stiff).
 // Steps end at every controller sample and at the end of the run (the caller's
 // h_max); a located event shortens the accepted step and the next one starts
 // afresh from the state after it.
@@ -19,6 +24,12 @@
 #include "engine/data.hpp"
 
 namespace elbowsim {
+
+// dopri5's stiffness test: its stability region meets the negative real axis
+// near -3.3; Hairer's code flags h |lambda| > 3.25 for 15 steps, 6 below reset.
+constexpr double kStiffEdge = 3.25;
+constexpr int kStiffSteps = 15;
+constexpr int kNonstiffSteps = 6;
 
 // Advances data.x from data.t by one accepted step of at most h_max, trying
 // data.adaptive.h_next first (options.step for the first step). Sets

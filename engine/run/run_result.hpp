@@ -36,6 +36,7 @@ struct RunResult {
   std::vector<ContactEvent> events;  // landings and releases, in time order
   long steps = 0;
   Data::IntegratorWork work;    // evaluations, rejected steps, Jacobians, factorisations
+  double stiff_from = -1;       // [s] when dopri5 found the equations stiff (its warning); -1: never
   double final_time = 0;        // [s]
   double wall_seconds = 0;      // [s]
   ControllerGains gains;

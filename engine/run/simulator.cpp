@@ -44,7 +44,10 @@ void busiest_slot(const std::vector<ContactEvent>& events, std::size_t from, Fai
 // Moves what the last step reported into the result.
 void collect_log(const Model& model, const Data& data, RunResult& result) {
   result.events.insert(result.events.end(), data.log.events.begin(), data.log.events.end());
-  for (const Warning& w : data.log.warnings) result.warnings.push_back(describe(model, w));
+  for (const Warning& w : data.log.warnings) {
+    result.warnings.push_back(describe(model, w));
+    if (w.kind == Warning::Kind::stiff) result.stiff_from = w.t;
+  }
 }
 
 // A recorded sample, and the energy check on it (run/validity.hpp).

@@ -122,6 +122,9 @@ void reset(const Model& model, Data& data) {
   reset_state(model, data);
   data.adaptive.h_next = 0;
   data.adaptive.error_last = 1e-4;
+  data.adaptive.stiffness = 0;
+  data.adaptive.stiff_in_a_row = data.adaptive.nonstiff_in_a_row = 0;
+  data.adaptive.stiffness_warned = false;
   data.work = {};
   start_digital_loop(model, data);  // the first sample, before anything reads the voltage
   decide_joint_modes(model, data);

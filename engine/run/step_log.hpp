@@ -28,11 +28,14 @@ struct ContactEvent {
 struct Warning {
   enum class Kind {
     dependent_rows,  // the touching slots' rows of M* are dependent: `count` rows of rank `rank`
+    stiff,           // dopri5's steps held at its stability edge (`value`: h |lambda|, `step`: h)
   };
   Kind kind = Kind::dependent_rows;
   double t = 0;      // [s]
   int count = 0;     // rows of the touching slots (dependent_rows)
   int rank = 0;      // rank of their rows (dependent_rows)
+  double value = 0;  // h |lambda| estimated (stiff)
+  double step = 0;   // [s] the step it was estimated on (stiff)
 };
 
 // Why a run must stop, or why its numbers cannot be trusted (run/validity.hpp

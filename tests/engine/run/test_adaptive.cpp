@@ -229,3 +229,59 @@ TEST_CASE("step size underflow stops the run with the reason") {
   CHECK_FALSE(r.valid);
   CHECK(r.failure.find("could not go on") != std::string::npos);
 }
+
+namespace {
+
+bool warns_stiff(const RunResult& r) {
+  for (const std::string& w : r.warnings)
+    if (w.find("stiff for dopri5") != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("dopri5's stiffness test: h |lambda| from its last two stages is the motors' h R/L; it warns once, a smooth run never") {
+  // L/R = 1 us: the electrical mode's eigenvalue is -R/L (1 - 2e-5; the
+  // back-EMF coupling (K n)^2 / (L J) is 2e-5 of (R/L)^2), far the fastest.
+  const Model stiff = adaptive(stiff_arm(1e-3, 0.01), IntegratorKind::dopri5, 1e-6, 1e-9);
+  const double rate = stiff.motors[0].resistance / stiff.motors[0].inductance;
+  Data data(stiff);
+  reset(stiff, data);
+  int warned = 0;
+  double worst = 0;
+  for (int k = 0; k < 400 && !data.failure; ++k) {
+    step(stiff, data);
+    warned += static_cast<int>(data.log.warnings.size());
+    // Past the first steps the step sits at the stability edge, where the
+    // stiff mode dominates the stages' difference.
+    if (k >= 50) worst = std::max(worst, std::abs(data.adaptive.stiffness / (data.adaptive.h_last * rate) - 1));
+  }
+  MESSAGE("dopri5 at L/R = 1 us: h = ", data.adaptive.h_last, " s, h |lambda| estimated ",
+          data.adaptive.stiffness, ", largest relative difference from h R/L ", worst);
+  // Measured 1e-5: the mode's eigenvalue itself is 2e-5 off R/L.
+  CHECK(worst < 1e-3);
+  CHECK(data.adaptive.stiffness > kStiffEdge);
+  CHECK(warned == 1);
+
+  const RunResult run = simulate(stiff, {});
+  REQUIRE(run.completed);
+  CHECK(warns_stiff(run));
+  int count = 0;
+  for (const std::string& w : run.warnings) count += w.find("stiff for dopri5") != std::string::npos;
+  CHECK(count == 1);
+  // The implicit method takes the same equations without a word.
+  CHECK_FALSE(warns_stiff(simulate(adaptive(stiff_arm(1e-3, 0.01), IntegratorKind::ros34pw2, 1e-6, 1e-9), {})));
+  // L/R = 25 ms and a smooth drive: accuracy sets dopri5's step (up to ~30 ms,
+  // h R/L up to 1.3, measured), well inside the stability region.
+  const Model smooth = adaptive(driven_arm(IntegratorKind::rk4, 1e-3, 0.5, 0.05), IntegratorKind::dopri5, 1e-6, 1e-9);
+  Data calm(smooth);
+  reset(smooth, calm);
+  double largest = 0;
+  while (!finished(smooth, calm) && !calm.failure) {
+    step(smooth, calm);
+    largest = std::max(largest, calm.adaptive.stiffness);
+  }
+  MESSAGE("dopri5 at L/R = 25 ms: largest h |lambda| ", largest);
+  CHECK(largest < 0.5 * kStiffEdge);
+  CHECK_FALSE(warns_stiff(simulate(smooth, {})));
+}
