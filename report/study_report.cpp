@@ -201,11 +201,24 @@ void write_study_report(const std::filesystem::path& folder) {
   page += "<h1>Monte Carlo study over " + std::to_string(doc["cases"].size()) +
           " cases: " + html::escape(name) + "</h1>\n";
   page += html::notice("verdict", "Verdict over the cases", verdict, "verdict");
+  // Each axis's levels the cases ran (a --case selection runs some), and all of them where fewer.
   std::string axes;
   for (const Json& a : doc["axes"]) {
-    std::string levels;
-    for (const Json& l : a["levels"]) levels += (levels.empty() ? "" : ", ") + l.get<std::string>();
-    axes += (axes.empty() ? "" : "; ") + a.value("name", "") + ": " + levels;
+    const std::string axis = a.value("name", "");
+    std::string all, ran;
+    std::size_t all_count = 0, ran_count = 0;
+    for (const Json& l : a["levels"]) {
+      const std::string level = l.get<std::string>();
+      all += (all.empty() ? "" : ", ") + level;
+      ++all_count;
+      bool used = false;
+      for (const Json& c : doc["cases"]) used = used || c["levels"].value(axis, "") == level;
+      if (!used) continue;
+      ran += (ran.empty() ? "" : ", ") + level;
+      ++ran_count;
+    }
+    axes += (axes.empty() ? "" : "; ") + axis + ": " + ran +
+            (ran_count < all_count ? " (of " + all + ")" : "");
   }
   page += html::info_table({{"scenario file", doc.value("file", "")},
                             {"axes", axes},

@@ -176,6 +176,8 @@ TEST_CASE("cli: a study of three variants: its report has a ratio plot and table
   for (const char* pair : {"light / heavy", "light / heavier", "heavy / heavier"})
     CHECK(contains(html, std::string("ratio ") + pair));
   CHECK(contains(html, "RMS hand error, heavy against heavier"));
+  // --case ran one level of each axis: the report says which, and of what.
+  CHECK(contains(html, "pose: low (of low, high); time: short (of short, long)"));
 }
 
 TEST_CASE("cli: montecarlo over a study: a folder per case, study files, same bytes with --jobs 1 or 2" * doctest::test_suite("long")) {
