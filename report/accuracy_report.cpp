@@ -174,6 +174,48 @@ std::string alternatives_table(const Json& study) {
   return out + "</tbody></table>\n";
 }
 
+// Tolerance proportionality of the adaptive methods: the largest joint-angle
+// error each reached, divided by the rtol it was asked for, against that rtol
+// (the angles are of order 1 rad, so rtol is an error in rad). A flat line:
+// the error follows the tolerance; rising to the left: a floor (the
+// reference, round-off) or a method that delivers less than it is asked.
+plot::LinePlot proportionality_plot(const Json& study) {
+  std::vector<plot::MethodResult> methods;
+  for (const Json& p : study["points"]) {
+    if (p.value("setting", "") != "rtol" || !p.value("completed", false)) continue;
+    const std::string method = p.value("method", "");
+    if (methods.empty() || methods.back().method != method) methods.push_back({method, {}, {}});
+    const double rtol = p.value("value", 0.0);
+    methods.back().cpu_seconds.push_back(rtol);
+    methods.back().error.push_back(value_of(p, kMeasures[3]) / rtol);
+  }
+  plot::LinePlot plot = plot::work_precision_plot(
+      methods, "Tolerance proportionality — " + variant_name(study),
+      "maximum joint angle error / rtol", "rad");
+  plot.x = plot::log_axis("requested rtol", "1");
+  return plot;
+}
+
+// The settings whose runs are not in the verdict: stopped early (diverged,
+// stalled, a bound broken) or completed but invalid, each with its reason.
+std::string omissions_table(const Json& study) {
+  std::string rows;
+  const auto add = [&](const Json& p, const std::string& what) {
+    if (p.value("valid", false)) return;
+    rows += "<tr><td>" + html::escape(what) + "</td><td>" +
+            (p.value("completed", false) ? "completed, invalid" : "stopped early") + "</td><td>" +
+            html::escape(p.value("failure", "")) + "</td></tr>\n";
+  };
+  for (const Json& p : study["points"]) add(p, setting_text(p));
+  for (const Json& a : study["alternatives"])
+    add(a, a.value("key", "") + ": " + a.value("value", ""));
+  if (rows.empty()) return "<h3>Omitted</h3>\n<p>None: every run is valid.</p>\n";
+  return "<h3>Omitted</h3>\n<p>Runs the verdict does not choose, and why (the completed ones "
+         "are still drawn above).</p>\n<table class=\"omissions\"><thead><tr><th>run</th>"
+         "<th>outcome</th><th>reason</th></tr></thead><tbody>\n" +
+         rows + "</tbody></table>\n";
+}
+
 }  // namespace
 
 Json work_precision_verdict(const Json& doc, const std::vector<double>& targets) {
@@ -316,7 +358,18 @@ void write_accuracy_report(const Json& doc, const std::filesystem::path& folder)
                             (m.against_reference ? "; dashed: what the reference resolves." : "."),
                         p.width, p.height});
     }
-    page += "<h3>Every point</h3>\n" + points_table(study) + alternatives_table(study);
+    const plot::LinePlot tolerance = proportionality_plot(study);
+    if (!tolerance.series.empty()) {
+      const std::string file = "plots/" + variant_name(study) + "_tolerance.png";
+      plot::write_png(tolerance, folder / file);
+      page += html::figure({file, tolerance.title,
+                            "The adaptive methods' largest joint-angle error divided by the rtol "
+                            "asked, against that rtol, log-log: flat where the error follows the "
+                            "tolerance.",
+                            tolerance.width, tolerance.height});
+    }
+    page += "<h3>Every point</h3>\n" + points_table(study) + alternatives_table(study) +
+            omissions_table(study);
   }
   page += html::page_end();
   html::write_file(folder / "report.html", page);

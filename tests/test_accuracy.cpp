@@ -91,6 +91,19 @@ TEST_CASE("accuracy: a study of the pendulum — outputs, monotone errors, the v
   }
   // Nor is it stiff for dopri5: its stiffness test never fired.
   for (const Row& r : rows) CHECK(r.cells.at("stiff_from [s]").empty());
+  // The adaptive methods' tolerance proportionality is drawn; every invalid run is
+  // listed with its reason under "Omitted".
+  CHECK(fs::file_size(dir / "plots" / "run_tolerance.png") > 1000);
+  const std::string html = slurp(dir / "report.html");
+  const std::size_t omitted = html.find("<h3>Omitted</h3>");
+  REQUIRE(omitted != std::string::npos);
+  int invalid = 0;
+  for (const Row& r : rows) {
+    if (r.cells.at("valid") == "true") continue;
+    ++invalid;
+    CHECK(html.find(r.cells.at("failure").substr(0, 40), omitted) != std::string::npos);
+  }
+  CHECK(invalid > 0);  // Euler's runs fail the energy check here
   // The verdict names, for each target, the cheapest valid point meeting it.
   std::ifstream json_in(dir / "accuracy.json");
   const nlohmann::json doc = nlohmann::json::parse(json_in);
