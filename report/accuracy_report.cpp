@@ -120,14 +120,25 @@ void csv_row(std::ostringstream& out, const std::string& variant, const std::str
              const Json& p) {
   out << variant << "," << kind << "," << method << "," << setting << "," << cell(value) << ","
       << cell(p["completed"]) << "," << cell(p["valid"]);
-  for (const char* key : {"cpu_seconds", "repeats", "steps", "rejected_steps", "evaluations",
-                          "jacobians", "factorisations", "stiff_from"})
+  const Json ci = p.value("cpu_ci95", Json());
+  out << "," << cell(csv_cell_source(p, "cpu_seconds")) << ","
+      << (ci.is_array() ? cell(ci[0]) + "," + cell(ci[1]) : std::string(","));
+  for (const char* key : {"repeats", "steps", "rejected_steps", "evaluations", "jacobians",
+                          "factorisations", "stiff_from"})
     out << "," << cell(csv_cell_source(p, key));
   for (const Measure& m : kMeasures)
     out << ","
         << cell(m.against_reference ? csv_cell_source(p["errors"], m.key)
                                     : csv_cell_source(p, m.key));
   out << "," << quoted(p.value("failure", "")) << "\n";
+}
+
+// " (low–high, R timings)": the median CPU time's 95 % interval, where there is one.
+std::string cpu_interval_text(const Json& p) {
+  const Json ci = p.value("cpu_ci95", Json());
+  const std::string count = std::to_string(p.value("repeats", 0)) + " timings";
+  if (!ci.is_array()) return " (" + count + ")";
+  return " (" + sci(ci[0].get<double>()) + "–" + sci(ci[1].get<double>()) + ", " + count + ")";
 }
 
 std::string points_table(const Json& study) {
@@ -140,7 +151,8 @@ std::string points_table(const Json& study) {
     out += "<tr><td>" + html::escape(p.value("method", "")) + "</td><td>" +
            html::escape(p.value("setting", "") + " " + sci(p.value("value", 0.0))) + "</td><td>" +
            (p.value("valid", false) ? "yes" : "<b>no</b>") + "</td><td>" +
-           sci(p.value("cpu_seconds", 0.0)) + "</td><td>" + std::to_string(p.value("steps", 0L)) +
+           sci(p.value("cpu_seconds", 0.0)) + cpu_interval_text(p) + "</td><td>" +
+           std::to_string(p.value("steps", 0L)) +
            "</td><td>" + std::to_string(p.value("rejected_steps", 0L)) +
            (p.value("stiff_from", Json()).is_number()
                 ? ", stiff from " + sci(p["stiff_from"].get<double>()) + " s"
@@ -287,8 +299,8 @@ Json work_precision_verdict(const Json& doc, const std::vector<double>& targets)
 
 std::string work_precision_csv(const Json& doc) {
   std::ostringstream out;
-  out << "variant,kind,method,setting,value,completed,valid,cpu_seconds,repeats,steps,rejected_"
-         "steps,"
+  out << "variant,kind,method,setting,value,completed,valid,cpu_seconds,cpu_low [s],cpu_high [s],"
+         "repeats,steps,rejected_steps,"
          "evaluations,jacobians,factorisations,stiff_from [s]";
   for (const Measure& m : kMeasures) out << "," << m.key << " [" << m.unit << "]";
   out << ",failure\n";
@@ -318,9 +330,11 @@ void write_accuracy_report(const Json& doc, const std::filesystem::path& folder)
                        "verdict");
   page +=
       "<p>Each point is one run of the scenario: CPU time of the integration (the controller's "
-      "plan, the same for every run, left out; median of " +
+      "plan, the same for every run, left out; the median of its timings, with the median's "
+      "95 % interval in the table from 6 timings on, timed again until that interval is within "
+      "5 % of it) " +
       std::string(
-          "the repeats in work_precision.csv) against its error, compared row by row with "
+          "against its error, compared row by row with "
           "a reference run. Invalid runs (diverged, penetrating, energy account off) "
           "are drawn when they completed (their error is measured) but never chosen by the "
           "verdict; runs that stopped early are left out. Fixed-step methods: "

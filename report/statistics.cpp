@@ -103,6 +103,18 @@ double median(std::vector<double> x) {
   return quantile(x, 0.5);
 }
 
+bool median_interval(std::vector<double> x, double level, Interval& out) {
+  const std::size_t n = x.size();
+  // 1 - sign_test_p(k, n) is the coverage with k values left out on each side.
+  if (n == 0 || 1 - sign_test_p(0, n) < level) return false;
+  std::size_t k = 0;
+  while (2 * (k + 1) < n && 1 - sign_test_p(k + 1, n) >= level) ++k;
+  std::sort(x.begin(), x.end());
+  out.low = x[k];
+  out.high = x[n - 1 - k];
+  return true;
+}
+
 Interval bootstrap_mean(const std::vector<double>& x, double level, int resamples,
                         std::uint64_t seed) {
   return bca(x, level, resamples, seed, Scale::linear);

@@ -33,6 +33,12 @@ constexpr std::size_t kMinIntervalValues = 15;
 double mean(const std::vector<double>& x);
 double median(std::vector<double> x);
 
+// The distribution-free interval of the median at `level` (0.95): order
+// statistics x_(k+1) and x_(n-k) of the sorted values, k the most left out on
+// each side with binomial coverage 1 - 2 P(B <= k) >= level, B ~ Bin(n, 1/2).
+// False (interval untouched) below the n that reaches `level` (6 at 0.95).
+bool median_interval(std::vector<double> x, double level, Interval& out);
+
 // The BCa bootstrap interval of the mean at `level` (0.95): percentiles of
 // `resamples` means of resamples with replacement, corrected for the bias
 // (the share of them below the mean) and the acceleration (the skewness of

@@ -149,6 +149,35 @@ TEST_CASE("accuracy: dopri5 on the elbow at rest (L/R 0.25 ms) is marked stiff: 
   CHECK(slurp(dir / "report.html").find("stiff from") != std::string::npos);
 }
 
+TEST_CASE("accuracy: from 6 repeats a setting is timed until its median's 95 % interval is within 5 % (or 100 timings)") {
+  const fs::path dir = scratch("accuracy", "timing");
+  const Outcome o = elbowsim::testing::run_elbowsim(
+      "accuracy " + kPendulum + " --methods rk4 --points 2 --repeats 6 --no-alternatives --out " +
+      dir.string() + " --set simulation.duration=0.2");
+  INFO(o.output);
+  REQUIRE(o.exit_code == 0);
+  const std::vector<Row> rows = read_csv(dir / "work_precision.csv");
+  REQUIRE(rows.size() == 2);
+  for (const Row& r : rows) {
+    const double m = r.number("cpu_seconds"), low = r.number("cpu_low [s]"), high = r.number("cpu_high [s]");
+    const double repeats = r.number("repeats");
+    INFO("median " << m << " s in [" << low << ", " << high << "] after " << repeats << " timings");
+    CHECK(repeats >= 6);
+    CHECK(low <= m);
+    CHECK(m <= high);
+    CHECK((repeats == 100 || (high - m <= 0.05 * m && m - low <= 0.05 * m)));
+  }
+  // Fewer than 6 timings have no interval: the columns stay empty.
+  const Outcome once = elbowsim::testing::run_elbowsim(
+      "accuracy " + kPendulum + " --methods rk4 --points 2 --repeats 1 --no-alternatives --out " +
+      (dir / "once").string() + " --set simulation.duration=0.2");
+  REQUIRE(once.exit_code == 0);
+  for (const Row& r : read_csv(dir / "once" / "work_precision.csv")) {
+    CHECK(r.cells.at("repeats") == "1");
+    CHECK(r.cells.at("cpu_low [s]").empty());
+  }
+}
+
 TEST_CASE("accuracy: bad arguments exit 2 and write nothing") {
   const fs::path dir = scratch("accuracy", "bad");
   const Outcome unknown = elbowsim::testing::run_elbowsim("accuracy " + kPendulum + " --methods rk4,rk5 --out " + dir.string());

@@ -145,7 +145,7 @@ struct AccuracyArguments {
   std::vector<std::string> sets;
   std::string methods;   // comma-separated integrators; "": all
   int points = 6;        // settings per method
-  int repeats = 3;       // timings per setting
+  int repeats = 10;      // timings per setting, at least (study::kMinTimedForInterval)
   std::string variant;   // "": every variant
   bool alternatives = true;
 };

@@ -9,6 +9,7 @@
 #include "engine/recording/number_text.hpp"
 #include "engine/run/simulator.hpp"
 #include "engine/step_grid.hpp"
+#include "report/statistics.hpp"
 
 namespace elbowsim::study {
 
@@ -26,30 +27,45 @@ Json number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 struct Timed {
   RunResult result;
   double cpu_seconds = 0;  // median, the plan left out
+  report::Interval cpu_interval;  // the median's 95 % interval, when has_interval
+  bool has_interval = false;
   double plan_cpu_seconds = 0;
   int repeats = 0;
 };
 
-// Runs `model` `repeats` times (once when a run takes over 2 s) and keeps the
-// median CPU time; the results are identical (same binary, same input).
+// Runs `model` at least `repeats` times and keeps the median CPU time (the
+// results are identical: same binary, same input). From kMinTimedForInterval
+// repeats on, more follow until the median's 95 % interval lies within
+// kTimingPrecision of it, at most kMaxRepeats or kTimingBudget of CPU; a run
+// over 2 s is timed once.
 Timed timed_run(const Model& model, const Experiment& experiment, int every, int repeats,
                 const std::atomic<bool>* stop) {
   Timed out;
   std::vector<double> times;
-  for (int r = 0; r < std::max(1, repeats); ++r) {
+  const auto settled = [&] {
+    if (repeats < kMinTimedForInterval) return static_cast<int>(times.size()) >= repeats;
+    if (static_cast<int>(times.size()) < repeats) return false;
+    double spent = 0;
+    for (double t : times) spent += t;
+    if (static_cast<int>(times.size()) >= kMaxRepeats || spent >= kTimingBudget) return true;
+    report::Interval ci;
+    if (!report::median_interval(times, 0.95, ci)) return false;
+    const double m = report::median(times);
+    return ci.high - m <= kTimingPrecision * m && m - ci.low <= kTimingPrecision * m;
+  };
+  while (!settled()) {
     // The integration's time: the plan (the same for every run of a study)
     // is computed inside simulate() and left out.
     const double start = thread_cpu_seconds();
     RunResult result = simulate(model, experiment, RunOptions{every, {}, stop});
     times.push_back(thread_cpu_seconds() - start - result.plan_cpu_seconds);
     out.plan_cpu_seconds = result.plan_cpu_seconds;
-    if (r == 0) out.result = std::move(result);
+    if (times.size() == 1) out.result = std::move(result);
     if (times.front() > 2.0 || out.result.interrupted) break;
   }
-  std::sort(times.begin(), times.end());
-  const std::size_t n = times.size();
-  out.cpu_seconds = n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
-  out.repeats = static_cast<int>(n);
+  out.cpu_seconds = report::median(times);
+  out.has_interval = report::median_interval(times, 0.95, out.cpu_interval);
+  out.repeats = static_cast<int>(times.size());
   return out;
 }
 
@@ -69,6 +85,8 @@ Json point_json(const Timed& t, const RunResult& reference) {
   j["cpu_seconds"] = t.cpu_seconds;
   j["plan_cpu_seconds"] = t.plan_cpu_seconds;  // not in cpu_seconds: every run follows the same plan
   j["repeats"] = t.repeats;
+  // The median's distribution-free 95 % interval (from 6 timings on).
+  j["cpu_ci95"] = t.has_interval ? Json::array({t.cpu_interval.low, t.cpu_interval.high}) : Json();
   j["steps"] = r.steps;
   j["rejected_steps"] = r.work.rejected;
   j["evaluations"] = r.work.evaluations;

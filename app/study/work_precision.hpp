@@ -25,10 +25,19 @@
 
 namespace elbowsim::study {
 
+// Timings: from kMinTimedForInterval on (the fewest whose median has a 95 %
+// interval), a setting is timed again until that interval lies within
+// kTimingPrecision of the median, at most kMaxRepeats times or kTimingBudget; fewer requested
+// repeats are taken as they are, without an interval.
+constexpr int kMinTimedForInterval = 6;
+constexpr double kTimingPrecision = 0.05;
+constexpr int kMaxRepeats = 100;
+constexpr double kTimingBudget = 30;  // [s] of CPU per setting, then its interval is what it is
+
 struct WorkPrecisionOptions {
   std::vector<IntegratorKind> methods;  // empty: all five
   int points = 6;                       // settings per method (>= 2)
-  int repeats = 3;                      // timings per setting (a run over 2 s is timed once)
+  int repeats = 10;                     // timings per setting at least (a run over 2 s: once)
   bool alternatives = true;             // time the dynamics methods, solvers and event modes
   const std::atomic<bool>* stop = nullptr;  // interrupt: no new run starts once set
   std::function<void(const std::string&)> progress;  // one line per finished run
