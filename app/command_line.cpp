@@ -111,7 +111,7 @@ constexpr OptionSpec kMerge[] = {{"o,out", "DIR", "output folder (default: the f
 constexpr OptionSpec kAccuracy[] = {
     {"methods", "M,...", "the integrators to study, comma-separated (default: all five, below)"},
     {"points", "N", "settings per method, 2-12 (default: 6)"},
-    {"repeats", "R", "timings per setting at least, 1-100 (default: 10; from 6 on, more until the median's 95 % interval is within 5 %)"},
+    {"repeats", "R", "timings per setting at least, 1-100 (default: 10; from 6 on, to +-5 %)"},
     {"variant", "V", "the one variant to study (default: every variant)"},
     {"no-alternatives", nullptr, "skip the timings of the dynamics, solver and event modes"},
     {"o,out", "DIR", "output folder (default: the scenario's output.folder/accuracy)"},
@@ -185,8 +185,9 @@ Exit: 3 runs are missing (run the study again to finish them).)";
 constexpr const char* kAccuracyNotes =
     R"(Runs each method against a dopri5 reference at rtol 1e-11: euler, semi_implicit_euler
 and rk4 at steps step/m (m = 1, 2, 3, 4, 6, 8, ...), dopri5 at rtol 1e-3, 1e-4, ..., ros34pw2
-at rtol 1e-2, 1e-3, ... Writes DIR/work_precision.csv, accuracy.json (with the verdict),
-report.html and plots/.
+at rtol 1e-2, 1e-3, ... Each setting is timed at least R times; from 6 on, again until the
+median's 95 % interval is within 5 % of it (at most 100 timings or 30 s of CPU).
+Writes DIR/work_precision.csv, accuracy.json (with the verdict), report.html and plots/.
 Exit: 3 the reference run is not valid; 128 + signal when interrupted (no report).)";
 
 constexpr CommandSpec kCommands[] = {
