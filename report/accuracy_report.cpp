@@ -65,6 +65,7 @@ std::string file_stem(const Json& study, const Measure& m) {
 
 plot::LinePlot measure_plot(const Json& study, const Measure& m) {
   std::vector<plot::MethodResult> methods;
+  std::vector<plot::Series> intervals;  // each timing's 95 % interval, in its method's colour
   for (const Json& p : study["points"]) {
     const std::string method = p.value("method", "");
     if (methods.empty() || methods.back().method != method) methods.push_back({method, {}, {}});
@@ -74,10 +75,19 @@ plot::LinePlot measure_plot(const Json& study, const Measure& m) {
     if (!p.value("completed", false)) continue;
     methods.back().cpu_seconds.push_back(p.value("cpu_seconds", 0.0));
     methods.back().error.push_back(value_of(p, m));
+    const Json ci = p.value("cpu_ci95", Json());
+    if (!ci.is_array()) continue;
+    plot::Series bar;
+    bar.x = {ci[0].get<double>(), ci[1].get<double>()};
+    bar.y = {value_of(p, m), value_of(p, m)};
+    bar.color = plot::palette(static_cast<int>(methods.size()) - 1);
+    bar.width = 1.2;
+    intervals.push_back(bar);
   }
   plot::LinePlot plot = plot::work_precision_plot(
       methods, std::string(m.label) + " against CPU time — " + variant_name(study), m.label,
       m.unit);
+  plot.series.insert(plot.series.end(), intervals.begin(), intervals.end());
   const Json& uncertainty = study["reference"].value("uncertainty", Json::object());
   if (m.against_reference && uncertainty.contains(m.key) && uncertainty[m.key].is_number() &&
       uncertainty[m.key].get<double>() > 0) {
@@ -368,7 +378,8 @@ void write_accuracy_report(const Json& doc, const std::filesystem::path& folder)
           html::figure({file, p.title,
                         std::string(m.label) + " [" + m.unit +
                             "] against CPU time [s], log-log, "
-                            "one line per method (settings from coarse to fine)" +
+                            "one line per method (settings from coarse to fine), each point's "
+                            "median CPU time with its 95 % interval as a bar" +
                             (m.against_reference ? "; dashed: what the reference resolves." : "."),
                         p.width, p.height});
     }
