@@ -5,6 +5,7 @@
 
 #include "engine/contact/primitives.hpp"
 #include "engine/model.hpp"
+#include "engine/recording/number_text.hpp"
 #include "engine/run/adaptive.hpp"
 
 namespace elbowsim {
@@ -34,10 +35,10 @@ std::string describe(const Model& model, const Warning& w) {
             << " has no answer there, M* being singular)";
       return msg.str();
     case Warning::Kind::stiff:
-      msg << "the equations are stiff for dopri5 from t = " << w.t << " s: for "
-          << kStiffSteps << " accepted steps in a row its step (" << w.step
-          << " s) sat at the edge of its stability region (h |lambda| about " << w.value
-          << ", estimated from its last two stages; the edge is 3.3), so stability, not "
+      msg << "the equations are stiff for dopri5 from t = " << significant(w.t, 4) << " s: for "
+          << kStiffSteps << " accepted steps in a row its step (" << significant(w.step, 3)
+          << " s) sat at the edge of its stability region (h |lambda| about "
+          << significant(w.value, 3) << ", estimated from its last two stages; the edge is 3.3), so stability, not "
              "the tolerance, sets its step, and rejected steps cost it more (the motors' L/R "
              "is the usual cause); ros34pw2 is implicit in the motor electrics "
              "(simulation.integrator: ros34pw2)";
